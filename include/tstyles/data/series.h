@@ -1,0 +1,106 @@
+// The data model of a time-varying volume: a series of time-steps, each on its own grid and world
+// placement. Knows nothing of OpenGL; the renderer uploads what it finds here.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+namespace tstyles {
+
+// How the values of a time-step are stored in its raw file (little-endian).
+enum class ValueType { UInt8, UInt16, Float32 };
+
+std::string toString(ValueType type);
+std::optional<ValueType> valueTypeFromString(const std::string& name);
+std::size_t bytesPerValue(ValueType type);
+
+// A regular lattice: dims samples along x, y, z, `spacing` world units apart. Samples sit on the
+// nodes, so the grid spans (dims - 1) * spacing along each axis, starting at the placement origin.
+struct RectilinearGrid {
+    glm::ivec3 dims{0};
+    glm::dvec3 spacing{1.0};
+
+    glm::dvec3 extent() const { return glm::dvec3(dims - 1) * spacing; }
+    std::size_t voxelCount() const {
+        return std::size_t(dims.x) * std::size_t(dims.y) * std::size_t(dims.z);
+    }
+};
+
+// Grid kinds grow here (curvilinear sonar and structured grids come later).
+using Grid = std::variant<RectilinearGrid>;
+
+// Where a time-step's grid sits in the world: grid-local position p maps to origin + rotation * p.
+struct Placement {
+    glm::dvec3 origin{0.0};
+    glm::dquat rotation{1.0, 0.0, 0.0, 0.0};
+
+    glm::dmat4 gridToWorld() const;
+    bool operator==(const Placement& other) const {
+        return origin == other.origin && rotation == other.rotation;
+    }
+};
+
+// A rotation as manifests spell it: a unit axis and an angle in degrees, right-handed.
+struct AxisAngle {
+    glm::dvec3 axis{0.0, 0.0, 1.0};
+    double angleDeg = 0.0;
+};
+
+// The identity comes back as axis +z, angle 0; angles lie in [0, 180].
+AxisAngle toAxisAngle(const glm::dquat& rotation);
+// The axis need not be unit length but must not be zero.
+glm::dquat fromAxisAngle(const AxisAngle& rotation);
+
+// One moment of the series.
+struct TimeStep {
+    double time = 0.0;
+    Grid grid;
+    Placement placement;
+    ValueType sourceType = ValueType::Float32;
+    // The raw values' own minimum and maximum, as read from the file.
+    std::array<double, 2> rawRange{0.0, 0.0};
+    // Values mapped to [0,1] by the series' value range (clamped), x fastest, then y, then z.
+    std::vector<float> density;
+    // Optional segmentation mask, same dims: 0 outside the region of interest, non-zero inside.
+    std::optional<std::vector<std::uint8_t>> mask;
+    // Where the values and the mask came from (for messages and `tstyles info`).
+    std::filesystem::path valuesFile;
+    std::filesystem::path maskFile;
+
+    const RectilinearGrid& rectilinear() const { return std::get<RectilinearGrid>(grid); }
+};
+
+// World-space axis-aligned box.
+struct Bounds {
+    glm::dvec3 lower{0.0};
+    glm::dvec3 upper{0.0};
+    glm::dvec3 center() const { return 0.5 * (lower + upper); }
+    glm::dvec3 size() const { return upper - lower; }
+};
+
+struct Series {
+    std::string name;
+    std::filesystem::path manifestPath;
+    // The raw values mapped to density 0 and 1.
+    std::array<double, 2> valueRange{0.0, 1.0};
+    std::vector<TimeStep> steps;
+
+    std::size_t size() const { return steps.size(); }
+    bool hasMasks() const;
+    // World bounds of the time-step's grid (its eight corners after placement).
+    Bounds worldBounds(std::size_t step) const;
+    // World bounds of the whole series.
+    Bounds worldBounds() const;
+    // The smallest sample spacing of any time-step: the default ray step is half of it.
+    double finestSpacing() const;
+};
+
+}  // namespace tstyles

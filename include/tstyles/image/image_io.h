@@ -1,0 +1,19 @@
+// Image files through OpenImageIO: the format follows the extension (PNG, TIFF, EXR, ...).
+#pragma once
+
+#include <filesystem>
+
+#include "tstyles/image/image.h"
+
+namespace tstyles {
+
+// Writes through a temporary file and a rename. 8-bit formats get rounded, clamped values; float
+// formats (EXR) get the floats. Unsupported extensions and write failures are InputErrors naming
+// the file.
+void writeImage(const Image& image, const std::filesystem::path& file);
+
+// Reads any image OpenImageIO knows as RGBA floats with associated alpha (images without alpha
+// get alpha 1). InputError naming the file if it cannot be read.
+Image readImage(const std::filesystem::path& file);
+
+}  // namespace tstyles

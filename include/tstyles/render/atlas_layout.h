@@ -1,0 +1,25 @@
+// Packing of many time-step volumes into one 3D texture: each time-step gets a brick in a grid
+// of equal cells, so that the number of time-steps is bounded by memory, not by texture units.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace tstyles {
+
+struct AtlasLayout {
+    glm::ivec3 cellSize{0};  // every brick fits in one cell (the largest dims along each axis)
+    glm::ivec3 cells{0};     // cells along x, y, z
+    glm::ivec3 size{0};      // texture size in texels: cells * cellSize
+    std::vector<glm::ivec3> brickOrigins;  // first texel of each brick
+
+    std::size_t texelCount() const { return std::size_t(size.x) * std::size_t(size.y) * std::size_t(size.z); }
+};
+
+// The arrangement with the fewest texels (then the most cube-like) whose sides stay within
+// `maxTextureSize`. Throws InputError when the bricks cannot fit into one 3D texture.
+AtlasLayout planAtlas(const std::vector<glm::ivec3>& brickDims, int maxTextureSize);
+
+}  // namespace tstyles

@@ -1,0 +1,37 @@
+// Entry and exit buffers (paper 5.1): for every distinct time-step placement, the ray parameter at
+// which each pixel's ray enters and leaves its proxy box, in layered textures (one layer each) so
+// that the number of time-steps is not bounded by texture units.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "tstyles/gl/objects.h"
+#include "tstyles/gl/program.h"
+
+namespace tstyles {
+
+class GpuSeries;
+
+class EntryExitBuffers {
+public:
+    explicit EntryExitBuffers(const ShaderLibrary& shaders);
+
+    // Rasterises every proxy box of `series` into its layer. `series` must be bound (GpuSeries::bind).
+    void render(const GpuSeries& series, const glm::mat4& viewProjection, const glm::mat4& inverseViewProjection,
+                glm::ivec2 viewport);
+    void bind() const;
+    std::size_t textureBytes() const;
+
+private:
+    void resize(glm::ivec2 viewport, int layers);
+
+    Program program_;
+    VertexArray emptyVertexArray_;
+    glm::ivec2 size_{0};
+    int layers_ = 0;
+    std::optional<Texture> entry_;
+    std::optional<Texture> exit_;
+    std::optional<Framebuffer> framebuffer_;
+};
+
+}  // namespace tstyles

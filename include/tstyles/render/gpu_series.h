@@ -1,0 +1,43 @@
+// A series as the GPU holds it: all densities in one 3D atlas texture (masks in a second one), a
+// table describing each time-step, and one proxy box per distinct placement. Built once per series.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "tstyles/data/series.h"
+#include "tstyles/gl/objects.h"
+#include "tstyles/render/atlas_layout.h"
+
+namespace tstyles {
+
+class GpuSeries {
+public:
+    // Uploads every time-step. Throws InputError if the series does not fit into one 3D texture or
+    // into GPU memory.
+    explicit GpuSeries(const Series& series);
+
+    std::size_t timeStepCount() const { return timeStepCount_; }
+    std::size_t proxyCount() const { return proxyCount_; }
+    const AtlasLayout& layout() const { return layout_; }
+    bool hasMasks() const { return hasMasks_; }
+    // Bytes of texture memory: the density atlas, the mask atlas.
+    std::size_t textureBytes() const;
+
+    // Binds the atlases and the time-step and proxy tables at their binding points.
+    void bind() const;
+
+private:
+    std::size_t timeStepCount_ = 0;
+    std::size_t proxyCount_ = 0;
+    bool hasMasks_ = false;
+    AtlasLayout layout_;
+    Texture densityAtlas_;
+    Texture maskAtlas_;
+    Buffer timeStepTable_;
+    Buffer proxyTable_;
+};
+
+}  // namespace tstyles

@@ -1,0 +1,58 @@
+// The multi-volume raycasting pass: overlap extraction, ray iteration, temporal compositor, TSTF
+// and final processing in one fragment shader (shaders/raycast.frag), one program per compositor.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <tuple>
+
+#include <glm/glm.hpp>
+
+#include "tstyles/gl/objects.h"
+#include "tstyles/gl/program.h"
+#include "tstyles/scene/scene.h"
+
+namespace tstyles {
+
+struct RaycastParameters {
+    glm::mat4 inverseViewProjection{1.0f};
+    glm::ivec2 viewport{0};
+    int timeStepCount = 0;
+    glm::ivec3 atlasSize{1};
+    float stepLength = 0.01f;
+    float referenceLength = 0.01f;
+    float terminationOpacity = 0.99f;
+    glm::vec4 background{0.0f};
+    TemporalCompositor compositor = TemporalCompositor::MaxIntensityProjection;
+    FinalMode finalMode = FinalMode::Modulate;
+    glm::vec2 changeRange{0.0f, 1.0f};
+    bool collectStatistics = false;
+};
+
+struct RaycastStatistics {
+    std::uint64_t rays = 0;     // pixels whose ray meets at least one time-step
+    std::uint64_t samples = 0;  // positions where the temporal compositor ran
+    std::uint64_t fetches = 0;  // volume texture fetches (density and mask)
+};
+
+class Raycaster {
+public:
+    explicit Raycaster(const ShaderLibrary& shaders);
+
+    // Draws into the currently bound framebuffer; series, transfer tables and entry/exit buffers
+    // must be bound.
+    void draw(const RaycastParameters& parameters);
+    // Counters of the last draw with collectStatistics (waits for the GPU).
+    RaycastStatistics lastStatistics() const;
+
+private:
+    const Program& programFor(const RaycastParameters& parameters);
+
+    const ShaderLibrary& shaders_;
+    // Keyed by compositor, statistics on/off and the time-step capacity of the shader's arrays.
+    std::map<std::tuple<int, bool, int>, Program> programs_;
+    VertexArray emptyVertexArray_;
+    Buffer statistics_;
+};
+
+}  // namespace tstyles

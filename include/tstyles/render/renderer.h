@@ -1,0 +1,67 @@
+// The renderer: turns a scene and a series into an image. Front ends (CLI, viewer, benchmark,
+// tests) all go through this one type. Per-series work (upload) happens in setSeries, per-change
+// work (transfer-function baking) only when the scene's functions change, per-frame work in draw.
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "tstyles/data/series.h"
+#include "tstyles/gl/program.h"
+#include "tstyles/image/image.h"
+#include "tstyles/render/entry_exit_buffers.h"
+#include "tstyles/render/gpu_series.h"
+#include "tstyles/render/raycaster.h"
+#include "tstyles/render/render_target.h"
+#include "tstyles/render/transfer_tables.h"
+#include "tstyles/scene/scene.h"
+
+namespace tstyles {
+
+struct FrameOptions {
+    glm::ivec2 size{512, 512};
+    bool collectStatistics = false;
+    // Multiplies the scene's step length (the viewer uses a coarser step while dragging).
+    float stepScale = 1.0f;
+};
+
+class Renderer {
+public:
+    // Needs a current OpenGL 4.5 context for its whole life.
+    explicit Renderer(ShaderLibrary shaders);
+    // The raycaster keeps a reference to the shader library: a Renderer stays where it was made.
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    void setSeries(const Series& series);
+    bool hasSeries() const { return gpuSeries_.has_value(); }
+
+    // Renders into the internal target (no read-back).
+    void draw(const Scene& scene, const View& view, const FrameOptions& options);
+    // The last frame's pixels.
+    Image readFrame() const { return target_.read(); }
+    // Counters of the last frame drawn with collectStatistics.
+    RaycastStatistics lastStatistics() const { return raycaster_.lastStatistics(); }
+    const RenderTarget& target() const { return target_; }
+    // Texture memory of the series (atlases) and of the per-frame buffers.
+    std::size_t seriesTextureBytes() const;
+    std::size_t frameTextureBytes() const;
+
+    // The world-space step a scene asks for: its own, or half the finest voxel spacing.
+    double stepLengthFor(const Scene& scene) const;
+
+private:
+    ShaderLibrary shaders_;
+    std::optional<GpuSeries> gpuSeries_;
+    double finestSpacing_ = 1.0;
+    TransferTables transferTables_;
+    EntryExitBuffers entryExitBuffers_;
+    Raycaster raycaster_;
+    RenderTarget target_;
+};
+
+// Renders one scene headless: loads nothing, just draws and reads back. Convenience for the CLI
+// and the tests.
+Image renderImage(Renderer& renderer, const Scene& scene, const Bounds& seriesBounds);
+
+}  // namespace tstyles

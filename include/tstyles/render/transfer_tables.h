@@ -1,0 +1,43 @@
+// The transfer functions of a scene baked for the GPU: the STF and the gradient-magnitude TSTF as
+// 1D lookup textures, the index TSTF as one colour and opacity per time-step. Re-baked only when
+// the scene's transfer functions change.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "tstyles/gl/objects.h"
+#include "tstyles/scene/transfer_function.h"
+
+namespace tstyles {
+
+// Entries of each 1D table; entry i holds the function at i / (kTransferTableSize - 1).
+inline constexpr int kTransferTableSize = 1024;
+
+// The table a 1D transfer function over [0,1] becomes (RGBA, straight colour and opacity).
+std::vector<glm::vec4> bakeTransferTable(const TransferFunction1D& function);
+// One RGBA entry per time-step.
+std::vector<glm::vec4> bakeIndexTstf(const IndexTstf& tstf, std::size_t timeStepCount);
+
+class TransferTables {
+public:
+    TransferTables();
+
+    void update(const Stf& stf, const IndexTstf& indexTstf, const GradientTstf& gradientTstf,
+                std::size_t timeStepCount);
+    void bind() const;
+
+private:
+    Texture stfTable_;
+    Texture gradientTstfTable_;
+    Buffer indexTstfBuffer_;
+    std::optional<Stf> bakedStf_;
+    std::optional<IndexTstf> bakedIndexTstf_;
+    std::optional<TransferFunction1D> bakedGradientCurve_;
+    std::size_t bakedTimeStepCount_ = 0;
+};
+
+}  // namespace tstyles

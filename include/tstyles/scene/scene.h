@@ -1,0 +1,60 @@
+// A scene: which dataset, seen how, classified how. The same JSON drives `tstyles render` and the viewer.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "tstyles/scene/camera.h"
+#include "tstyles/scene/transfer_function.h"
+
+namespace tstyles {
+
+// The temporal compositor: how the n values that overlap at a sample become one temporal characteristic.
+enum class TemporalCompositor {
+    MaxIntensityProjection,  // time-step with the highest STF opacity wins; its index feeds the index TSTF
+    Average,                 // colours and opacities averaged over the non-transparent time-steps
+    MaxDensityChange,        // max - min density feeds the gradient-magnitude TSTF
+};
+
+// What the compositor returns: STF alone, TSTF alone, or the STF modulated by the TSTF.
+enum class FinalMode { Stf, Tstf, Modulate };
+
+std::string toString(TemporalCompositor tc);
+std::optional<TemporalCompositor> temporalCompositorFromString(const std::string& name);
+std::string toString(FinalMode mode);
+std::optional<FinalMode> finalModeFromString(const std::string& name);
+// Every accepted name, in declaration order (for messages and UI lists).
+std::vector<std::string> temporalCompositorNames();
+std::vector<std::string> finalModeNames();
+
+struct RaycastSettings {
+    // World-space distance between samples; none means half the finest voxel spacing of the series.
+    std::optional<double> step;
+    // Rays stop once the accumulated opacity reaches this.
+    double termination = 0.99;
+    bool operator==(const RaycastSettings&) const = default;
+};
+
+struct Scene {
+    // The series manifest. A file may name it relative to the scene file's folder; a loaded scene
+    // holds the resolved absolute, normalized path. A relative path in memory means relative to the
+    // current directory.
+    std::filesystem::path dataset;
+    Camera camera;
+    int width = 512;
+    int height = 512;
+    glm::dvec4 background{0.0, 0.0, 0.0, 1.0};
+    RaycastSettings raycast;
+    Stf stf = defaultStf();
+    TemporalCompositor compositor = TemporalCompositor::MaxIntensityProjection;
+    IndexTstf indexTstf = defaultIndexTstf();
+    GradientTstf gradientTstf = defaultGradientTstf();
+    FinalMode finalMode = FinalMode::Modulate;
+    bool operator==(const Scene&) const = default;
+};
+
+}  // namespace tstyles

@@ -1,0 +1,17 @@
+// Binding points shared by the C++ side (render/bindings.h) and every shader.
+const int ATLAS_UNIT = 0;
+const int MASK_ATLAS_UNIT = 1;
+const int ENTRY_UNIT = 2;
+const int EXIT_UNIT = 3;
+const int STF_UNIT = 4;
+const int GRADIENT_TSTF_UNIT = 5;
+
+#define TIME_STEP_BUFFER 0
+#define PROXY_BUFFER 1
+#define INDEX_TSTF_BUFFER 2
+#define STATISTICS_BUFFER 3
+
+// Entry buffers are cleared to NO_ENTRY and exit buffers to NO_EXIT; a pixel whose ray misses a
+// proxy keeps them.
+const float NO_ENTRY = 1.0e30;
+const float NO_EXIT = -1.0e30;

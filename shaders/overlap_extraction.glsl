@@ -1,0 +1,53 @@
+// Volume overlap extraction (paper 5.1): per pixel, read every time-step's entry and exit depth,
+// keep the time-steps the ray meets (sorted by entry depth) and the ray depth, the minimum entry
+// and maximum exit over all of them.
+layout(binding = ENTRY_UNIT) uniform sampler2DArray entryDepths;
+layout(binding = EXIT_UNIT) uniform sampler2DArray exitDepths;
+uniform int timeStepCount;
+
+#ifndef MAX_TIME_STEPS
+#define MAX_TIME_STEPS 16
+#endif
+
+// The time-steps this ray meets, in order of entry, with their own [entry, exit] interval.
+int activeCount;
+int activeSteps[MAX_TIME_STEPS];
+vec2 activeIntervals[MAX_TIME_STEPS];
+
+// Returns the ray depth (min entry, max exit); empty (x >= y) when the ray meets no time-step.
+vec2 extractVolumeOverlap(ivec2 pixel) {
+    activeCount = 0;
+    vec2 rayDepth = vec2(NO_ENTRY, NO_EXIT);
+    for (int step = 0; step < timeStepCount; ++step) {
+        int layer = timeSteps.steps[step].layer.x;
+        float exitDepth = texelFetch(exitDepths, ivec3(pixel, layer), 0).r;
+        if (exitDepth <= 0.0) continue;  // missed, or the whole box lies behind the near plane
+        float entryDepth = texelFetch(entryDepths, ivec3(pixel, layer), 0).r;
+        // No entry face but an exit: the near plane cuts the box, the ray starts inside it.
+        if (entryDepth >= NO_ENTRY) entryDepth = 0.0;
+        entryDepth = max(entryDepth, 0.0);
+        if (exitDepth <= entryDepth) continue;
+
+        // Insertion by entry depth keeps the list in the order the ray meets the time-steps.
+        int slot = activeCount;
+        while (slot > 0 && activeIntervals[slot - 1].x > entryDepth) {
+            activeSteps[slot] = activeSteps[slot - 1];
+            activeIntervals[slot] = activeIntervals[slot - 1];
+            --slot;
+        }
+        activeSteps[slot] = step;
+        activeIntervals[slot] = vec2(entryDepth, exitDepth);
+        ++activeCount;
+        rayDepth = vec2(min(rayDepth.x, entryDepth), max(rayDepth.y, exitDepth));
+    }
+    return rayDepth;
+}
+
+// The first entry depth after t among the active time-steps, or `limit` if there is none: where
+// the next time-step begins when the ray is in empty space between boxes.
+float nextEntryAfter(float t, float limit) {
+    float next = limit;
+    for (int i = 0; i < activeCount; ++i)
+        if (activeIntervals[i].x > t) next = min(next, activeIntervals[i].x);
+    return next;
+}

@@ -1,0 +1,10 @@
+// Proxy geometry for the entry/exit buffers: one box per distinct time-step placement (time-steps
+// that share grid and placement share a box and a layer).
+struct ProxyBox {
+    mat4 gridToWorld;  // grid-local position -> world
+    vec4 extent;       // xyz: the box is [0, extent] in grid-local units
+};
+
+layout(std430, binding = PROXY_BUFFER) readonly buffer ProxyBoxes {
+    ProxyBox boxes[];
+} proxy;

@@ -1,0 +1,78 @@
+#version 450 core
+// Ray iteration and compositing (paper 5.2): march the ray depth in fixed world-space steps, ask
+// the temporal compositor for a temporal style at each sample, composite front to back with
+// opacity correction for the step length, and stop early once the ray is nearly opaque.
+#include "bindings.glsl"
+#include "ray.glsl"
+#include "time_steps.glsl"
+#include "volume_sampling.glsl"
+#include "transfer_functions.glsl"
+#include "final_processing.glsl"
+#include "overlap_extraction.glsl"
+#include "temporal_compositor.glsl"
+
+uniform float stepLength;       // world units between samples
+uniform float referenceLength;  // the length over which a transfer-function opacity applies
+uniform float terminationOpacity;
+uniform vec4 background;        // straight (not premultiplied) colour and opacity
+
+#ifndef COLLECT_STATISTICS
+#define COLLECT_STATISTICS 0
+#endif
+#if COLLECT_STATISTICS
+// 64-bit counters as (low, high) pairs: GLSL 4.50 has only 32-bit atomics.
+layout(std430, binding = STATISTICS_BUFFER) buffer Statistics {
+    uvec2 rays;
+    uvec2 samples;
+    uvec2 fetches;
+} statistics;
+
+// A macro, not a function: atomics need the buffer variable itself, not a copy.
+#define ADD_TO_COUNTER(counter, amount)                           \
+    {                                                             \
+        uint before = atomicAdd(counter.x, amount);               \
+        if (before + (amount) < before) atomicAdd(counter.y, 1u); \
+    }
+#endif
+
+layout(location = 0) out vec4 fragmentColor;  // premultiplied by alpha
+
+void main() {
+    Ray ray = rayForPixel(gl_FragCoord.xy);
+    vec2 rayDepth = extractVolumeOverlap(ivec2(gl_FragCoord.xy));
+
+    vec4 accumulated = vec4(0.0);  // premultiplied colour, opacity
+    int samples = 0;
+    int fetches = 0;
+    float t = rayDepth.x;
+    while (t < rayDepth.y && accumulated.a < terminationOpacity) {
+        // Each sample stands for the segment [t, segmentEnd]; the last one is shortened to end
+        // exactly at the exit, so a slab of thickness D gets exactly D worth of opacity.
+        float segmentEnd = min(t + stepLength, rayDepth.y);
+        float middle = 0.5 * (t + segmentEnd);
+        TemporalSample styled = compositeTemporal(ray.origin + ray.direction * middle, middle);
+        samples += 1;
+        fetches += styled.fetches;
+        if (styled.contributing == 0) {
+            // Between time-steps: jump to where the next one begins.
+            t = nextEntryAfter(middle, rayDepth.y);
+            continue;
+        }
+        float opacity = clamp(styled.colorOpacity.a, 0.0, 1.0);
+        if (opacity > 0.0) {
+            float corrected = 1.0 - pow(1.0 - opacity, (segmentEnd - t) / referenceLength);
+            accumulated += (1.0 - accumulated.a) * vec4(styled.colorOpacity.rgb * corrected, corrected);
+        }
+        t = segmentEnd;
+    }
+
+#if COLLECT_STATISTICS
+    if (rayDepth.x < rayDepth.y) {
+        ADD_TO_COUNTER(statistics.rays, 1u)
+        ADD_TO_COUNTER(statistics.samples, uint(samples))
+        ADD_TO_COUNTER(statistics.fetches, uint(fetches))
+    }
+#endif
+    vec4 premultipliedBackground = vec4(background.rgb * background.a, background.a);
+    fragmentColor = accumulated + (1.0 - accumulated.a) * premultipliedBackground;
+}

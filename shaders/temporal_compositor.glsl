@@ -1,0 +1,90 @@
+// Temporal compositors (paper 5.3): at a sample, every time-step whose interval contains it
+// contributes its density, its mask and its STF classification; the compositor turns those n
+// values into a temporal characteristic, reads the TSTF and applies the final processing.
+#define TC_MAX_INTENSITY_PROJECTION 0
+#define TC_AVERAGE 1
+#define TC_MAX_DENSITY_CHANGE 2
+
+#ifndef TEMPORAL_COMPOSITOR
+#define TEMPORAL_COMPOSITOR TC_MAX_INTENSITY_PROJECTION
+#endif
+
+// The max density change is scaled from [changeRange.x, changeRange.y] to [0, 1].
+uniform vec2 changeRange;
+
+struct TemporalSample {
+    vec4 colorOpacity;  // colour and opacity per reference length
+    int contributing;   // how many time-steps contain the sample
+    int fetches;        // volume texture fetches spent
+};
+
+TemporalSample compositeTemporal(vec3 position, float t) {
+    TemporalSample result = TemporalSample(vec4(0.0), 0, 0);
+#if TEMPORAL_COMPOSITOR == TC_MAX_INTENSITY_PROJECTION
+    // The time-step with the highest STF opacity wins (ties: the earlier time-step).
+    int winner = -1;
+    vec4 winnerStf = vec4(0.0);
+    bool winnerInMask = false;
+#elif TEMPORAL_COMPOSITOR == TC_AVERAGE
+    vec4 premultipliedSum = vec4(0.0);
+    int nonTransparent = 0;
+#else
+    float minimumDensity = 1.0;
+    float maximumDensity = 0.0;
+    vec4 strongestStf = vec4(0.0);
+    int strongestStep = -1;
+    bool anyInMask = false;
+#endif
+
+    for (int i = 0; i < activeCount; ++i) {
+        if (t < activeIntervals[i].x || t > activeIntervals[i].y) continue;
+        int step = activeSteps[i];
+        vec3 atlasPosition = atlasCoordinate(step, position);
+        float density = sampleDensity(atlasPosition);
+        bool inMask = insideMask(step, atlasPosition);
+        vec4 stf = classifyStf(density);
+        result.contributing += 1;
+        result.fetches += timeSteps.steps[step].dims.w > 0.5 ? 2 : 1;
+#if TEMPORAL_COMPOSITOR == TC_MAX_INTENSITY_PROJECTION
+        if (stf.a > winnerStf.a || (stf.a == winnerStf.a && stf.a > 0.0 && step < winner)) {
+            winner = step;
+            winnerStf = stf;
+            winnerInMask = inMask;
+        }
+#elif TEMPORAL_COMPOSITOR == TC_AVERAGE
+        if (stf.a <= 0.0) continue;
+        vec4 styled = finalProcessing(stf, classifyIndexTstf(step), inMask);
+        if (styled.a <= 0.0) continue;
+        premultipliedSum += vec4(styled.rgb * styled.a, styled.a);
+        nonTransparent += 1;
+#else
+        minimumDensity = min(minimumDensity, density);
+        maximumDensity = max(maximumDensity, density);
+        anyInMask = anyInMask || inMask;
+        if (stf.a > strongestStf.a || strongestStep < 0) {
+            strongestStf = stf;
+            strongestStep = step;
+        }
+#endif
+    }
+
+#if TEMPORAL_COMPOSITOR == TC_MAX_INTENSITY_PROJECTION
+    if (winner >= 0) result.colorOpacity = finalProcessing(winnerStf, classifyIndexTstf(winner), winnerInMask);
+#elif TEMPORAL_COMPOSITOR == TC_AVERAGE
+    // Opacities are averaged; colours are averaged weighted by opacity, so a faint time-step does
+    // not wash out the colour of an opaque one.
+    if (nonTransparent > 0)
+        result.colorOpacity = vec4(premultipliedSum.rgb / premultipliedSum.a,
+                                   premultipliedSum.a / float(nonTransparent));
+#else
+    if (result.contributing >= 2 && strongestStf.a > 0.0) {
+        float change = (maximumDensity - minimumDensity - changeRange.x) / (changeRange.y - changeRange.x);
+        vec4 tstf = classifyGradientTstf(change);
+        result.colorOpacity = finalProcessing(strongestStf, tstf, anyInMask);
+    } else if (result.contributing == 1) {
+        // Change is undefined where only one time-step is present: the time-invariant STF shows.
+        result.colorOpacity = strongestStf;
+    }
+#endif
+    return result;
+}

@@ -1,0 +1,11 @@
+// Per-time-step description: where its samples are in the world, where its brick is in the atlas.
+struct TimeStepInfo {
+    mat4 worldToVoxel;  // world position -> voxel coordinates (sample (i,j,k) sits at (i,j,k))
+    vec4 brickOrigin;   // xyz: first texel of this time-step's brick in the atlas
+    vec4 dims;          // xyz: samples along each axis; w: 1 when the time-step has a mask
+    ivec4 layer;        // x: layer of this time-step's proxy box in the entry/exit buffers
+};
+
+layout(std430, binding = TIME_STEP_BUFFER) readonly buffer TimeSteps {
+    TimeStepInfo steps[];
+} timeSteps;

@@ -1,0 +1,33 @@
+// tstyles: one executable, several subcommands. Turns every error into one message and an exit code.
+#include <iostream>
+#include <vector>
+
+#include "commands.h"
+#include "tstyles/core/errors.h"
+
+int main(int argc, char** argv) {
+    using namespace tstyles;
+    CLI::App app{"Temporal Styles: time-varying volume rendering with temporal style transfer functions"};
+    app.require_subcommand(1);
+    const std::vector<cli::Command> commands = {cli::addRenderCommand(app), cli::addInfoCommand(app)};
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        const int code = app.exit(error);
+        return code == 0 ? cli::kExitSuccess : cli::kExitBadInput;
+    }
+    try {
+        for (const auto& command : commands)
+            if (command.parsed->parsed()) return command.run();
+    } catch (const InputError& error) {
+        std::cerr << "tstyles: " << error.what() << "\n";
+        return cli::kExitBadInput;
+    } catch (const GlUnavailableError& error) {
+        std::cerr << "tstyles: " << error.what() << "\n";
+        return cli::kExitNoOpenGl;
+    } catch (const std::exception& error) {
+        std::cerr << "tstyles: internal error: " << error.what() << "\n";
+        return cli::kExitFailure;
+    }
+    return cli::kExitFailure;
+}

@@ -1,0 +1,69 @@
+// `tstyles render SCENE -o OUT`: one scene to one image file, headless.
+#include <chrono>
+#include <iostream>
+#include <memory>
+
+#include "commands.h"
+#include "tstyles/core/errors.h"
+#include "tstyles/data/manifest.h"
+#include "tstyles/image/image_io.h"
+#include "tstyles/render/renderer.h"
+#include "tstyles/scene/scene_file.h"
+
+namespace tstyles::cli {
+namespace {
+
+struct RenderOptions {
+    std::filesystem::path scene;
+    std::filesystem::path output;
+    std::optional<int> width;
+    std::optional<int> height;
+    std::optional<std::string> compositor;
+    GlOptions gl;
+};
+
+int runRender(const RenderOptions& options) {
+    Scene scene = loadScene(options.scene);
+    if (options.width) scene.width = *options.width;
+    if (options.height) scene.height = *options.height;
+    if (options.compositor) {
+        auto compositor = temporalCompositorFromString(*options.compositor);
+        if (!compositor)
+            throwInputError("", "--tc",
+                            "unknown temporal compositor \"" + *options.compositor +
+                                "\" (temporal-mip, temporal-average, temporal-max-change)");
+        scene.compositor = *compositor;
+    }
+    const Series series = loadSeries(scene.dataset);
+    const auto context = createHeadlessContext(parseBackend(options.gl.backend), glDebugOutputRequested());
+    Renderer renderer(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
+    renderer.setSeries(series);
+    const auto start = std::chrono::steady_clock::now();
+    const Image image = renderImage(renderer, scene, series.worldBounds());
+    const double milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    writeImage(image, options.output);
+    std::cout << "wrote " << options.output.string() << " (" << scene.width << "x" << scene.height << ", "
+              << toString(scene.compositor) << ", " << series.size() << " time-steps, " << milliseconds
+              << " ms incl. shader compilation; " << context->description() << ")\n";
+    return kExitSuccess;
+}
+
+}  // namespace
+
+Command addRenderCommand(CLI::App& app) {
+    auto options = std::make_shared<RenderOptions>();
+    CLI::App* command = app.add_subcommand("render", "Render a scene file to an image (PNG, TIFF, EXR)");
+    command->add_option("scene", options->scene, "Scene file (JSON)")->required();
+    command->add_option("-o,--output", options->output, "Image file to write; the format follows the extension")
+        ->required();
+    command->add_option("--width", options->width, "Image width (overrides the scene)")->check(CLI::Range(1, 16384));
+    command->add_option("--height", options->height, "Image height (overrides the scene)")
+        ->check(CLI::Range(1, 16384));
+    command->add_option("--tc", options->compositor,
+                        "Temporal compositor: temporal-mip, temporal-average, temporal-max-change");
+    addGlOptions(*command, options->gl);
+    return {command, [options] { return runRender(*options); }};
+}
+
+}  // namespace tstyles::cli

@@ -1,0 +1,248 @@
+// Loading a series: parse and check the JSON manifest, then read every value and mask file it names
+// and map the raw values to density by the series' value range.
+#include "tstyles/data/manifest.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <system_error>
+
+#include <nlohmann/json.hpp>
+
+#include "manifest_field.h"
+#include "raw_values.h"
+#include "tstyles/core/errors.h"
+
+namespace tstyles {
+namespace {
+
+constexpr const char* kManifestFormat = "tstyles-series";
+constexpr int kManifestVersion = 1;
+constexpr const char* kManifestFileName = "series.json";
+// Far beyond any volume a GPU holds, and small enough that byte counts cannot overflow.
+constexpr std::uint64_t kMaxVoxelsPerStep = std::uint64_t(1) << 36;
+
+// A time-step as the manifest describes it, before its files are read.
+struct StepEntry {
+    TimeStep step;
+    std::string valuesField;
+    std::string maskField;  // empty when the time-step has no mask
+};
+
+std::string numberText(double value) {
+    std::ostringstream text;
+    text << value;
+    return text.str();
+}
+
+// A dataset may be named by its folder; the manifest inside is then series.json.
+std::filesystem::path manifestFileOf(const std::filesystem::path& dataset) {
+    std::error_code error;
+    if (std::filesystem::is_directory(dataset, error)) return dataset / kManifestFileName;
+    return dataset;
+}
+
+// nlohmann's messages start with "[json.exception.parse_error.101] "; the rest (line, column and
+// what was expected) is what the user needs.
+std::string parserMessage(const nlohmann::json::exception& error) {
+    const std::string message = error.what();
+    const auto end = message.find("] ");
+    return end == std::string::npos ? message : message.substr(end + 2);
+}
+
+nlohmann::json parseManifest(const std::filesystem::path& file) {
+    std::error_code error;
+    if (!std::filesystem::exists(file, error)) throwInputError(file, "", "manifest not found");
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throwInputError(file, "", "cannot open the manifest for reading");
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (in.bad()) throwInputError(file, "", "cannot read the manifest");
+    try {
+        return nlohmann::json::parse(text);
+    } catch (const nlohmann::json::exception& parseError) {
+        // Besides syntax errors this catches numbers too large for a double (1e999): JSON has no
+        // infinity, so nlohmann reports them as out_of_range rather than parsing them to inf.
+        throwInputError(file, "", "not valid JSON: " + parserMessage(parseError));
+    }
+}
+
+std::filesystem::path resolveBeside(const std::filesystem::path& manifest, const ManifestField& name) {
+    const std::filesystem::path file = name.string();
+    if (file.empty()) name.fail("must name a file");
+    return file.is_absolute() ? file : manifest.parent_path() / file;
+}
+
+RectilinearGrid readGrid(const ManifestField& field) {
+    field.allowOnlyKeys({"type", "dims", "spacing"});
+    const ManifestField type = field.member("type");
+    if (type.string() != "rectilinear") {
+        type.fail("unknown grid type '" + type.string() + "' (known: rectilinear)");
+    }
+    RectilinearGrid grid;
+    const ManifestField dims = field.member("dims");
+    const ManifestField spacing = field.member("spacing");
+    if (dims.arraySize() != 3) dims.fail("expected 3 sample counts (x, y, z)");
+    if (spacing.arraySize() != 3) spacing.fail("expected 3 distances (x, y, z)");
+    std::uint64_t voxels = 1;
+    for (int axis = 0; axis < 3; ++axis) {
+        const ManifestField count = dims.element(std::size_t(axis));
+        grid.dims[axis] = count.integer();
+        if (grid.dims[axis] < 2) {
+            count.fail("must be at least 2, found " + std::to_string(grid.dims[axis]) +
+                       ": a grid needs two samples along each axis to span a box");
+        }
+        voxels *= std::uint64_t(grid.dims[axis]);  // each factor < 2^31 and the running product is checked
+        if (voxels > kMaxVoxelsPerStep) dims.fail("too many voxels for one time-step");
+        const ManifestField distance = spacing.element(std::size_t(axis));
+        grid.spacing[axis] = distance.finiteNumber();
+        if (grid.spacing[axis] <= 0.0)
+            distance.fail("must be positive, found " + numberText(grid.spacing[axis]));
+    }
+    return grid;
+}
+
+Placement readPlacement(const std::optional<ManifestField>& field) {
+    Placement placement;
+    if (!field) return placement;
+    field->allowOnlyKeys({"origin", "rotation"});
+    if (const auto origin = field->optionalMember("origin")) placement.origin = origin->finiteVec3();
+    if (const auto rotation = field->optionalMember("rotation")) {
+        rotation->allowOnlyKeys({"axis", "angle_deg"});
+        const ManifestField axisField = rotation->member("axis");
+        AxisAngle axisAngle;
+        axisAngle.axis = axisField.finiteVec3();
+        if (!(glm::length(axisAngle.axis) > 0.0)) axisField.fail("rotation axis must not be zero");
+        axisAngle.angleDeg = rotation->member("angle_deg").finiteNumber();
+        placement.rotation = fromAxisAngle(axisAngle);
+    }
+    return placement;
+}
+
+StepEntry readStepEntry(const ManifestField& field) {
+    field.allowOnlyKeys({"time", "grid", "placement", "values", "mask"});
+    StepEntry entry;
+    entry.step.time = field.member("time").finiteNumber();
+    entry.step.grid = readGrid(field.member("grid"));
+    entry.step.placement = readPlacement(field.optionalMember("placement"));
+
+    const ManifestField values = field.member("values");
+    values.allowOnlyKeys({"file", "type"});
+    const ManifestField valuesFile = values.member("file");
+    entry.step.valuesFile = resolveBeside(field.file(), valuesFile);
+    entry.valuesField = valuesFile.path();
+    const ManifestField type = values.member("type");
+    const auto valueType = valueTypeFromString(type.string());
+    if (!valueType) type.fail("unknown value type '" + type.string() + "' (known: uint8, uint16, float32)");
+    entry.step.sourceType = *valueType;
+
+    if (const auto mask = field.optionalMember("mask")) {
+        mask->allowOnlyKeys({"file"});
+        const ManifestField maskFile = mask->member("file");
+        entry.step.maskFile = resolveBeside(field.file(), maskFile);
+        entry.maskField = maskFile.path();
+    }
+    return entry;
+}
+
+std::vector<StepEntry> readStepEntries(const ManifestField& field) {
+    const std::size_t count = field.arraySize();
+    if (count == 0) field.fail("must list at least one time-step");
+    std::vector<StepEntry> entries;
+    entries.reserve(count);
+    for (std::size_t index = 0; index < count; ++index) {
+        const ManifestField stepField = field.element(index);
+        entries.push_back(readStepEntry(stepField));
+        // Time orders the series everywhere (TSTF axes, playback), so ties are as wrong as reversals.
+        if (index > 0 && !(entries[index].step.time > entries[index - 1].step.time)) {
+            stepField.member("time").fail(
+                "times must be strictly increasing: " + numberText(entries[index].step.time) + " follows " +
+                numberText(entries[index - 1].step.time));
+        }
+    }
+    return entries;
+}
+
+std::optional<std::array<double, 2>> readValueRange(const std::optional<ManifestField>& field) {
+    if (!field) return std::nullopt;
+    if (field->arraySize() != 2) field->fail("expected [low, high]");
+    const std::array<double, 2> range{field->element(0).finiteNumber(), field->element(1).finiteNumber()};
+    if (!(range[0] < range[1])) {
+        field->fail("low must be less than high, found [" + numberText(range[0]) + ", " +
+                    numberText(range[1]) + "]");
+    }
+    return range;
+}
+
+void readStepFiles(const std::filesystem::path& manifest, std::size_t index, StepEntry& entry) {
+    TimeStep& step = entry.step;
+    RawValues raw = readRawValues({manifest, entry.valuesField, index, step.valuesFile}, step.rectilinear(),
+                                  step.sourceType);
+    step.density = std::move(raw.values);  // still raw: normalised once the value range is known
+    step.rawRange = raw.range;
+    if (!entry.maskField.empty()) {
+        step.mask = readMask({manifest, entry.maskField, index, step.maskFile}, step.rectilinear());
+    }
+}
+
+std::array<double, 2> valueRangeFromData(const std::filesystem::path& manifest,
+                                         const std::vector<StepEntry>& entries) {
+    std::array<double, 2> range = entries.front().step.rawRange;
+    for (const StepEntry& entry : entries) {
+        range[0] = std::min(range[0], entry.step.rawRange[0]);
+        range[1] = std::max(range[1], entry.step.rawRange[1]);
+    }
+    if (range[0] == range[1]) {
+        throwInputError(manifest, "value_range",
+                        "not given, and every value of every time-step is " + numberText(range[0]) +
+                            ", so no range can be derived: give \"value_range\": [low, high]");
+    }
+    return range;
+}
+
+std::string defaultName(const std::filesystem::path& manifest) {
+    std::error_code error;
+    const std::filesystem::path absolute = std::filesystem::absolute(manifest, error);
+    return (error ? manifest : absolute).parent_path().filename().string();
+}
+
+}  // namespace
+
+Series loadSeries(const std::filesystem::path& manifestPath) {
+    const std::filesystem::path manifest = manifestFileOf(manifestPath);
+    const nlohmann::json document = parseManifest(manifest);
+    const ManifestField root(manifest, document, "");
+
+    // Format and version first: a different kind of JSON file should not be reported key by key.
+    const ManifestField format = root.member("format");
+    if (format.string() != kManifestFormat) {
+        format.fail("expected \"" + std::string(kManifestFormat) + "\", found \"" + format.string() + "\"");
+    }
+    const ManifestField version = root.member("version");
+    if (version.integer() != kManifestVersion) {
+        version.fail("unsupported version " + std::to_string(version.integer()) + " (this build reads " +
+                     std::to_string(kManifestVersion) + ")");
+    }
+    root.allowOnlyKeys({"format", "version", "name", "value_range", "time_steps"});
+
+    Series series;
+    series.manifestPath = manifest;
+    const auto name = root.optionalMember("name");
+    series.name = name ? name->string() : defaultName(manifest);
+    const auto explicitRange = readValueRange(root.optionalMember("value_range"));
+    std::vector<StepEntry> entries = readStepEntries(root.member("time_steps"));
+
+    for (std::size_t index = 0; index < entries.size(); ++index)
+        readStepFiles(manifest, index, entries[index]);
+    series.valueRange = explicitRange ? *explicitRange : valueRangeFromData(manifest, entries);
+
+    series.steps.reserve(entries.size());
+    for (StepEntry& entry : entries) {
+        normalizeToDensity(entry.step.density, series.valueRange);
+        series.steps.push_back(std::move(entry.step));
+    }
+    return series;
+}
+
+}  // namespace tstyles

@@ -1,0 +1,134 @@
+// Writing a series to disk: one raw file per time-step (and mask), then the manifest last, so a
+// folder with a series.json always has every file that manifest names.
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+
+#include <nlohmann/json.hpp>
+
+#include "tstyles/core/atomic_file.h"
+#include "tstyles/core/errors.h"
+#include "tstyles/data/manifest.h"
+
+namespace tstyles {
+namespace {
+
+using OrderedJson = nlohmann::ordered_json;
+
+// A RawSeries that loadSeries would reject is a bug in the caller (a generator), not bad user input.
+void checkWritable(const RawSeries& series) {
+    const auto fail = [](const std::string& problem) {
+        throw std::invalid_argument("writeSeries: " + problem);
+    };
+    if (series.steps.empty()) fail("the series has no time-steps");
+    if (!(std::isfinite(series.valueRange[0]) && std::isfinite(series.valueRange[1]) &&
+          series.valueRange[0] < series.valueRange[1])) {
+        fail("value range must be finite with low < high");
+    }
+    for (std::size_t index = 0; index < series.steps.size(); ++index) {
+        const RawTimeStep& step = series.steps[index];
+        const std::string where = "time-step " + std::to_string(index) + ": ";
+        if (glm::any(glm::lessThan(step.grid.dims, glm::ivec3(2)))) fail(where + "dims must be at least 2");
+        const std::size_t voxels = step.grid.voxelCount();
+        if (step.bytes.size() != voxels * bytesPerValue(step.type)) {
+            fail(where + "has " + std::to_string(step.bytes.size()) + " value bytes, expected " +
+                 std::to_string(voxels * bytesPerValue(step.type)));
+        }
+        if (step.mask && step.mask->size() != voxels) {
+            fail(where + "mask has " + std::to_string(step.mask->size()) + " bytes, expected " +
+                 std::to_string(voxels));
+        }
+        if (index > 0 && !(step.time > series.steps[index - 1].time)) fail(where + "times must increase");
+    }
+}
+
+// t00, t01, ... wide enough that the names sort in time order.
+std::string stepFileStem(std::size_t index, std::size_t stepCount) {
+    const std::size_t width = std::max<std::size_t>(2, std::to_string(stepCount - 1).size());
+    std::string digits = std::to_string(index);
+    return std::string("t") + std::string(width - digits.size(), '0') + digits;
+}
+
+OrderedJson vec3Json(const glm::dvec3& v) {
+    return OrderedJson::array({v.x, v.y, v.z});
+}
+
+OrderedJson stepJson(const RawTimeStep& step, const std::string& stem) {
+    const AxisAngle rotation = toAxisAngle(step.placement.rotation);
+    OrderedJson json;
+    json["time"] = step.time;
+    json["grid"] = {{"type", "rectilinear"},
+                    {"dims", OrderedJson::array({step.grid.dims.x, step.grid.dims.y, step.grid.dims.z})},
+                    {"spacing", vec3Json(step.grid.spacing)}};
+    json["placement"] = {{"origin", vec3Json(step.placement.origin)},
+                         {"rotation", {{"axis", vec3Json(rotation.axis)}, {"angle_deg", rotation.angleDeg}}}};
+    json["values"] = {{"file", stem + ".raw"}, {"type", toString(step.type)}};
+    if (step.mask) json["mask"] = {{"file", stem + "_mask.raw"}};
+    return json;
+}
+
+// Like dump(2), except that arrays of numbers or strings stay on one line: nlohmann would give each
+// component of every vector its own line, which buries the structure a reader looks for.
+void appendReadable(std::string& out, const OrderedJson& value, std::size_t indent) {
+    const auto isStructured = [](const OrderedJson& element) { return element.is_structured(); };
+    const bool nested = std::any_of(value.begin(), value.end(), isStructured);
+    if (!value.is_structured() || value.empty() || (value.is_array() && !nested)) {
+        if (!value.is_array()) {
+            out += value.dump();
+            return;
+        }
+        out += "[";
+        for (std::size_t index = 0; index < value.size(); ++index) {
+            if (index > 0) out += ", ";
+            out += value[index].dump();
+        }
+        out += "]";
+        return;
+    }
+    const std::string inner(indent + 2, ' ');
+    out += value.is_object() ? "{\n" : "[\n";
+    bool first = true;
+    for (const auto& [key, child] : value.items()) {
+        out += first ? inner : ",\n" + inner;
+        first = false;
+        if (value.is_object()) out += OrderedJson(key).dump() + ": ";
+        appendReadable(out, child, indent + 2);
+    }
+    out += "\n" + std::string(indent, ' ') + (value.is_object() ? "}" : "]");
+}
+
+void writeBytes(const std::filesystem::path& target, const std::vector<std::uint8_t>& bytes) {
+    writeFileAtomically(target, std::as_bytes(std::span(bytes)));
+}
+
+}  // namespace
+
+void writeSeries(const RawSeries& series, const std::filesystem::path& directory) {
+    checkWritable(series);
+    std::error_code error;
+    std::filesystem::create_directories(directory, error);
+    if (error) throwInputError(directory, "", "cannot create the dataset folder: " + error.message());
+
+    OrderedJson manifest;
+    manifest["format"] = "tstyles-series";
+    manifest["version"] = 1;
+    manifest["name"] = series.name;
+    manifest["value_range"] = OrderedJson::array({series.valueRange[0], series.valueRange[1]});
+    manifest["time_steps"] = OrderedJson::array();
+    for (std::size_t index = 0; index < series.steps.size(); ++index) {
+        const RawTimeStep& step = series.steps[index];
+        const std::string stem = stepFileStem(index, series.steps.size());
+        writeBytes(directory / (stem + ".raw"), step.bytes);
+        if (step.mask) writeBytes(directory / (stem + "_mask.raw"), *step.mask);
+        manifest["time_steps"].push_back(stepJson(step, stem));
+    }
+    std::string text;
+    appendReadable(text, manifest, 0);
+    writeFileAtomically(directory / "series.json", std::string_view(text + "\n"));
+}
+
+}  // namespace tstyles

@@ -1,0 +1,107 @@
+// Geometry of a series: value types, grid placement in the world, and the bounds and spacing the
+// renderer sizes its rays by.
+#include "tstyles/data/series.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace tstyles {
+
+std::string toString(ValueType type) {
+    switch (type) {
+        case ValueType::UInt8:
+            return "uint8";
+        case ValueType::UInt16:
+            return "uint16";
+        case ValueType::Float32:
+            return "float32";
+    }
+    throw std::logic_error("toString: ValueType out of range");
+}
+
+std::optional<ValueType> valueTypeFromString(const std::string& name) {
+    for (ValueType type : {ValueType::UInt8, ValueType::UInt16, ValueType::Float32}) {
+        if (toString(type) == name) return type;
+    }
+    return std::nullopt;
+}
+
+std::size_t bytesPerValue(ValueType type) {
+    switch (type) {
+        case ValueType::UInt8:
+            return 1;
+        case ValueType::UInt16:
+            return 2;
+        case ValueType::Float32:
+            return 4;
+    }
+    throw std::logic_error("bytesPerValue: ValueType out of range");
+}
+
+glm::dmat4 Placement::gridToWorld() const {
+    return glm::translate(glm::dmat4(1.0), origin) * glm::mat4_cast(rotation);
+}
+
+AxisAngle toAxisAngle(const glm::dquat& rotation) {
+    glm::dquat unit = glm::normalize(rotation);
+    // q and -q are the same rotation; choosing w >= 0 keeps the angle in [0, 180].
+    if (unit.w < 0.0) unit = -unit;
+    const glm::dvec3 imaginary(unit.x, unit.y, unit.z);
+    const double sinHalfAngle = glm::length(imaginary);
+    // Below this the axis is numerical noise; the rotation is the identity to double precision.
+    if (sinHalfAngle < 1e-15) return AxisAngle{};
+    return AxisAngle{imaginary / sinHalfAngle, glm::degrees(2.0 * std::atan2(sinHalfAngle, unit.w))};
+}
+
+glm::dquat fromAxisAngle(const AxisAngle& rotation) {
+    return glm::angleAxis(glm::radians(rotation.angleDeg), glm::normalize(rotation.axis));
+}
+
+bool Series::hasMasks() const {
+    return std::any_of(steps.begin(), steps.end(),
+                       [](const TimeStep& step) { return step.mask.has_value(); });
+}
+
+Bounds Series::worldBounds(std::size_t step) const {
+    const TimeStep& timeStep = steps.at(step);
+    const glm::dvec3 extent = timeStep.rectilinear().extent();
+    const glm::dmat4 toWorld = timeStep.placement.gridToWorld();
+    Bounds bounds{glm::dvec3(std::numeric_limits<double>::infinity()),
+                  glm::dvec3(-std::numeric_limits<double>::infinity())};
+    // A rotated box's axis-aligned bounds are reached at its corners, so eight points suffice.
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::dvec3 local((corner & 1) ? extent.x : 0.0, (corner & 2) ? extent.y : 0.0,
+                               (corner & 4) ? extent.z : 0.0);
+        const glm::dvec3 world(toWorld * glm::dvec4(local, 1.0));
+        bounds.lower = glm::min(bounds.lower, world);
+        bounds.upper = glm::max(bounds.upper, world);
+    }
+    return bounds;
+}
+
+Bounds Series::worldBounds() const {
+    if (steps.empty()) throw std::logic_error("Series::worldBounds: the series has no time-steps");
+    Bounds all = worldBounds(0);
+    for (std::size_t step = 1; step < steps.size(); ++step) {
+        const Bounds bounds = worldBounds(step);
+        all.lower = glm::min(all.lower, bounds.lower);
+        all.upper = glm::max(all.upper, bounds.upper);
+    }
+    return all;
+}
+
+double Series::finestSpacing() const {
+    if (steps.empty()) throw std::logic_error("Series::finestSpacing: the series has no time-steps");
+    double finest = std::numeric_limits<double>::infinity();
+    for (const TimeStep& step : steps) {
+        const glm::dvec3 spacing = step.rectilinear().spacing;
+        finest = std::min({finest, spacing.x, spacing.y, spacing.z});
+    }
+    return finest;
+}
+
+}  // namespace tstyles

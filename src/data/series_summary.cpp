@@ -1,0 +1,166 @@
+// The text of `tstyles info`: a series' time-steps, how they overlap in the world, and what they
+// cost in memory.
+#include "tstyles/data/series_summary.h"
+
+#include <algorithm>
+#include <iomanip>
+#include <sstream>
+#include <vector>
+
+namespace tstyles {
+namespace {
+
+constexpr double kBytesPerMiB = 1024.0 * 1024.0;
+// Density goes to the GPU as 16-bit normalised integers; masks as 8-bit.
+constexpr std::size_t kGpuBytesPerDensityVoxel = 2;
+constexpr std::size_t kGpuBytesPerMaskVoxel = 1;
+
+// Six significant digits, as %g; adding 0.0 turns -0 into 0 so rotated origins do not print "-0".
+std::string number(double value) {
+    std::ostringstream text;
+    text << std::setprecision(6) << (value + 0.0);
+    return text.str();
+}
+
+std::string vec3Text(const glm::dvec3& v) {
+    return std::string("(") + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + ")";
+}
+
+std::string mibText(std::size_t bytes) {
+    std::ostringstream text;
+    text << std::fixed << std::setprecision(2) << double(bytes) / kBytesPerMiB << " MiB";
+    return text.str();
+}
+
+double volume(const Bounds& bounds) {
+    const glm::dvec3 size = glm::max(bounds.size(), glm::dvec3(0.0));
+    return size.x * size.y * size.z;
+}
+
+std::string rotationText(const glm::dquat& rotation) {
+    const AxisAngle axisAngle = toAxisAngle(rotation);
+    if (axisAngle.angleDeg == 0.0) return "none";
+    return number(axisAngle.angleDeg) + " deg about " + vec3Text(axisAngle.axis);
+}
+
+using Row = std::vector<std::string>;
+
+// Left-aligned columns, each as wide as its widest cell, two spaces apart.
+void printTable(std::ostream& out, const std::vector<Row>& rows) {
+    std::vector<std::size_t> widths;
+    for (const Row& row : rows) {
+        widths.resize(std::max(widths.size(), row.size()), 0);
+        for (std::size_t column = 0; column < row.size(); ++column) {
+            widths[column] = std::max(widths[column], row[column].size());
+        }
+    }
+    for (const Row& row : rows) {
+        std::string line = "  ";
+        for (std::size_t column = 0; column < row.size(); ++column) {
+            line += row[column];
+            if (column + 1 < row.size()) line += std::string(widths[column] - row[column].size() + 2, ' ');
+        }
+        out << line << "\n";
+    }
+}
+
+Row stepRow(const Series& series, std::size_t index) {
+    const TimeStep& step = series.steps[index];
+    const RectilinearGrid& grid = step.rectilinear();
+    return {std::to_string(index),
+            number(step.time),
+            "rectilinear " + std::to_string(grid.dims.x) + "x" + std::to_string(grid.dims.y) + "x" +
+                std::to_string(grid.dims.z),
+            vec3Text(grid.spacing),
+            vec3Text(step.placement.origin),
+            rotationText(step.placement.rotation),
+            number(step.rawRange[0]) + " .. " + number(step.rawRange[1]) + " " + toString(step.sourceType),
+            step.mask ? "yes" : "no"};
+}
+
+void printOverlaps(std::ostream& out, const Series& series) {
+    if (series.size() < 2) {
+        out << "Overlap: a single time-step\n";
+        return;
+    }
+    out << "Overlap of adjacent time-steps (share of the smaller world box inside both):\n";
+    std::vector<Row> rows;
+    for (std::size_t index = 0; index + 1 < series.size(); ++index) {
+        std::ostringstream percent;
+        percent << std::fixed << std::setprecision(1) << 100.0 * overlapFraction(series, index, index + 1)
+                << " %";
+        rows.push_back({std::to_string(index) + " - " + std::to_string(index + 1), percent.str()});
+    }
+    printTable(out, rows);
+}
+
+}  // namespace
+
+bool isFullyAligned(const Series& series) {
+    if (series.steps.empty()) return true;
+    const TimeStep& first = series.steps.front();
+    return std::all_of(series.steps.begin(), series.steps.end(), [&first](const TimeStep& step) {
+        return step.grid.index() == first.grid.index() &&
+               step.rectilinear().dims == first.rectilinear().dims &&
+               step.rectilinear().spacing == first.rectilinear().spacing && step.placement == first.placement;
+    });
+}
+
+double overlapFraction(const Series& series, std::size_t a, std::size_t b) {
+    const Bounds first = series.worldBounds(a);
+    const Bounds second = series.worldBounds(b);
+    const Bounds both{glm::max(first.lower, second.lower), glm::min(first.upper, second.upper)};
+    const double smaller = std::min(volume(first), volume(second));
+    // Grids span at least two samples per axis, so a zero volume only comes from a hand-made Series.
+    if (smaller <= 0.0) return 0.0;
+    return std::clamp(volume(both) / smaller, 0.0, 1.0);
+}
+
+std::size_t diskBytes(const Series& series) {
+    std::size_t bytes = 0;
+    for (const TimeStep& step : series.steps) {
+        const std::size_t voxels = step.rectilinear().voxelCount();
+        bytes += voxels * bytesPerValue(step.sourceType) + (step.mask ? voxels : 0);
+    }
+    return bytes;
+}
+
+std::size_t gpuBytes(const Series& series) {
+    std::size_t bytes = 0;
+    for (const TimeStep& step : series.steps) {
+        const std::size_t voxels = step.rectilinear().voxelCount();
+        bytes += voxels * kGpuBytesPerDensityVoxel + (step.mask ? voxels * kGpuBytesPerMaskVoxel : 0);
+    }
+    return bytes;
+}
+
+std::string describeSeries(const Series& series) {
+    std::ostringstream out;
+    out << "Series: " << series.name << "\n";
+    out << "Manifest: " << series.manifestPath.string() << "\n";
+    out << "Time-steps: " << series.size() << "\n";
+    out << "Value range: [" << number(series.valueRange[0]) << ", " << number(series.valueRange[1])
+        << "] maps to density [0, 1]\n";
+    out << "Alignment: "
+        << (isFullyAligned(series) ? "fully aligned: one common grid"
+                                   : "partial overlap: time-steps differ in grid or placement")
+        << "\n";
+    if (!series.steps.empty()) {
+        const Bounds bounds = series.worldBounds();
+        out << "World bounds: " << vec3Text(bounds.lower) << " to " << vec3Text(bounds.upper) << "\n";
+    }
+    out << "\n";
+
+    std::vector<Row> rows{{"#", "time", "grid", "spacing", "origin", "rotation", "raw min .. max", "mask"}};
+    for (std::size_t index = 0; index < series.size(); ++index) rows.push_back(stepRow(series, index));
+    printTable(out, rows);
+    out << "\n";
+
+    printOverlaps(out, series);
+    out << "\n";
+    out << "Memory: " << mibText(diskBytes(series)) << " on disk, " << mibText(gpuBytes(series))
+        << " on the GPU (16-bit density" << (series.hasMasks() ? " + 8-bit mask" : "") << " per voxel)\n";
+    return out.str();
+}
+
+}  // namespace tstyles

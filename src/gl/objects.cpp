@@ -1,0 +1,85 @@
+// Creation and the few operations of the RAII GL object types.
+#include "tstyles/gl/objects.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace tstyles {
+
+Texture Texture::create(GLenum target) {
+    GLuint id = 0;
+    glCreateTextures(target, 1, &id);
+    return Texture(target, id);
+}
+
+void Texture::setFilter(GLenum minFilter, GLenum magFilter) const {
+    glTextureParameteri(id(), GL_TEXTURE_MIN_FILTER, GLint(minFilter));
+    glTextureParameteri(id(), GL_TEXTURE_MAG_FILTER, GLint(magFilter));
+}
+
+void Texture::setClampToEdge() const {
+    glTextureParameteri(id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(id(), GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+}
+
+Buffer Buffer::create() {
+    GLuint id = 0;
+    glCreateBuffers(1, &id);
+    return Buffer(id);
+}
+
+void Buffer::setData(std::span<const std::byte> bytes, GLenum usage) const {
+    // A zero-sized store cannot be bound as a shader storage block; keep at least 16 bytes.
+    static const std::byte padding[16] = {};
+    if (bytes.empty()) bytes = std::span<const std::byte>(padding, sizeof padding);
+    glNamedBufferData(id(), GLsizeiptr(bytes.size()), bytes.data(), usage);
+}
+
+Framebuffer Framebuffer::create() {
+    GLuint id = 0;
+    glCreateFramebuffers(1, &id);
+    return Framebuffer(id);
+}
+
+void Framebuffer::attachTexture(GLenum attachment, const Texture& texture, GLint level) const {
+    glNamedFramebufferTexture(id(), attachment, texture.id(), level);
+}
+
+void Framebuffer::setDrawBuffers(std::span<const GLenum> buffers) const {
+    glNamedFramebufferDrawBuffers(id(), GLsizei(buffers.size()), buffers.data());
+}
+
+void Framebuffer::requireComplete(const char* what) const {
+    const GLenum status = glCheckNamedFramebufferStatus(id(), GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error(std::string(what) + ": framebuffer incomplete (status 0x" +
+                                 [](GLenum value) {
+                                     char text[16];
+                                     std::snprintf(text, sizeof text, "%04x", value);
+                                     return std::string(text);
+                                 }(status) +
+                                 ")");
+}
+
+VertexArray VertexArray::create() {
+    GLuint id = 0;
+    glCreateVertexArrays(1, &id);
+    return VertexArray(id);
+}
+
+TimerQuery TimerQuery::create() {
+    GLuint ids[2] = {0, 0};
+    glCreateQueries(GL_TIMESTAMP, 2, ids);
+    return TimerQuery(ids[0], ids[1]);
+}
+
+double TimerQuery::milliseconds() const {
+    GLuint64 startNs = 0;
+    GLuint64 stopNs = 0;
+    glGetQueryObjectui64v(start_.id(), GL_QUERY_RESULT, &startNs);
+    glGetQueryObjectui64v(stop_.id(), GL_QUERY_RESULT, &stopNs);
+    return double(stopNs - startNs) * 1e-6;
+}
+
+}  // namespace tstyles

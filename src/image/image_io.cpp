@@ -1,0 +1,55 @@
+// Reading and writing images with OpenImageIO.
+#include "tstyles/image/image_io.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
+
+#include "tstyles/core/atomic_file.h"
+#include "tstyles/core/errors.h"
+
+namespace tstyles {
+
+void writeImage(const Image& image, const std::filesystem::path& file) {
+    auto probe = OIIO::ImageOutput::create(file.string());
+    if (!probe)
+        throwInputError(file, "", "cannot write images of this type (" + OIIO::geterror() +
+                                      "); use .png, .tif or .exr");
+    const bool floatFormat = probe->supports("float") != 0 &&
+                             (file.extension() == ".exr" || file.extension() == ".EXR");
+    probe.reset();
+    const OIIO::TypeDesc format = floatFormat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
+    writeAtomically(file, [&](const std::filesystem::path& temporary) {
+        auto output = OIIO::ImageOutput::create(temporary.string());
+        if (!output) throwInputError(file, "", "cannot create the image writer: " + OIIO::geterror());
+        OIIO::ImageSpec spec(image.width, image.height, 4, format);
+        if (!output->open(temporary.string(), spec)) throwInputError(file, "", "cannot open: " + output->geterror());
+        // Our pixels carry associated alpha, as OpenImageIO expects; it un-associates for PNG.
+        if (!output->write_image(OIIO::TypeDesc::FLOAT, image.rgba.data()))
+            throwInputError(file, "", "write failed: " + output->geterror());
+        if (!output->close()) throwInputError(file, "", "cannot finish writing: " + output->geterror());
+    });
+}
+
+Image readImage(const std::filesystem::path& file) {
+    if (!std::filesystem::exists(file)) throwInputError(file, "", "no such file");
+    auto input = OIIO::ImageInput::open(file.string());
+    if (!input) throwInputError(file, "", "cannot read as an image: " + OIIO::geterror());
+    const OIIO::ImageSpec& spec = input->spec();
+    if (spec.width <= 0 || spec.height <= 0) throwInputError(file, "", "the image is empty");
+    Image image(spec.width, spec.height);
+    const int channels = spec.nchannels;
+    std::vector<float> pixels(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(channels));
+    if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
+        throwInputError(file, "", "cannot read the pixels: " + input->geterror());
+    for (int y = 0; y < spec.height; ++y)
+        for (int x = 0; x < spec.width; ++x) {
+            const float* pixel = &pixels[(std::size_t(y) * std::size_t(spec.width) + std::size_t(x)) * std::size_t(channels)];
+            glm::vec4 value(pixel[0], channels > 1 ? pixel[1] : pixel[0], channels > 2 ? pixel[2] : pixel[0],
+                            channels > 3 ? pixel[3] : 1.0f);
+            image.set(x, y, value);
+        }
+    return image;
+}
+
+}  // namespace tstyles

@@ -1,0 +1,144 @@
+// Upload of a series into the volume atlas and the per-time-step tables.
+#include "tstyles/render/gpu_series.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "tstyles/core/errors.h"
+#include "tstyles/render/bindings.h"
+
+namespace tstyles {
+namespace {
+
+// Mirrors TimeStepInfo in shaders/time_steps.glsl (std430).
+struct TimeStepInfo {
+    glm::mat4 worldToVoxel;
+    glm::vec4 brickOrigin;
+    glm::vec4 dims;
+    glm::ivec4 layer;
+};
+
+// Mirrors ProxyBox in shaders/proxy_geometry.glsl (std430).
+struct ProxyBox {
+    glm::mat4 gridToWorld;
+    glm::vec4 extent;
+};
+
+int maxTextureSize3D() {
+    GLint size = 0;
+    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &size);
+    return size;
+}
+
+void requireNoOutOfMemory(const Series& series, const char* what) {
+    if (glGetError() == GL_OUT_OF_MEMORY)
+        throwInputError(series.manifestPath, "", std::string("not enough GPU memory for the ") + what);
+}
+
+Texture createAtlas(GLenum format, const glm::ivec3& size) {
+    Texture texture = Texture::create(GL_TEXTURE_3D);
+    glTextureStorage3D(texture.id(), 1, format, size.x, size.y, size.z);
+    texture.setFilter(GL_LINEAR, GL_LINEAR);
+    texture.setClampToEdge();
+    return texture;
+}
+
+// The proxy layer of every time-step; time-steps with the same grid extent and placement share one.
+std::vector<int> assignProxyLayers(const Series& series, std::vector<ProxyBox>& boxes) {
+    std::vector<int> layers;
+    std::vector<std::size_t> firstStepOfLayer;
+    for (std::size_t step = 0; step < series.size(); ++step) {
+        const auto& timeStep = series.steps[step];
+        int layer = -1;
+        for (std::size_t candidate = 0; candidate < firstStepOfLayer.size(); ++candidate) {
+            const auto& other = series.steps[firstStepOfLayer[candidate]];
+            if (other.placement == timeStep.placement &&
+                other.rectilinear().extent() == timeStep.rectilinear().extent()) {
+                layer = int(candidate);
+                break;
+            }
+        }
+        if (layer < 0) {
+            layer = int(firstStepOfLayer.size());
+            firstStepOfLayer.push_back(step);
+            boxes.push_back({glm::mat4(timeStep.placement.gridToWorld()),
+                             glm::vec4(glm::vec3(timeStep.rectilinear().extent()), 0.0f)});
+        }
+        layers.push_back(layer);
+    }
+    return layers;
+}
+
+}  // namespace
+
+GpuSeries::GpuSeries(const Series& series)
+    : densityAtlas_(Texture::create(GL_TEXTURE_3D)),
+      maskAtlas_(Texture::create(GL_TEXTURE_3D)),
+      timeStepTable_(Buffer::create()),
+      proxyTable_(Buffer::create()) {
+    timeStepCount_ = series.size();
+    hasMasks_ = series.hasMasks();
+    std::vector<glm::ivec3> dims;
+    for (const auto& step : series.steps) dims.push_back(step.rectilinear().dims);
+    layout_ = planAtlas(dims, maxTextureSize3D());
+
+    glGetError();  // start from a clean error state so that OUT_OF_MEMORY below is ours
+    densityAtlas_ = createAtlas(GL_R16, layout_.size);
+    maskAtlas_ = createAtlas(GL_R8, hasMasks_ ? layout_.size : glm::ivec3(1));
+    requireNoOutOfMemory(series, "volume atlas");
+
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    std::vector<std::uint16_t> texels;
+    std::vector<std::uint8_t> maskTexels;
+    for (std::size_t index = 0; index < series.size(); ++index) {
+        const auto& step = series.steps[index];
+        const glm::ivec3 size = step.rectilinear().dims;
+        const glm::ivec3 origin = layout_.brickOrigins[index];
+        texels.resize(step.density.size());
+        std::transform(step.density.begin(), step.density.end(), texels.begin(), [](float density) {
+            return std::uint16_t(std::lround(std::clamp(density, 0.0f, 1.0f) * 65535.0f));
+        });
+        glTextureSubImage3D(densityAtlas_.id(), 0, origin.x, origin.y, origin.z, size.x, size.y, size.z,
+                            GL_RED, GL_UNSIGNED_SHORT, texels.data());
+        if (step.mask) {
+            // Upload masks as 0 / 255 so that trilinear filtering gives a smooth boundary at 0.5.
+            maskTexels.resize(step.mask->size());
+            std::transform(step.mask->begin(), step.mask->end(), maskTexels.begin(),
+                           [](std::uint8_t value) { return std::uint8_t(value != 0 ? 255 : 0); });
+            glTextureSubImage3D(maskAtlas_.id(), 0, origin.x, origin.y, origin.z, size.x, size.y, size.z,
+                                GL_RED, GL_UNSIGNED_BYTE, maskTexels.data());
+        }
+    }
+    requireNoOutOfMemory(series, "volume atlas");
+
+    std::vector<ProxyBox> boxes;
+    const std::vector<int> layers = assignProxyLayers(series, boxes);
+    proxyCount_ = boxes.size();
+    std::vector<TimeStepInfo> table;
+    for (std::size_t index = 0; index < series.size(); ++index) {
+        const auto& step = series.steps[index];
+        const glm::dmat4 voxelToWorld =
+            step.placement.gridToWorld() * glm::scale(glm::dmat4(1.0), step.rectilinear().spacing);
+        table.push_back({glm::mat4(glm::inverse(voxelToWorld)), glm::vec4(glm::vec3(layout_.brickOrigins[index]), 0.0f),
+                         glm::vec4(glm::vec3(step.rectilinear().dims), step.mask ? 1.0f : 0.0f),
+                         glm::ivec4(layers[index], 0, 0, 0)});
+    }
+    timeStepTable_.setData(std::as_bytes(std::span(table)), GL_STATIC_DRAW);
+    proxyTable_.setData(std::as_bytes(std::span(boxes)), GL_STATIC_DRAW);
+}
+
+std::size_t GpuSeries::textureBytes() const {
+    return layout_.texelCount() * 2 + (hasMasks_ ? layout_.texelCount() : 1);
+}
+
+void GpuSeries::bind() const {
+    densityAtlas_.bindToUnit(binding::kAtlasUnit);
+    maskAtlas_.bindToUnit(binding::kMaskAtlasUnit);
+    timeStepTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kTimeStepBuffer);
+    proxyTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kProxyBuffer);
+}
+
+}  // namespace tstyles

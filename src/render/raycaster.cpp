@@ -1,0 +1,96 @@
+// Compiling the raycasting program variants and drawing the raycasting pass.
+#include "tstyles/render/raycaster.h"
+
+#include <array>
+#include <string>
+
+#include "tstyles/render/bindings.h"
+#include "tstyles/render/transfer_tables.h"
+
+namespace tstyles {
+namespace {
+
+int compositorDefine(TemporalCompositor compositor) {
+    switch (compositor) {
+        case TemporalCompositor::MaxIntensityProjection: return 0;
+        case TemporalCompositor::Average: return 1;
+        case TemporalCompositor::MaxDensityChange: return 2;
+    }
+    return 0;
+}
+
+int finalModeValue(FinalMode mode) {
+    switch (mode) {
+        case FinalMode::Stf: return 0;
+        case FinalMode::Tstf: return 1;
+        case FinalMode::Modulate: return 2;
+    }
+    return 2;
+}
+
+// The shader keeps per-ray arrays of the time-steps it meets; their size is a compile-time
+// constant, rounded up so that a few more or fewer time-steps reuse the same program.
+int arrayCapacity(int timeStepCount) {
+    int capacity = 8;
+    while (capacity < timeStepCount) capacity *= 2;
+    return capacity;
+}
+
+}  // namespace
+
+Raycaster::Raycaster(const ShaderLibrary& shaders)
+    : shaders_(shaders), emptyVertexArray_(VertexArray::create()), statistics_(Buffer::create()) {}
+
+const Program& Raycaster::programFor(const RaycastParameters& parameters) {
+    const int capacity = arrayCapacity(parameters.timeStepCount);
+    const auto key = std::make_tuple(compositorDefine(parameters.compositor), parameters.collectStatistics, capacity);
+    auto found = programs_.find(key);
+    if (found != programs_.end()) return found->second;
+    const ShaderDefines defines = {
+        {"TEMPORAL_COMPOSITOR", std::to_string(compositorDefine(parameters.compositor))},
+        {"COLLECT_STATISTICS", parameters.collectStatistics ? "1" : "0"},
+        {"MAX_TIME_STEPS", std::to_string(capacity)},
+    };
+    auto program = Program::build(shaders_, {{GL_VERTEX_SHADER, "fullscreen.vert"},
+                                             {GL_FRAGMENT_SHADER, "raycast.frag"}},
+                                  defines);
+    return programs_.emplace(key, std::move(program)).first->second;
+}
+
+void Raycaster::draw(const RaycastParameters& parameters) {
+    const Program& program = programFor(parameters);
+    program.set("inverseViewProjection", parameters.inverseViewProjection);
+    program.set("viewportSize", glm::vec2(parameters.viewport));
+    program.set("timeStepCount", parameters.timeStepCount);
+    program.set("inverseAtlasSize", 1.0f / glm::vec3(parameters.atlasSize));
+    program.set("transferTableSize", float(kTransferTableSize));
+    program.set("stepLength", parameters.stepLength);
+    program.set("referenceLength", parameters.referenceLength);
+    program.set("terminationOpacity", parameters.terminationOpacity);
+    program.set("background", parameters.background);
+    program.set("finalMode", finalModeValue(parameters.finalMode));
+    program.set("changeRange", parameters.changeRange);
+    if (parameters.collectStatistics) {
+        const std::array<std::uint32_t, 6> zero = {0, 0, 0, 0, 0, 0};
+        statistics_.setData(std::as_bytes(std::span(zero)));
+        statistics_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kStatisticsBuffer);
+    }
+    glViewport(0, 0, parameters.viewport.x, parameters.viewport.y);
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    program.use();
+    emptyVertexArray_.bind();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+RaycastStatistics Raycaster::lastStatistics() const {
+    std::array<std::uint32_t, 6> counters = {0, 0, 0, 0, 0, 0};
+    glGetNamedBufferSubData(statistics_.id(), 0, sizeof counters, counters.data());
+    auto counter = [&](int index) {
+        return std::uint64_t(counters[2 * index]) | (std::uint64_t(counters[2 * index + 1]) << 32);
+    };
+    return {counter(0), counter(1), counter(2)};
+}
+
+}  // namespace tstyles

@@ -1,0 +1,65 @@
+// Baking transfer functions into lookup tables.
+#include "tstyles/render/transfer_tables.h"
+
+#include "tstyles/render/bindings.h"
+
+namespace tstyles {
+namespace {
+
+glm::vec4 toVec4(const ColorOpacity& value) { return glm::vec4(glm::vec3(value.color), float(value.opacity)); }
+
+Texture createTable() {
+    Texture table = Texture::create(GL_TEXTURE_1D);
+    glTextureStorage1D(table.id(), 1, GL_RGBA32F, kTransferTableSize);
+    table.setFilter(GL_LINEAR, GL_LINEAR);
+    table.setClampToEdge();
+    return table;
+}
+
+void upload(const Texture& table, const std::vector<glm::vec4>& entries) {
+    glTextureSubImage1D(table.id(), 0, 0, kTransferTableSize, GL_RGBA, GL_FLOAT, entries.data());
+}
+
+}  // namespace
+
+std::vector<glm::vec4> bakeTransferTable(const TransferFunction1D& function) {
+    std::vector<glm::vec4> entries(kTransferTableSize);
+    for (int i = 0; i < kTransferTableSize; ++i)
+        entries[i] = toVec4(function.evaluate(double(i) / double(kTransferTableSize - 1)));
+    return entries;
+}
+
+std::vector<glm::vec4> bakeIndexTstf(const IndexTstf& tstf, std::size_t timeStepCount) {
+    std::vector<glm::vec4> entries(timeStepCount);
+    for (std::size_t step = 0; step < timeStepCount; ++step) entries[step] = toVec4(tstf.atStep(int(step)));
+    return entries;
+}
+
+TransferTables::TransferTables()
+    : stfTable_(createTable()), gradientTstfTable_(createTable()), indexTstfBuffer_(Buffer::create()) {}
+
+void TransferTables::update(const Stf& stf, const IndexTstf& indexTstf, const GradientTstf& gradientTstf,
+                            std::size_t timeStepCount) {
+    if (!bakedStf_ || !(*bakedStf_ == stf)) {
+        upload(stfTable_, bakeTransferTable(stf.curve));
+        bakedStf_ = stf;
+    }
+    if (!bakedGradientCurve_ || !(*bakedGradientCurve_ == gradientTstf.curve)) {
+        upload(gradientTstfTable_, bakeTransferTable(gradientTstf.curve));
+        bakedGradientCurve_ = gradientTstf.curve;
+    }
+    if (!bakedIndexTstf_ || !(*bakedIndexTstf_ == indexTstf) || bakedTimeStepCount_ != timeStepCount) {
+        const auto entries = bakeIndexTstf(indexTstf, timeStepCount);
+        indexTstfBuffer_.setData(std::as_bytes(std::span(entries)));
+        bakedIndexTstf_ = indexTstf;
+        bakedTimeStepCount_ = timeStepCount;
+    }
+}
+
+void TransferTables::bind() const {
+    stfTable_.bindToUnit(binding::kStfUnit);
+    gradientTstfTable_.bindToUnit(binding::kGradientTstfUnit);
+    indexTstfBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kIndexTstfBuffer);
+}
+
+}  // namespace tstyles

@@ -1,0 +1,65 @@
+// The names that scene files, the CLI and the viewer use for temporal compositors and final modes.
+#include "tstyles/scene/scene.h"
+
+#include <array>
+#include <utility>
+
+namespace tstyles {
+namespace {
+
+// One table per enum, so that the name of a value and the value of a name cannot drift apart.
+constexpr std::array compositorNames{
+    std::pair{TemporalCompositor::MaxIntensityProjection, "temporal-mip"},
+    std::pair{TemporalCompositor::Average, "temporal-average"},
+    std::pair{TemporalCompositor::MaxDensityChange, "temporal-max-change"},
+};
+
+constexpr std::array finalModeNameTable{
+    std::pair{FinalMode::Stf, "stf"},
+    std::pair{FinalMode::Tstf, "tstf"},
+    std::pair{FinalMode::Modulate, "modulate"},
+};
+
+template <typename Enum, std::size_t N>
+std::string nameOf(const std::array<std::pair<Enum, const char*>, N>& table, Enum value) {
+    for (const auto& [entry, name] : table) {
+        if (entry == value) return name;
+    }
+    return "unknown";
+}
+
+template <typename Enum, std::size_t N>
+std::optional<Enum> valueOf(const std::array<std::pair<Enum, const char*>, N>& table,
+                            const std::string& name) {
+    for (const auto& [entry, entryName] : table) {
+        if (name == entryName) return entry;
+    }
+    return std::nullopt;
+}
+
+template <typename Enum, std::size_t N>
+std::vector<std::string> allNames(const std::array<std::pair<Enum, const char*>, N>& table) {
+    std::vector<std::string> names;
+    for (const auto& entry : table) names.emplace_back(entry.second);
+    return names;
+}
+
+}  // namespace
+
+std::string toString(TemporalCompositor tc) { return nameOf(compositorNames, tc); }
+
+std::optional<TemporalCompositor> temporalCompositorFromString(const std::string& name) {
+    return valueOf(compositorNames, name);
+}
+
+std::string toString(FinalMode mode) { return nameOf(finalModeNameTable, mode); }
+
+std::optional<FinalMode> finalModeFromString(const std::string& name) {
+    return valueOf(finalModeNameTable, name);
+}
+
+std::vector<std::string> temporalCompositorNames() { return allNames(compositorNames); }
+
+std::vector<std::string> finalModeNames() { return allNames(finalModeNameTable); }
+
+}  // namespace tstyles

@@ -1,0 +1,262 @@
+// Scene files in: JSON text to a validated Scene (format: docs/scene-format.md). Every key that is
+// absent keeps the default of a default-constructed Scene, so the defaults live in one place.
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "json_fields.h"
+#include "tstyles/core/errors.h"
+#include "tstyles/scene/scene_file.h"
+
+namespace tstyles {
+namespace {
+
+using nlohmann::json;
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+constexpr Interval unitInterval{0.0, 1.0};
+constexpr Interval nonNegative{0.0, infinity};
+constexpr Interval positive{0.0, infinity, false};
+
+// nlohmann's message without its exception-id prefix ("[json.exception.parse_error.101] ").
+std::string withoutExceptionId(const json::exception& error) {
+    std::string detail = error.what();
+    if (const auto prefixEnd = detail.find("] "); prefixEnd != std::string::npos)
+        detail.erase(0, prefixEnd + 2);
+    return detail;
+}
+
+json parseJson(const std::string& text, const std::filesystem::path& origin) {
+    try {
+        // Comments are allowed so that hand-written scenes can explain themselves.
+        return json::parse(text, nullptr, true, true);
+    } catch (const json::parse_error& error) {
+        // The message carries the line and column.
+        throwInputError(origin, "", "not valid JSON: " + withoutExceptionId(error));
+    } catch (const json::out_of_range& error) {
+        // Literals such as 1e999: JSON has no infinity, and the parser refuses to make one.
+        throwInputError(
+            origin, "",
+            "not usable JSON: a number is too large for a double (" + withoutExceptionId(error) + ")");
+    }
+}
+
+// Positions along a curve's axis: density or normalized change in [0, 1], or time-step units.
+void readOpacityNodes(const JsonFieldReader& fields, const json& value, const std::string& path,
+                      const Interval& positions, std::vector<OpacityNode>& nodes) {
+    fields.expectArray(value, path);
+    nodes.clear();
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        const std::string nodePath = elementPath(path, i);
+        fields.expectObject(value[i], nodePath, {"at", "opacity"});
+        OpacityNode node;
+        node.at = fields.numberIn(fields.requiredMember(value[i], nodePath, "at"), childPath(nodePath, "at"),
+                                  positions);
+        node.opacity = fields.numberIn(fields.requiredMember(value[i], nodePath, "opacity"),
+                                       childPath(nodePath, "opacity"), unitInterval);
+        nodes.push_back(node);
+    }
+}
+
+void readColorNodes(const JsonFieldReader& fields, const json& value, const std::string& path,
+                    const Interval& positions, std::vector<ColorNode>& nodes) {
+    fields.expectArray(value, path);
+    nodes.clear();
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        const std::string nodePath = elementPath(path, i);
+        fields.expectObject(value[i], nodePath, {"at", "color"});
+        ColorNode node;
+        node.at = fields.numberIn(fields.requiredMember(value[i], nodePath, "at"), childPath(nodePath, "at"),
+                                  positions);
+        node.color = fields.vec3(fields.requiredMember(value[i], nodePath, "color"),
+                                 childPath(nodePath, "color"), unitInterval);
+        nodes.push_back(node);
+    }
+}
+
+// The "opacity" and "color" lists of an object whose keys the caller has already checked.
+void readCurve(const JsonFieldReader& fields, const json& object, const std::string& path,
+               const Interval& positions, TransferFunction1D& curve) {
+    if (const json* opacity = JsonFieldReader::member(object, "opacity")) {
+        readOpacityNodes(fields, *opacity, childPath(path, "opacity"), positions, curve.opacity);
+    }
+    if (const json* color = JsonFieldReader::member(object, "color")) {
+        readColorNodes(fields, *color, childPath(path, "color"), positions, curve.color);
+    }
+    curve.sortNodes();
+}
+
+void readGradientRange(const JsonFieldReader& fields, const json& value, const std::string& path,
+                       GradientTstf& tstf) {
+    const std::vector<double> range = fields.numbers(value, path, 2, nonNegative);
+    if (!(range[0] < range[1])) {
+        fields.fail(path, "must be [low, high] with 0 <= low < high, got [" + formatNumber(range[0]) + ", " +
+                              formatNumber(range[1]) + "]");
+    }
+    tstf.rangeLow = range[0];
+    tstf.rangeHigh = range[1];
+}
+
+void readTstf(const JsonFieldReader& fields, const json& value, Scene& scene) {
+    const std::string path = "tstf";
+    fields.expectObject(value, path, {"index", "gradient"});
+    if (const json* index = JsonFieldReader::member(value, "index")) {
+        const std::string indexPath = childPath(path, "index");
+        fields.expectObject(*index, indexPath, {"opacity", "color"});
+        readCurve(fields, *index, indexPath, nonNegative, scene.indexTstf.curve);
+    }
+    if (const json* gradient = JsonFieldReader::member(value, "gradient")) {
+        const std::string gradientPath = childPath(path, "gradient");
+        fields.expectObject(*gradient, gradientPath, {"range", "opacity", "color"});
+        if (const json* range = JsonFieldReader::member(*gradient, "range")) {
+            readGradientRange(fields, *range, childPath(gradientPath, "range"), scene.gradientTstf);
+        }
+        readCurve(fields, *gradient, gradientPath, unitInterval, scene.gradientTstf.curve);
+    }
+}
+
+void readImage(const JsonFieldReader& fields, const json& value, Scene& scene) {
+    const std::string path = "image";
+    fields.expectObject(value, path, {"width", "height", "background"});
+    constexpr int largestSide = 16384;
+    if (const json* width = JsonFieldReader::member(value, "width")) {
+        scene.width = fields.integerIn(*width, childPath(path, "width"), 1, largestSide);
+    }
+    if (const json* height = JsonFieldReader::member(value, "height")) {
+        scene.height = fields.integerIn(*height, childPath(path, "height"), 1, largestSide);
+    }
+    if (const json* background = JsonFieldReader::member(value, "background")) {
+        const std::vector<double> rgba =
+            fields.numbers(*background, childPath(path, "background"), 4, unitInterval);
+        scene.background = {rgba[0], rgba[1], rgba[2], rgba[3]};
+    }
+}
+
+void readRaycast(const JsonFieldReader& fields, const json& value, Scene& scene) {
+    const std::string path = "raycast";
+    fields.expectObject(value, path, {"step", "termination"});
+    if (const json* step = JsonFieldReader::member(value, "step")) {
+        scene.raycast.step = fields.numberIn(*step, childPath(path, "step"), positive);
+    }
+    if (const json* termination = JsonFieldReader::member(value, "termination")) {
+        scene.raycast.termination =
+            fields.numberIn(*termination, childPath(path, "termination"), {0.0, 1.0, false, true});
+    }
+}
+
+void readStf(const JsonFieldReader& fields, const json& value, Scene& scene) {
+    fields.expectObject(value, "stf", {"opacity", "color"});
+    readCurve(fields, value, "stf", unitInterval, scene.stf.curve);
+}
+
+OrbitCamera readOrbit(const JsonFieldReader& fields, const json& value, const std::string& path) {
+    fields.expectObject(value, path, {"target", "distance", "azimuth_deg", "elevation_deg"});
+    OrbitCamera orbit;
+    if (const json* target = JsonFieldReader::member(value, "target")) {
+        orbit.target = fields.vec3(*target, childPath(path, "target"), anyFinite);
+    }
+    if (const json* distance = JsonFieldReader::member(value, "distance")) {
+        orbit.distance = fields.numberIn(*distance, childPath(path, "distance"), positive);
+    }
+    if (const json* azimuth = JsonFieldReader::member(value, "azimuth_deg")) {
+        orbit.azimuthDeg = fields.finiteNumber(*azimuth, childPath(path, "azimuth_deg"));
+    }
+    if (const json* elevation = JsonFieldReader::member(value, "elevation_deg")) {
+        orbit.elevationDeg = fields.numberIn(*elevation, childPath(path, "elevation_deg"), {-90.0, 90.0});
+    }
+    return orbit;
+}
+
+// Eye and target are required: the LookAtCamera defaults only make sense for data near the origin.
+LookAtCamera readLookAt(const JsonFieldReader& fields, const json& value, const std::string& path) {
+    fields.expectObject(value, path, {"eye", "target", "up"});
+    LookAtCamera lookAt;
+    lookAt.eye = fields.vec3(fields.requiredMember(value, path, "eye"), childPath(path, "eye"), anyFinite);
+    lookAt.target =
+        fields.vec3(fields.requiredMember(value, path, "target"), childPath(path, "target"), anyFinite);
+    if (const json* up = JsonFieldReader::member(value, "up")) {
+        lookAt.up = fields.vec3(*up, childPath(path, "up"), anyFinite);
+    }
+
+    const glm::dvec3 viewDirection = lookAt.target - lookAt.eye;
+    if (glm::length(viewDirection) == 0.0) fields.fail(childPath(path, "target"), "must differ from eye");
+    if (glm::length(lookAt.up) == 0.0) fields.fail(childPath(path, "up"), "must not be the zero vector");
+    // Relative test, so that the scale of the coordinates does not matter.
+    const double sine = glm::length(glm::cross(glm::normalize(viewDirection), glm::normalize(lookAt.up)));
+    if (sine < 1e-6) {
+        fields.fail(childPath(path, "up"), "must not be parallel to the view direction (target - eye)");
+    }
+    return lookAt;
+}
+
+void readCamera(const JsonFieldReader& fields, const json& value, Camera& camera) {
+    const std::string path = "camera";
+    fields.expectObject(value, path, {"orbit", "look_at", "fov_deg", "projection"});
+    const json* orbit = JsonFieldReader::member(value, "orbit");
+    const json* lookAt = JsonFieldReader::member(value, "look_at");
+    if (orbit && lookAt) fields.fail(path, "has both orbit and look_at; give exactly one");
+    if (orbit) camera.pose = readOrbit(fields, *orbit, childPath(path, "orbit"));
+    if (lookAt) camera.pose = readLookAt(fields, *lookAt, childPath(path, "look_at"));
+    if (const json* fov = JsonFieldReader::member(value, "fov_deg")) {
+        camera.fovDeg = fields.numberIn(*fov, childPath(path, "fov_deg"), {0.0, 180.0, false, false});
+    }
+    if (const json* projection = JsonFieldReader::member(value, "projection")) {
+        camera.projection = fields.name<Projection>(*projection, childPath(path, "projection"),
+                                                    projectionFromString, projectionNames());
+    }
+}
+
+// The dataset need not exist yet: the dataset loader reports a missing one, naming the manifest.
+std::filesystem::path readDataset(const JsonFieldReader& fields, const json& root,
+                                  const std::filesystem::path& origin) {
+    const json* dataset = JsonFieldReader::member(root, "dataset");
+    if (!dataset) fields.fail("dataset", "missing; a scene must name its dataset (a series manifest)");
+    const std::filesystem::path datasetPath = fields.string(*dataset, "dataset");
+    if (datasetPath.empty()) fields.fail("dataset", "must not be empty");
+    // Relative to the scene file's folder; text read from no file is relative to the current directory.
+    const std::filesystem::path sceneFolder =
+        origin.empty() ? std::filesystem::current_path() : std::filesystem::absolute(origin).parent_path();
+    return (sceneFolder / datasetPath).lexically_normal();
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& text, const std::filesystem::path& origin) {
+    const JsonFieldReader fields(origin);
+    const json root = parseJson(text, origin);
+    fields.expectObject(root, "",
+                        {"dataset", "image", "camera", "raycast", "stf", "compositor", "tstf", "final"});
+
+    Scene scene;
+    scene.dataset = readDataset(fields, root, origin);
+    if (const json* image = JsonFieldReader::member(root, "image")) readImage(fields, *image, scene);
+    if (const json* camera = JsonFieldReader::member(root, "camera"))
+        readCamera(fields, *camera, scene.camera);
+    if (const json* raycast = JsonFieldReader::member(root, "raycast")) readRaycast(fields, *raycast, scene);
+    if (const json* stf = JsonFieldReader::member(root, "stf")) readStf(fields, *stf, scene);
+    if (const json* compositor = JsonFieldReader::member(root, "compositor")) {
+        scene.compositor = fields.name<TemporalCompositor>(
+            *compositor, "compositor", temporalCompositorFromString, temporalCompositorNames());
+    }
+    if (const json* tstf = JsonFieldReader::member(root, "tstf")) readTstf(fields, *tstf, scene);
+    if (const json* finalMode = JsonFieldReader::member(root, "final")) {
+        scene.finalMode = fields.name<FinalMode>(*finalMode, "final", finalModeFromString, finalModeNames());
+    }
+    return scene;
+}
+
+Scene loadScene(const std::filesystem::path& sceneFile) {
+    // A folder opens as a stream on some systems and then reads as empty: say what it is instead.
+    if (std::filesystem::is_directory(sceneFile))
+        throwInputError(sceneFile, "", "is a folder, not a scene file");
+    std::ifstream in(sceneFile, std::ios::binary);
+    if (!in)
+        throwInputError(sceneFile, "", std::string("cannot open the scene file: ") + std::strerror(errno));
+    std::stringstream text;
+    text << in.rdbuf();
+    if (in.bad()) throwInputError(sceneFile, "", "cannot read the scene file");
+    return parseScene(text.str(), sceneFile);
+}
+
+}  // namespace tstyles

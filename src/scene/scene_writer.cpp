@@ -1,0 +1,158 @@
+// Scene files out: every key written explicitly, in the documented order, so that a saved scene
+// is also a complete record of what was rendered (format: docs/scene-format.md).
+#include <algorithm>
+
+#include <nlohmann/json.hpp>
+
+#include "tstyles/core/atomic_file.h"
+#include "tstyles/scene/scene_file.h"
+
+namespace tstyles {
+namespace {
+
+using nlohmann::ordered_json;
+
+// Scalars, and arrays or objects of nothing deeper than arrays of scalars: short enough for one line.
+bool fitsOnOneLine(const ordered_json& value) {
+    const auto isScalar = [](const ordered_json& v) { return v.is_primitive(); };
+    const auto isScalarArray = [&](const ordered_json& v) {
+        return v.is_array() && std::all_of(v.begin(), v.end(), isScalar);
+    };
+    if (isScalar(value) || isScalarArray(value)) return true;
+    return value.is_object() && std::all_of(value.begin(), value.end(), [&](const ordered_json& v) {
+               return isScalar(v) || isScalarArray(v);
+           });
+}
+
+std::string oneLine(const ordered_json& value) {
+    if (value.is_primitive()) return value.dump();  // doubles come out in their shortest exact form
+    std::string text = value.is_array() ? "[" : "{";
+    bool first = true;
+    for (auto member = value.begin(); member != value.end(); ++member) {
+        text += first ? "" : ", ";
+        if (value.is_object()) text += ordered_json(member.key()).dump() + ": ";
+        text += oneLine(*member);
+        first = false;
+    }
+    return text + (value.is_array() ? "]" : "}");
+}
+
+// Two-space indentation, but a node, a vector or a small object stays on one line: a saved scene
+// is meant to be read and edited by hand, and "color": [1.0, 0.5, 0.0] spread over five lines is not.
+std::string layOut(const ordered_json& value, int depth) {
+    if (fitsOnOneLine(value) || value.empty()) return oneLine(value);
+    const std::string inner(2 * std::size_t(depth + 1), ' ');
+    std::string text = value.is_array() ? "[\n" : "{\n";
+    bool first = true;
+    for (auto member = value.begin(); member != value.end(); ++member) {
+        text += (first ? "" : ",\n") + inner;
+        if (value.is_object()) text += ordered_json(member.key()).dump() + ": ";
+        text += layOut(*member, depth + 1);
+        first = false;
+    }
+    return text + "\n" + std::string(2 * std::size_t(depth), ' ') + (value.is_array() ? "]" : "}");
+}
+
+ordered_json vectorJson(const glm::dvec3& v) { return ordered_json::array({v.x, v.y, v.z}); }
+
+ordered_json curveJson(const TransferFunction1D& curve) {
+    ordered_json opacity = ordered_json::array();
+    for (const OpacityNode& node : curve.opacity) {
+        ordered_json entry;
+        entry["at"] = node.at;
+        entry["opacity"] = node.opacity;
+        opacity.push_back(entry);
+    }
+    ordered_json color = ordered_json::array();
+    for (const ColorNode& node : curve.color) {
+        ordered_json entry;
+        entry["at"] = node.at;
+        entry["color"] = vectorJson(node.color);
+        color.push_back(entry);
+    }
+    ordered_json result;
+    result["opacity"] = opacity;
+    result["color"] = color;
+    return result;
+}
+
+ordered_json orbitJson(const OrbitCamera& orbit) {
+    ordered_json result;
+    // An absent target or distance means "fit the series": omitting them keeps it automatic.
+    if (orbit.target) result["target"] = vectorJson(*orbit.target);
+    if (orbit.distance) result["distance"] = *orbit.distance;
+    result["azimuth_deg"] = orbit.azimuthDeg;
+    result["elevation_deg"] = orbit.elevationDeg;
+    return result;
+}
+
+ordered_json lookAtJson(const LookAtCamera& lookAt) {
+    ordered_json result;
+    result["eye"] = vectorJson(lookAt.eye);
+    result["target"] = vectorJson(lookAt.target);
+    result["up"] = vectorJson(lookAt.up);
+    return result;
+}
+
+ordered_json cameraJson(const Camera& camera) {
+    ordered_json result;
+    if (const auto* orbit = std::get_if<OrbitCamera>(&camera.pose)) {
+        result["orbit"] = orbitJson(*orbit);
+    } else {
+        result["look_at"] = lookAtJson(std::get<LookAtCamera>(camera.pose));
+    }
+    result["fov_deg"] = camera.fovDeg;
+    result["projection"] = toString(camera.projection);
+    return result;
+}
+
+// Relative to the scene's folder when the two share a root, so that a folder of scenes and data can
+// be moved as a whole; otherwise absolute. Forward slashes on every platform.
+std::string datasetJson(const std::filesystem::path& dataset, const std::filesystem::path& sceneFolder) {
+    const std::filesystem::path absoluteDataset = std::filesystem::absolute(dataset).lexically_normal();
+    const std::filesystem::path absoluteFolder =
+        (sceneFolder.empty() ? std::filesystem::current_path() : std::filesystem::absolute(sceneFolder))
+            .lexically_normal();
+    const std::filesystem::path relative = absoluteDataset.lexically_relative(absoluteFolder);
+    return (relative.empty() ? absoluteDataset : relative).generic_string();
+}
+
+}  // namespace
+
+std::string sceneToJson(const Scene& scene, const std::filesystem::path& sceneFolder) {
+    ordered_json root;
+    root["dataset"] = datasetJson(scene.dataset, sceneFolder);
+
+    ordered_json& image = root["image"];
+    image["width"] = scene.width;
+    image["height"] = scene.height;
+    const glm::dvec4& background = scene.background;
+    image["background"] = ordered_json::array({background.r, background.g, background.b, background.a});
+
+    root["camera"] = cameraJson(scene.camera);
+
+    ordered_json& raycast = root["raycast"];
+    if (scene.raycast.step) raycast["step"] = *scene.raycast.step;  // absent: half the finest spacing
+    raycast["termination"] = scene.raycast.termination;
+
+    root["stf"] = curveJson(scene.stf.curve);
+    root["compositor"] = toString(scene.compositor);
+
+    ordered_json& tstf = root["tstf"];
+    tstf["index"] = curveJson(scene.indexTstf.curve);
+    ordered_json gradient;
+    gradient["range"] = ordered_json::array({scene.gradientTstf.rangeLow, scene.gradientTstf.rangeHigh});
+    gradient.update(curveJson(scene.gradientTstf.curve));
+    tstf["gradient"] = gradient;
+
+    root["final"] = toString(scene.finalMode);
+    return layOut(root, 0) + "\n";
+}
+
+void saveScene(const Scene& scene, const std::filesystem::path& sceneFile) {
+    const std::filesystem::path folder =
+        sceneFile.has_parent_path() ? sceneFile.parent_path() : std::filesystem::current_path();
+    writeFileAtomically(sceneFile, sceneToJson(scene, folder));
+}
+
+}  // namespace tstyles

@@ -1,0 +1,51 @@
+// Shared set-up for render tests: one headless context per test process (backend from
+// TSTYLES_TEST_BACKEND: egl, osmesa or auto), synthetic series built in memory, and cameras that
+// look straight down an axis so that closed-form expectations are easy to state.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "tstyles/data/series.h"
+#include "tstyles/image/image.h"
+#include "tstyles/render/renderer.h"
+#include "tstyles/scene/scene.h"
+
+namespace tstyles::testing {
+
+// The renderer of this test process (the context is made on first use).
+Renderer& testRenderer();
+std::string testBackendDescription();
+
+struct BoxSpec {
+    glm::ivec3 dims{8, 8, 8};
+    glm::dvec3 spacing{0.1};
+    glm::dvec3 origin{0.0};
+    glm::dquat rotation{1.0, 0.0, 0.0, 0.0};
+    std::function<float(glm::ivec3)> density = [](glm::ivec3) { return 1.0f; };
+    std::optional<std::function<bool(glm::ivec3)>> mask;
+};
+
+BoxSpec constantBox(glm::dvec3 origin, float density);
+
+// A series with one time-step per box, value range [0, 1], times 0, 1, 2, ...
+Series makeSeries(const std::vector<BoxSpec>& boxes);
+
+// A scene with an orthographic camera looking down -z at (centre.x, centre.y), showing `viewHeight`
+// world units vertically, a transparent background, and STF / TSTFs left to the test.
+Scene orthographicSceneLookingDownZ(glm::dvec2 centre, double viewHeight, int size);
+
+// Renders `series` with `scene` (uploads the series each call).
+Image renderSeries(const Series& series, const Scene& scene);
+
+// Pixel (column, row from the top) where world point (x, y) lands in a scene made by
+// orthographicSceneLookingDownZ.
+glm::ivec2 pixelOf(glm::dvec2 world, glm::dvec2 centre, double viewHeight, int size);
+
+// A transfer function with one constant colour and opacity.
+TransferFunction1D constantFunction(glm::dvec3 color, double opacity);
+
+}  // namespace tstyles::testing
