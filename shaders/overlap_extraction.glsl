@@ -4,6 +4,7 @@
 layout(binding = ENTRY_UNIT) uniform sampler2DArray entryDepths;
 layout(binding = EXIT_UNIT) uniform sampler2DArray exitDepths;
 uniform int timeStepCount;
+uniform int soloTimeStep;  // >= 0: only this time-step takes part (plain playback)
 
 #ifndef MAX_TIME_STEPS
 #define MAX_TIME_STEPS 16
@@ -19,6 +20,7 @@ vec2 extractVolumeOverlap(ivec2 pixel) {
     activeCount = 0;
     vec2 rayDepth = vec2(NO_ENTRY, NO_EXIT);
     for (int step = 0; step < timeStepCount; ++step) {
+        if (soloTimeStep >= 0 && step != soloTimeStep) continue;
         int layer = timeSteps.steps[step].layer.x;
         float exitDepth = texelFetch(exitDepths, ivec3(pixel, layer), 0).r;
         if (exitDepth <= 0.0) continue;  // missed, or the whole box lies behind the near plane

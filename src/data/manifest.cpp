@@ -233,8 +233,9 @@ Series loadSeries(const std::filesystem::path& manifestPath) {
     const auto explicitRange = readValueRange(root.optionalMember("value_range"));
     std::vector<StepEntry> entries = readStepEntries(root.member("time_steps"));
 
-    for (std::size_t index = 0; index < entries.size(); ++index)
+    for (std::size_t index = 0; index < entries.size(); ++index) {
         readStepFiles(manifest, index, entries[index]);
+    }
     series.valueRange = explicitRange ? *explicitRange : valueRangeFromData(manifest, entries);
 
     series.steps.reserve(entries.size());

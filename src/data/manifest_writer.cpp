@@ -75,18 +75,17 @@ OrderedJson stepJson(const RawTimeStep& step, const std::string& stem) {
 // component of every vector its own line, which buries the structure a reader looks for.
 void appendReadable(std::string& out, const OrderedJson& value, std::size_t indent) {
     const auto isStructured = [](const OrderedJson& element) { return element.is_structured(); };
-    const bool nested = std::any_of(value.begin(), value.end(), isStructured);
-    if (!value.is_structured() || value.empty() || (value.is_array() && !nested)) {
-        if (!value.is_array()) {
-            out += value.dump();
-            return;
-        }
+    if (value.is_array() && std::none_of(value.begin(), value.end(), isStructured)) {
         out += "[";
         for (std::size_t index = 0; index < value.size(); ++index) {
             if (index > 0) out += ", ";
             out += value[index].dump();
         }
         out += "]";
+        return;
+    }
+    if (!value.is_structured() || value.empty()) {
+        out += value.dump();
         return;
     }
     const std::string inner(indent + 2, ' ');

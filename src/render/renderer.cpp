@@ -44,6 +44,7 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     parameters.finalMode = scene.finalMode;
     parameters.changeRange = glm::vec2(float(scene.gradientTstf.rangeLow), float(scene.gradientTstf.rangeHigh));
     parameters.collectStatistics = options.collectStatistics;
+    parameters.soloTimeStep = options.soloTimeStep.value_or(-1);
     raycaster_.draw(parameters);
 }
 

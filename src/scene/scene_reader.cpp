@@ -42,6 +42,12 @@ json parseJson(const std::string& text, const std::filesystem::path& origin) {
     }
 }
 
+// Editor groups are numbered from 1; a node without "group" belongs to none.
+NodeGroup readGroup(const JsonFieldReader& fields, const json& node, const std::string& nodePath) {
+    const json* group = JsonFieldReader::member(node, "group");
+    return group ? fields.integerIn(*group, childPath(nodePath, "group"), 1, 1000000) : 0;
+}
+
 // Positions along a curve's axis: density or normalized change in [0, 1], or time-step units.
 void readOpacityNodes(const JsonFieldReader& fields, const json& value, const std::string& path,
                       const Interval& positions, std::vector<OpacityNode>& nodes) {
@@ -49,12 +55,13 @@ void readOpacityNodes(const JsonFieldReader& fields, const json& value, const st
     nodes.clear();
     for (std::size_t i = 0; i < value.size(); ++i) {
         const std::string nodePath = elementPath(path, i);
-        fields.expectObject(value[i], nodePath, {"at", "opacity"});
+        fields.expectObject(value[i], nodePath, {"at", "opacity", "group"});
         OpacityNode node;
         node.at = fields.numberIn(fields.requiredMember(value[i], nodePath, "at"), childPath(nodePath, "at"),
                                   positions);
         node.opacity = fields.numberIn(fields.requiredMember(value[i], nodePath, "opacity"),
                                        childPath(nodePath, "opacity"), unitInterval);
+        node.group = readGroup(fields, value[i], nodePath);
         nodes.push_back(node);
     }
 }
@@ -65,12 +72,20 @@ void readColorNodes(const JsonFieldReader& fields, const json& value, const std:
     nodes.clear();
     for (std::size_t i = 0; i < value.size(); ++i) {
         const std::string nodePath = elementPath(path, i);
-        fields.expectObject(value[i], nodePath, {"at", "color"});
+        fields.expectObject(value[i], nodePath, {"at", "color", "style", "group"});
         ColorNode node;
         node.at = fields.numberIn(fields.requiredMember(value[i], nodePath, "at"), childPath(nodePath, "at"),
                                   positions);
-        node.color = fields.vec3(fields.requiredMember(value[i], nodePath, "color"),
-                                 childPath(nodePath, "color"), unitInterval);
+        if (const json* style = JsonFieldReader::member(value[i], "style")) {
+            node.style = fields.string(*style, childPath(nodePath, "style"));
+            if (node.style.empty()) fields.fail(childPath(nodePath, "style"), "must name a style, got \"\"");
+        }
+        // A style node's colour tints the style and may be left out; a flat node needs one.
+        if (const json* color = JsonFieldReader::member(value[i], "color"))
+            node.color = fields.vec3(*color, childPath(nodePath, "color"), unitInterval);
+        else if (node.style.empty())
+            fields.requiredMember(value[i], nodePath, "color");
+        node.group = readGroup(fields, value[i], nodePath);
         nodes.push_back(node);
     }
 }

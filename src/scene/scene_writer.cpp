@@ -61,13 +61,16 @@ ordered_json curveJson(const TransferFunction1D& curve) {
         ordered_json entry;
         entry["at"] = node.at;
         entry["opacity"] = node.opacity;
+        if (node.group != 0) entry["group"] = node.group;
         opacity.push_back(entry);
     }
     ordered_json color = ordered_json::array();
     for (const ColorNode& node : curve.color) {
         ordered_json entry;
         entry["at"] = node.at;
+        if (!node.style.empty()) entry["style"] = node.style;
         entry["color"] = vectorJson(node.color);
+        if (node.group != 0) entry["group"] = node.group;
         color.push_back(entry);
     }
     ordered_json result;

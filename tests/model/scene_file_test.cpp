@@ -319,3 +319,45 @@ TEST(SceneEnums, NamesReadBack) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(SceneFileNodes, GroupsAndStylesRoundTrip) {
+    const std::string text = R"({
+      "dataset": "d/series.json",
+      "tstf": {"index": {
+        "opacity": [{"at": 3, "opacity": 1.0, "group": 2}, {"at": 4, "opacity": 0.1}],
+        "color": [{"at": 3, "style": "glossy-light-yellow", "group": 2}, {"at": 0, "color": [0, 0, 1]}]}}
+    })";
+    const auto folder = std::filesystem::temp_directory_path() / "tstyles_scene_groups";
+    std::filesystem::create_directories(folder);
+    const tstyles::Scene scene = tstyles::parseScene(text, folder / "s.json");
+    const auto& curve = scene.indexTstf.curve;
+    ASSERT_EQ(curve.opacity.size(), 2u);
+    EXPECT_EQ(curve.opacity[0].group, 2);
+    EXPECT_EQ(curve.opacity[1].group, 0);
+    ASSERT_EQ(curve.color.size(), 2u);
+    EXPECT_EQ(curve.color[1].style, "glossy-light-yellow");  // sorted: at 0 first
+    EXPECT_EQ(curve.color[1].color, glm::dvec3(1.0));         // a style's tint defaults to white
+    EXPECT_EQ(curve.color[1].group, 2);
+    tstyles::saveScene(scene, folder / "s.json");
+    EXPECT_EQ(tstyles::loadScene(folder / "s.json"), scene);
+}
+
+TEST(SceneFileNodes, BadGroupsAndStylesAreErrors) {
+    auto expectError = [](const std::string& node, const std::string& fragment) {
+        const std::string text = R"({"dataset": "d.json", "stf": {"color": [)" + node + "]}}";
+        try {
+            tstyles::parseScene(text, "bad.json");
+            FAIL() << "expected an error for " << node;
+        } catch (const tstyles::InputError& error) {
+            EXPECT_NE(std::string(error.what()).find(fragment), std::string::npos) << error.what();
+        }
+    };
+    expectError(R"({"at": 0, "color": [1, 1, 1], "group": 0})", "stf.color[0].group");
+    expectError(R"({"at": 0, "color": [1, 1, 1], "group": 1.5})", "stf.color[0].group");
+    expectError(R"({"at": 0, "style": ""})", "stf.color[0].style");
+    expectError(R"({"at": 0})", "stf.color[0]");
+}
+
+}  // namespace

@@ -217,3 +217,26 @@ TEST(AnalyticRender, RaysThatMeetNothingShowTheBackground) {
 
 }  // namespace
 }  // namespace tstyles::testing
+
+namespace tstyles::testing {
+namespace {
+
+TEST(AnalyticRender, ASoloTimeStepShowsThatTimeStepAlone) {
+    const Series series = makeSeries({constantBox({0.0, 0.0, 0.0}, 1.0f), constantBox({1.0, 0.0, 0.0}, 1.0f)});
+    const glm::dvec2 centre(0.85, 0.35);
+    Scene scene = orthographicSceneLookingDownZ(centre, kViewHeight, kSize);
+    scene.stf.curve = constantFunction({1.0, 1.0, 1.0}, 1.0);
+    scene.finalMode = FinalMode::Stf;
+    Renderer& renderer = testRenderer();
+    renderer.setSeries(series);
+    FrameOptions options;
+    options.size = {kSize, kSize};
+    options.soloTimeStep = 1;
+    renderer.draw(scene, resolveView(scene.camera, series.worldBounds(), kSize, kSize), options);
+    const Image image = renderer.readFrame();
+    expectPixel(image, pixelOf({0.35, 0.35}, centre, kViewHeight, kSize), {0, 0, 0, 0}, "time-step 0 hidden");
+    expectPixel(image, pixelOf({1.35, 0.35}, centre, kViewHeight, kSize), {1, 1, 1, 1}, "time-step 1 alone");
+}
+
+}  // namespace
+}  // namespace tstyles::testing

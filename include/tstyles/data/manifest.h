@@ -8,7 +8,8 @@
 namespace tstyles {
 
 // Loads the manifest and every value and mask file it names (paths relative to the manifest).
-// Any problem is an InputError naming the file, the field and what is wrong.
+// Any problem is an InputError naming the file, the field and what is wrong. A dataset folder may be
+// given instead of its manifest: it stands for the folder's series.json.
 Series loadSeries(const std::filesystem::path& manifestPath);
 
 // One time-step's values as they should be written to disk.

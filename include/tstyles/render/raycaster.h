@@ -27,6 +27,7 @@ struct RaycastParameters {
     FinalMode finalMode = FinalMode::Modulate;
     glm::vec2 changeRange{0.0f, 1.0f};
     bool collectStatistics = false;
+    int soloTimeStep = -1;  // -1: every time-step takes part
 };
 
 struct RaycastStatistics {

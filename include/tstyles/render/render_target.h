@@ -16,6 +16,7 @@ public:
     void bind() const;
     glm::ivec2 size() const { return size_; }
     const Texture& color() const { return *color_; }
+    GLuint framebufferId() const { return framebuffer_->id(); }
     // Reads the pixels back, rows top to bottom (waits for the GPU).
     Image read() const;
 

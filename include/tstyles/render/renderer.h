@@ -23,6 +23,8 @@ struct FrameOptions {
     bool collectStatistics = false;
     // Multiplies the scene's step length (the viewer uses a coarser step while dragging).
     float stepScale = 1.0f;
+    // Shows this one time-step alone (plain playback, for comparison); none: all time-steps.
+    std::optional<int> soloTimeStep;
 };
 
 class Renderer {

@@ -3,21 +3,30 @@
 // renderer bakes them into lookup tables.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 namespace tstyles {
 
+// Nodes that share a group number (> 0) move together in the editor; 0 is no group.
+using NodeGroup = int;
+
 struct OpacityNode {
     double at = 0.0;
     double opacity = 0.0;
+    NodeGroup group = 0;
     bool operator==(const OpacityNode&) const = default;
 };
 
+// A colour node is a flat colour, or a lit-sphere style (by built-in name or image path) whose
+// lookup is tinted by `color`.
 struct ColorNode {
     double at = 0.0;
     glm::dvec3 color{1.0};
+    std::string style;  // empty: a flat colour
+    NodeGroup group = 0;
     bool operator==(const ColorNode&) const = default;
 };
 
