@@ -21,9 +21,12 @@ struct TemporalSample {
 TemporalSample compositeTemporal(vec3 position, float t) {
     TemporalSample result = TemporalSample(vec4(0.0), 0, 0);
 #if TEMPORAL_COMPOSITOR == TC_MAX_INTENSITY_PROJECTION
-    // The time-step with the highest STF opacity wins (ties: the earlier time-step).
+    // The time-step with the highest STF opacity wins. Inside overlapping opaque bodies the STF
+    // opacities tie; then the time-step that the index TSTF shows most strongly wins (the focus of
+    // Figure 1 stays opaque where its neighbours overlap it), then the earlier time-step.
     int winner = -1;
     vec4 winnerStf = vec4(0.0);
+    vec4 winnerTstf = vec4(0.0);
     bool winnerInMask = false;
 #elif TEMPORAL_COMPOSITOR == TC_AVERAGE
     vec4 premultipliedSum = vec4(0.0);
@@ -46,10 +49,16 @@ TemporalSample compositeTemporal(vec3 position, float t) {
         result.contributing += 1;
         result.fetches += timeSteps.steps[step].dims.w > 0.5 ? 2 : 1;
 #if TEMPORAL_COMPOSITOR == TC_MAX_INTENSITY_PROJECTION
-        if (stf.a > winnerStf.a || (stf.a == winnerStf.a && stf.a > 0.0 && step < winner)) {
-            winner = step;
-            winnerStf = stf;
-            winnerInMask = inMask;
+        if (stf.a >= winnerStf.a && stf.a > 0.0) {
+            vec4 tstf = classifyIndexTstf(step);
+            bool stronger = stf.a > winnerStf.a || tstf.a > winnerTstf.a ||
+                            (tstf.a == winnerTstf.a && step < winner);
+            if (stronger) {
+                winner = step;
+                winnerStf = stf;
+                winnerTstf = tstf;
+                winnerInMask = inMask;
+            }
         }
 #elif TEMPORAL_COMPOSITOR == TC_AVERAGE
         if (stf.a <= 0.0) continue;
@@ -69,7 +78,7 @@ TemporalSample compositeTemporal(vec3 position, float t) {
     }
 
 #if TEMPORAL_COMPOSITOR == TC_MAX_INTENSITY_PROJECTION
-    if (winner >= 0) result.colorOpacity = finalProcessing(winnerStf, classifyIndexTstf(winner), winnerInMask);
+    if (winner >= 0) result.colorOpacity = finalProcessing(winnerStf, winnerTstf, winnerInMask);
 #elif TEMPORAL_COMPOSITOR == TC_AVERAGE
     // Opacities are averaged; colours are averaged weighted by opacity, so a faint time-step does
     // not wash out the colour of an opaque one.

@@ -87,6 +87,8 @@ void Raycaster::draw(const RaycastParameters& parameters) {
 
 RaycastStatistics Raycaster::lastStatistics() const {
     std::array<std::uint32_t, 6> counters = {0, 0, 0, 0, 0, 0};
+    // The counters were written by shader atomics: make them visible to the read-back.
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glGetNamedBufferSubData(statistics_.id(), 0, sizeof counters, counters.data());
     auto counter = [&](int index) {
         return std::uint64_t(counters[2 * index]) | (std::uint64_t(counters[2 * index + 1]) << 32);

@@ -240,3 +240,24 @@ TEST(AnalyticRender, ASoloTimeStepShowsThatTimeStepAlone) {
 
 }  // namespace
 }  // namespace tstyles::testing
+
+namespace tstyles::testing {
+namespace {
+
+TEST(AnalyticRender, TemporalMipBreaksOpacityTiesInFavourOfTheMoreVisibleTimeStep) {
+    // Equal STF opacity everywhere; the index TSTF shows time-step 1 more strongly.
+    const Series series = makeSeries({constantBox({0, 0, 0}, 1.0f), constantBox({0, 0, 0}, 1.0f),
+                                      constantBox({0, 0, 0}, 1.0f)});
+    const glm::dvec2 centre(0.35, 0.35);
+    Scene scene = orthographicSceneLookingDownZ(centre, kViewHeight, kSize);
+    scene.stf.curve = constantFunction({1, 1, 1}, 1.0);
+    scene.indexTstf.curve.opacity = {{0.0, 0.2}, {1.0, 1.0}, {2.0, 0.2}};
+    scene.indexTstf.curve.color = {{0.0, {1, 0, 0}}, {1.0, {0, 1, 0}}, {2.0, {0, 0, 1}}};
+    scene.finalMode = FinalMode::Tstf;
+    scene.compositor = TemporalCompositor::MaxIntensityProjection;
+    const Image image = renderSeries(series, scene);
+    expectPixel(image, pixelOf(centre, centre, kViewHeight, kSize), {0, 1, 0, 1}, "time-step 1 wins the tie");
+}
+
+}  // namespace
+}  // namespace tstyles::testing

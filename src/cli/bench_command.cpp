@@ -1,0 +1,168 @@
+// `tstyles bench`: renders a fixed matrix of scenes (dataset x temporal compositor x image size)
+// headless and reports per-frame medians, ray and sample counts and texture memory.
+#include <algorithm>
+#include <chrono>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+#include "tstyles/core/atomic_file.h"
+#include "tstyles/data/manifest.h"
+#include "tstyles/gl/gl_api.h"
+#include "tstyles/render/renderer.h"
+#include "tstyles/scene/scene_file.h"
+
+namespace tstyles::cli {
+namespace {
+
+struct BenchOptions {
+    std::vector<int> sizes{512};
+    int frames = 7;
+    int warmup = 2;
+    std::optional<std::filesystem::path> json;
+    std::vector<std::string> datasets{"superellipsoid", "superellipsoid-aligned"};
+    GlOptions gl;
+};
+
+struct BenchCase {
+    std::string dataset;
+    std::string scene;  // the bundled scene that supplies camera and transfer functions
+    TemporalCompositor compositor;
+    int size;
+};
+
+struct BenchResult {
+    BenchCase benchCase;
+    std::size_t timeSteps = 0;
+    double medianMs = 0.0;
+    double maxMs = 0.0;
+    RaycastStatistics statistics;
+    std::size_t seriesTextureBytes = 0;
+    std::size_t frameTextureBytes = 0;
+};
+
+// Each compositor is measured with the figure scene made for it.
+std::string sceneFor(TemporalCompositor compositor) {
+    switch (compositor) {
+        case TemporalCompositor::MaxIntensityProjection: return "figure4-temporal-mip";
+        case TemporalCompositor::Average: return "figure4-temporal-average";
+        case TemporalCompositor::MaxDensityChange: return "figure4-max-density-change";
+    }
+    return "figure4-temporal-mip";
+}
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t middle = values.size() / 2;
+    return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
+}
+
+BenchResult runCase(Renderer& renderer, const Series& series, const BenchCase& benchCase,
+                    const BenchOptions& options) {
+    Scene scene = loadScene(bundledDataDirectory() / "scenes" / (benchCase.scene + ".json"));
+    scene.compositor = benchCase.compositor;
+    FrameOptions frame;
+    frame.size = {benchCase.size, benchCase.size};
+    // Every frame turns the camera a little, as a user orbiting would, so no frame repeats.
+    auto viewForFrame = [&](int index) {
+        Camera camera = scene.camera;
+        if (auto* orbit = std::get_if<OrbitCamera>(&camera.pose)) orbit->azimuthDeg += 2.0 * index;
+        return resolveView(camera, series.worldBounds(), benchCase.size, benchCase.size);
+    };
+    for (int i = 0; i < options.warmup; ++i) renderer.draw(scene, viewForFrame(i), frame);
+    glFinish();
+    std::vector<double> milliseconds;
+    for (int i = 0; i < options.frames; ++i) {
+        const View view = viewForFrame(i);
+        const auto start = std::chrono::steady_clock::now();
+        renderer.draw(scene, view, frame);
+        glFinish();
+        milliseconds.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    }
+    BenchResult result{benchCase, series.size(), median(milliseconds),
+                       *std::max_element(milliseconds.begin(), milliseconds.end()), {}, 0, 0};
+    frame.collectStatistics = true;  // counted in an extra, untimed frame: atomics cost time
+    renderer.draw(scene, viewForFrame(0), frame);
+    result.statistics = renderer.lastStatistics();
+    result.seriesTextureBytes = renderer.seriesTextureBytes();
+    result.frameTextureBytes = renderer.frameTextureBytes();
+    return result;
+}
+
+std::string mebibytes(std::size_t bytes) {
+    std::ostringstream text;
+    text << std::fixed << std::setprecision(1) << double(bytes) / (1024.0 * 1024.0);
+    return text.str();
+}
+
+void printTable(const std::vector<BenchResult>& results, const std::string& device) {
+    std::cout << "device: " << device << "\n";
+    std::cout << std::left << std::setw(24) << "dataset" << std::setw(21) << "compositor" << std::right
+              << std::setw(6) << "n" << std::setw(7) << "size" << std::setw(11) << "median ms" << std::setw(9)
+              << "max ms" << std::setw(10) << "rays" << std::setw(13) << "samples" << std::setw(13)
+              << "fetches" << std::setw(11) << "tex MiB" << "\n";
+    for (const auto& r : results) {
+        std::cout << std::left << std::setw(24) << r.benchCase.dataset << std::setw(21)
+                  << toString(r.benchCase.compositor) << std::right << std::setw(6) << r.timeSteps << std::setw(7)
+                  << r.benchCase.size << std::setw(11) << std::fixed << std::setprecision(1) << r.medianMs
+                  << std::setw(9) << r.maxMs << std::setw(10) << r.statistics.rays << std::setw(13)
+                  << r.statistics.samples << std::setw(13) << r.statistics.fetches << std::setw(11)
+                  << mebibytes(r.seriesTextureBytes + r.frameTextureBytes) << "\n";
+    }
+}
+
+nlohmann::json toJson(const std::vector<BenchResult>& results, const std::string& device) {
+    nlohmann::json cases = nlohmann::json::array();
+    for (const auto& r : results)
+        cases.push_back({{"dataset", r.benchCase.dataset}, {"scene", r.benchCase.scene},
+                         {"compositor", toString(r.benchCase.compositor)}, {"time_steps", r.timeSteps},
+                         {"width", r.benchCase.size}, {"height", r.benchCase.size},
+                         {"median_ms", r.medianMs}, {"max_ms", r.maxMs}, {"rays", r.statistics.rays},
+                         {"samples", r.statistics.samples}, {"fetches", r.statistics.fetches},
+                         {"series_texture_bytes", r.seriesTextureBytes},
+                         {"frame_texture_bytes", r.frameTextureBytes}});
+    return {{"device", device}, {"cases", cases}};
+}
+
+int runBench(const BenchOptions& options) {
+    const auto context = createHeadlessContext(parseBackend(options.gl.backend), false);
+    Renderer renderer(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
+    std::vector<BenchResult> results;
+    for (const auto& dataset : options.datasets) {
+        const Series series = loadSeries(bundledDataDirectory() / dataset / "series.json");
+        renderer.setSeries(series);
+        for (auto compositor : {TemporalCompositor::MaxIntensityProjection, TemporalCompositor::Average,
+                                TemporalCompositor::MaxDensityChange})
+            for (int size : options.sizes) {
+                results.push_back(runCase(renderer, series, {dataset, sceneFor(compositor), compositor, size}, options));
+                std::cerr << "." << std::flush;
+            }
+    }
+    std::cerr << "\n";
+    printTable(results, context->description());
+    if (options.json) writeFileAtomically(*options.json, toJson(results, context->description()).dump(2) + "\n");
+    return kExitSuccess;
+}
+
+}  // namespace
+
+Command addBenchCommand(CLI::App& app) {
+    auto options = std::make_shared<BenchOptions>();
+    CLI::App* command = app.add_subcommand(
+        "bench", "Benchmark the bundled scenes: every temporal compositor on each dataset; medians of several frames");
+    command->add_option("--sizes", options->sizes, "Square image sizes to render")->check(CLI::Range(16, 8192));
+    command->add_option("--frames", options->frames, "Timed frames per case (the median is reported)")
+        ->check(CLI::Range(1, 1000));
+    command->add_option("--warmup", options->warmup, "Untimed frames first (shader compilation, caches)")
+        ->check(CLI::Range(0, 100));
+    command->add_option("--datasets", options->datasets, "Bundled datasets (folders under data/)");
+    command->add_option("--json", options->json, "Also write the results as JSON to this file");
+    addGlOptions(*command, options->gl);
+    return {command, [options] { return runBench(*options); }};
+}
+
+}  // namespace tstyles::cli

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages Temporal Styles needs, if any is missing (apt-get; sudo when not root).
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libglm-dev nlohmann-json3-dev libcli11-dev libgtest-dev
+  libegl-dev libegl1-mesa-dev libgl1-mesa-dri libosmesa6-dev
+  libopenimageio-dev openimageio-tools glslang-tools
+  libglfw3-dev libimgui-dev xvfb xauth
+)
+
+missing=()
+for package in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "install_dependencies: installing ${missing[*]}"
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install_dependencies: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+  sudo="sudo"
+fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
