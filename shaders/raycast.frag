@@ -6,8 +6,10 @@
 #include "ray.glsl"
 #include "time_steps.glsl"
 #include "volume_sampling.glsl"
+#include "gradient.glsl"
 #include "transfer_functions.glsl"
 #include "final_processing.glsl"
+#include "styles.glsl"
 #include "overlap_extraction.glsl"
 #include "temporal_compositor.glsl"
 

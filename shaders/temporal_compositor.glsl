@@ -1,12 +1,17 @@
 // Temporal compositors (paper 5.3): at a sample, every time-step whose interval contains it
 // contributes its density, its mask and its STF classification; the compositor turns those n
-// values into a temporal characteristic, reads the TSTF and applies the final processing.
+// values into a temporal characteristic, reads the TSTF and applies the final processing. Styles
+// need a normal, so gradients are computed only for the time-steps that end up visible.
 #define TC_MAX_INTENSITY_PROJECTION 0
 #define TC_AVERAGE 1
 #define TC_MAX_DENSITY_CHANGE 2
 
 #ifndef TEMPORAL_COMPOSITOR
 #define TEMPORAL_COMPOSITOR TC_MAX_INTENSITY_PROJECTION
+#endif
+// 1 when any transfer function of the scene uses a lit-sphere style.
+#ifndef STYLED
+#define STYLED 1
 #endif
 
 // The max density change is scaled from [changeRange.x, changeRange.y] to [0, 1].
@@ -18,6 +23,16 @@ struct TemporalSample {
     int fetches;        // volume texture fetches spent
 };
 
+// Where the time-step's style is read at this sample (6 fetches when styled).
+SphereCoordinate styleCoordinate(int step, vec3 position, inout int fetches) {
+#if STYLED
+    fetches += 6;
+    return sphereCoordinate(worldGradient(step, position));
+#else
+    return SphereCoordinate(vec2(0.5));
+#endif
+}
+
 TemporalSample compositeTemporal(vec3 position, float t) {
     TemporalSample result = TemporalSample(vec4(0.0), 0, 0);
 #if TEMPORAL_COMPOSITOR == TC_MAX_INTENSITY_PROJECTION
@@ -25,6 +40,7 @@ TemporalSample compositeTemporal(vec3 position, float t) {
     // opacities tie; then the time-step that the index TSTF shows most strongly wins (the focus of
     // Figure 1 stays opaque where its neighbours overlap it), then the earlier time-step.
     int winner = -1;
+    float winnerDensity = 0.0;
     vec4 winnerStf = vec4(0.0);
     vec4 winnerTstf = vec4(0.0);
     bool winnerInMask = false;
@@ -34,6 +50,7 @@ TemporalSample compositeTemporal(vec3 position, float t) {
 #else
     float minimumDensity = 1.0;
     float maximumDensity = 0.0;
+    float strongestDensity = 0.0;
     vec4 strongestStf = vec4(0.0);
     int strongestStep = -1;
     bool anyInMask = false;
@@ -55,6 +72,7 @@ TemporalSample compositeTemporal(vec3 position, float t) {
                             (tstf.a == winnerTstf.a && step < winner);
             if (stronger) {
                 winner = step;
+                winnerDensity = density;
                 winnerStf = stf;
                 winnerTstf = tstf;
                 winnerInMask = inMask;
@@ -62,7 +80,10 @@ TemporalSample compositeTemporal(vec3 position, float t) {
         }
 #elif TEMPORAL_COMPOSITOR == TC_AVERAGE
         if (stf.a <= 0.0) continue;
-        vec4 styled = finalProcessing(stf, classifyIndexTstf(step), inMask);
+        vec4 tstf = classifyIndexTstf(step);
+        SphereCoordinate sphere = styleCoordinate(step, position, result.fetches);
+        vec4 styled = finalProcessing(applyStyle(STF_TRACK, density, stf, sphere),
+                                      applyStyle(INDEX_TSTF_TRACK, float(step), tstf, sphere), inMask);
         if (styled.a <= 0.0) continue;
         premultipliedSum += vec4(styled.rgb * styled.a, styled.a);
         nonTransparent += 1;
@@ -73,12 +94,18 @@ TemporalSample compositeTemporal(vec3 position, float t) {
         if (stf.a > strongestStf.a || strongestStep < 0) {
             strongestStf = stf;
             strongestStep = step;
+            strongestDensity = density;
         }
 #endif
     }
 
 #if TEMPORAL_COMPOSITOR == TC_MAX_INTENSITY_PROJECTION
-    if (winner >= 0) result.colorOpacity = finalProcessing(winnerStf, winnerTstf, winnerInMask);
+    if (winner >= 0) {
+        SphereCoordinate sphere = styleCoordinate(winner, position, result.fetches);
+        result.colorOpacity = finalProcessing(applyStyle(STF_TRACK, winnerDensity, winnerStf, sphere),
+                                              applyStyle(INDEX_TSTF_TRACK, float(winner), winnerTstf, sphere),
+                                              winnerInMask);
+    }
 #elif TEMPORAL_COMPOSITOR == TC_AVERAGE
     // Opacities are averaged; colours are averaged weighted by opacity, so a faint time-step does
     // not wash out the colour of an opaque one.
@@ -86,13 +113,17 @@ TemporalSample compositeTemporal(vec3 position, float t) {
         result.colorOpacity = vec4(premultipliedSum.rgb / premultipliedSum.a,
                                    premultipliedSum.a / float(nonTransparent));
 #else
-    if (result.contributing >= 2 && strongestStf.a > 0.0) {
-        float change = (maximumDensity - minimumDensity - changeRange.x) / (changeRange.y - changeRange.x);
-        vec4 tstf = classifyGradientTstf(change);
-        result.colorOpacity = finalProcessing(strongestStf, tstf, anyInMask);
-    } else if (result.contributing == 1) {
-        // Change is undefined where only one time-step is present: the time-invariant STF shows.
-        result.colorOpacity = strongestStf;
+    if (strongestStf.a > 0.0 && result.contributing >= 1) {
+        SphereCoordinate sphere = styleCoordinate(strongestStep, position, result.fetches);
+        vec4 stf = applyStyle(STF_TRACK, strongestDensity, strongestStf, sphere);
+        if (result.contributing >= 2) {
+            float change = (maximumDensity - minimumDensity - changeRange.x) / (changeRange.y - changeRange.x);
+            vec4 tstf = applyStyle(GRADIENT_TSTF_TRACK, clamp(change, 0.0, 1.0), classifyGradientTstf(change), sphere);
+            result.colorOpacity = finalProcessing(stf, tstf, anyInMask);
+        } else {
+            // Change is undefined where only one time-step is present: the time-invariant STF shows.
+            result.colorOpacity = stf;
+        }
     }
 #endif
     return result;

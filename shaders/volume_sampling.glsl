@@ -3,12 +3,20 @@ layout(binding = ATLAS_UNIT) uniform sampler3D densityAtlas;
 layout(binding = MASK_ATLAS_UNIT) uniform sampler3D maskAtlas;
 uniform vec3 inverseAtlasSize;
 
-// Samples sit on texel centres; clamping to [0, dims - 1] keeps trilinear filtering inside the
-// time-step's own brick, so bricks need no border between them.
-vec3 atlasCoordinate(int step, vec3 worldPosition) {
+// Voxel coordinates of a world position in a time-step's grid, clamped to the grid: samples sit
+// on texel centres, and clamping to [0, dims - 1] keeps trilinear filtering inside the time-step's
+// own brick, so bricks need no border between them.
+vec3 voxelCoordinate(int step, vec3 worldPosition) {
     vec3 voxel = (timeSteps.steps[step].worldToVoxel * vec4(worldPosition, 1.0)).xyz;
-    voxel = clamp(voxel, vec3(0.0), timeSteps.steps[step].dims.xyz - 1.0);
+    return clamp(voxel, vec3(0.0), timeSteps.steps[step].dims.xyz - 1.0);
+}
+
+vec3 atlasCoordinateOfVoxel(int step, vec3 voxel) {
     return (timeSteps.steps[step].brickOrigin.xyz + voxel + 0.5) * inverseAtlasSize;
+}
+
+vec3 atlasCoordinate(int step, vec3 worldPosition) {
+    return atlasCoordinateOfVoxel(step, voxelCoordinate(step, worldPosition));
 }
 
 float sampleDensity(vec3 atlasPosition) {

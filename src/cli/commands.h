@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "tstyles/core/bundled_data.h"
 #include "tstyles/gl/headless_context.h"
 
 namespace tstyles::cli {
@@ -25,10 +26,6 @@ struct GlOptions {
 };
 void addGlOptions(CLI::App& command, GlOptions& options);
 GlBackend parseBackend(const std::string& name);
-
-// The folder with the bundled data (scenes, generated datasets): TSTYLES_DATA_DIR, else the source
-// tree's data/ this binary was built from.
-std::filesystem::path bundledDataDirectory();
 
 struct Command {
     CLI::App* parsed = nullptr;     // the subcommand, to see whether it was chosen

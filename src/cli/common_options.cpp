@@ -20,10 +20,4 @@ GlBackend parseBackend(const std::string& name) {
     return *backend;
 }
 
-std::filesystem::path bundledDataDirectory() {
-    if (const char* directory = std::getenv("TSTYLES_DATA_DIR"); directory != nullptr && *directory != 0)
-        return directory;
-    return TSTYLES_BUNDLED_DATA_DIR;
-}
-
 }  // namespace tstyles::cli

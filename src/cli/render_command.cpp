@@ -19,8 +19,29 @@ struct RenderOptions {
     std::optional<int> width;
     std::optional<int> height;
     std::optional<std::string> compositor;
+    std::vector<std::string> styleOverrides;  // NAME=FILE
     GlOptions gl;
 };
+
+// --style NAME=FILE: every colour node of the scene that uses style NAME reads FILE instead, so a
+// look can be tried on a scene without editing it.
+void overrideStyles(Scene& scene, const std::vector<std::string>& overrides) {
+    for (const std::string& entry : overrides) {
+        const auto equals = entry.find('=');
+        if (equals == std::string::npos || equals == 0 || equals + 1 == entry.size())
+            throwInputError("", "--style", "expected NAME=FILE, got \"" + entry + "\"");
+        const std::string name = entry.substr(0, equals);
+        const std::string file = std::filesystem::absolute(entry.substr(equals + 1)).lexically_normal().string();
+        bool used = false;
+        for (TransferFunction1D* curve : {&scene.stf.curve, &scene.indexTstf.curve, &scene.gradientTstf.curve})
+            for (ColorNode& node : curve->color)
+                if (node.style == name) {
+                    node.style = file;
+                    used = true;
+                }
+        if (!used) throwInputError("", "--style", "the scene uses no style named \"" + name + "\"");
+    }
+}
 
 int runRender(const RenderOptions& options) {
     Scene scene = loadScene(options.scene);
@@ -34,6 +55,7 @@ int runRender(const RenderOptions& options) {
                                 "\" (temporal-mip, temporal-average, temporal-max-change)");
         scene.compositor = *compositor;
     }
+    overrideStyles(scene, options.styleOverrides);
     const Series series = loadSeries(scene.dataset);
     const auto context = createHeadlessContext(parseBackend(options.gl.backend), glDebugOutputRequested());
     Renderer renderer(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
@@ -62,6 +84,8 @@ Command addRenderCommand(CLI::App& app) {
         ->check(CLI::Range(1, 16384));
     command->add_option("--tc", options->compositor,
                         "Temporal compositor: temporal-mip, temporal-average, temporal-max-change");
+    command->add_option("--style", options->styleOverrides,
+                        "NAME=FILE: use this image (any format OpenImageIO reads) wherever the scene uses style NAME");
     addGlOptions(*command, options->gl);
     return {command, [options] { return runRender(*options); }};
 }

@@ -5,9 +5,10 @@ namespace tstyles {
 
 std::string describeInputProblem(const std::filesystem::path& file, const std::string& field,
                                  const std::string& problem) {
-    std::string message = file.empty() ? std::string("<input>") : file.string();
-    if (!field.empty()) message += ": " + field;
-    message += ": " + problem;
+    // Problems with a command-line option have no file: the option is the field.
+    std::string message = file.string();
+    if (!field.empty()) message += (message.empty() ? "" : ": ") + field;
+    message += (message.empty() ? "" : ": ") + problem;
     return message;
 }
 

@@ -125,6 +125,9 @@ void Program::set(const char* name, const glm::vec4& value) const {
 void Program::set(const char* name, const glm::ivec3& value) const {
     glProgramUniform3i(id(), location(name), value.x, value.y, value.z);
 }
+void Program::set(const char* name, const glm::mat3& value) const {
+    glProgramUniformMatrix3fv(id(), location(name), 1, GL_FALSE, glm::value_ptr(value));
+}
 void Program::set(const char* name, const glm::mat4& value) const {
     glProgramUniformMatrix4fv(id(), location(name), 1, GL_FALSE, glm::value_ptr(value));
 }

@@ -52,4 +52,16 @@ Image readImage(const std::filesystem::path& file) {
     return image;
 }
 
+Image resizeImage(const Image& image, int width, int height) {
+    if (image.width == width && image.height == height) return image;
+    const OIIO::ImageSpec sourceSpec(image.width, image.height, 4, OIIO::TypeDesc::FLOAT);
+    const OIIO::ImageBuf source(sourceSpec, const_cast<float*>(image.rgba.data()));
+    OIIO::ImageBuf resized(OIIO::ImageSpec(width, height, 4, OIIO::TypeDesc::FLOAT));
+    if (!OIIO::ImageBufAlgo::resize(resized, source))
+        throw std::runtime_error("cannot resize an image: " + resized.geterror());
+    Image result(width, height);
+    resized.get_pixels(OIIO::ROI(0, width, 0, height, 0, 1, 0, 4), OIIO::TypeDesc::FLOAT, result.rgba.data());
+    return result;
+}
+
 }  // namespace tstyles

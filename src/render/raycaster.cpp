@@ -43,13 +43,15 @@ Raycaster::Raycaster(const ShaderLibrary& shaders)
 
 const Program& Raycaster::programFor(const RaycastParameters& parameters) {
     const int capacity = arrayCapacity(parameters.timeStepCount);
-    const auto key = std::make_tuple(compositorDefine(parameters.compositor), parameters.collectStatistics, capacity);
+    const auto key = std::make_tuple(compositorDefine(parameters.compositor), parameters.collectStatistics,
+                                     parameters.styled, capacity);
     auto found = programs_.find(key);
     if (found != programs_.end()) return found->second;
     const ShaderDefines defines = {
         {"TEMPORAL_COMPOSITOR", std::to_string(compositorDefine(parameters.compositor))},
         {"COLLECT_STATISTICS", parameters.collectStatistics ? "1" : "0"},
         {"MAX_TIME_STEPS", std::to_string(capacity)},
+        {"STYLED", parameters.styled ? "1" : "0"},
     };
     auto program = Program::build(shaders_, {{GL_VERTEX_SHADER, "fullscreen.vert"},
                                              {GL_FRAGMENT_SHADER, "raycast.frag"}},
@@ -71,6 +73,12 @@ void Raycaster::draw(const RaycastParameters& parameters) {
     program.set("background", parameters.background);
     program.set("finalMode", finalModeValue(parameters.finalMode));
     program.set("changeRange", parameters.changeRange);
+    if (parameters.styled) {
+        glProgramUniform2iv(program.id(), glGetUniformLocation(program.id(), "styleTracks"), 3,
+                            &parameters.styleTracks[0].x);
+        program.set("worldToView", parameters.worldToView);
+        program.set("styleFootprint", parameters.styleFootprint);
+    }
     if (parameters.collectStatistics) {
         const std::array<std::uint32_t, 6> zero = {0, 0, 0, 0, 0, 0};
         statistics_.setData(std::as_bytes(std::span(zero)));

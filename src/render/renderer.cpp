@@ -1,9 +1,25 @@
 // The renderer façade: series upload, transfer-table updates and the two passes of a frame.
 #include "tstyles/render/renderer.h"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace tstyles {
+namespace {
+
+// How far apart neighbouring pixels read the lit sphere, in style-image units: a pixel's world
+// footprint at the target's distance over the diameter of a curved feature. Real curvature is not
+// known per sample; features are taken to be 16 voxels in radius, the scale at which central
+// differences give smooth normals on our data. Thin style details then stay free of aliasing
+// without blurring the styles of large bodies.
+double styleFootprint(const View& view, int imageHeight, double finestSpacing) {
+    const double distance = glm::length(view.target - view.eye);
+    const double pixelFootprint = 2.0 * distance * std::tan(glm::radians(view.fovDeg) / 2.0) / imageHeight;
+    const double featureRadius = 16.0 * finestSpacing;
+    return pixelFootprint / (2.0 * featureRadius);
+}
+
+}  // namespace
 
 Renderer::Renderer(ShaderLibrary shaders)
     : shaders_(std::move(shaders)), entryExitBuffers_(shaders_), raycaster_(shaders_) {}
@@ -26,6 +42,8 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     gpuSeries_->bind();
     transferTables_.update(scene.stf, scene.indexTstf, scene.gradientTstf, gpuSeries_->timeStepCount());
     transferTables_.bind();
+    styleTextures_.update({&scene.stf.curve, &scene.indexTstf.curve, &scene.gradientTstf.curve});
+    styleTextures_.bind();
     entryExitBuffers_.render(*gpuSeries_, viewProjection, inverseViewProjection, options.size);
 
     target_.resize(options.size);
@@ -45,6 +63,10 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     parameters.changeRange = glm::vec2(float(scene.gradientTstf.rangeLow), float(scene.gradientTstf.rangeHigh));
     parameters.collectStatistics = options.collectStatistics;
     parameters.soloTimeStep = options.soloTimeStep.value_or(-1);
+    parameters.styled = styleTextures_.anyStyled();
+    parameters.styleTracks = styleTextures_.trackRanges();
+    parameters.worldToView = glm::mat3(view.viewMatrix);
+    parameters.styleFootprint = float(styleFootprint(view, options.size.y, finestSpacing_));
     raycaster_.draw(parameters);
 }
 

@@ -8,6 +8,7 @@
 #include "json_fields.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/scene/scene_file.h"
+#include "tstyles/scene/style_reference.h"
 
 namespace tstyles {
 namespace {
@@ -235,6 +236,16 @@ std::filesystem::path readDataset(const JsonFieldReader& fields, const json& roo
     return (sceneFolder / datasetPath).lexically_normal();
 }
 
+// Style images named by a relative path are relative to the scene file's folder, like the dataset.
+void resolveStyleFiles(Scene& scene, const std::filesystem::path& origin) {
+    const std::filesystem::path sceneFolder =
+        origin.empty() ? std::filesystem::current_path() : std::filesystem::absolute(origin).parent_path();
+    for (TransferFunction1D* curve : {&scene.stf.curve, &scene.indexTstf.curve, &scene.gradientTstf.curve})
+        for (ColorNode& node : curve->color)
+            if (isStyleFile(node.style) && std::filesystem::path(node.style).is_relative())
+                node.style = (sceneFolder / node.style).lexically_normal().string();
+}
+
 }  // namespace
 
 Scene parseScene(const std::string& text, const std::filesystem::path& origin) {
@@ -258,6 +269,7 @@ Scene parseScene(const std::string& text, const std::filesystem::path& origin) {
     if (const json* finalMode = JsonFieldReader::member(root, "final")) {
         scene.finalMode = fields.name<FinalMode>(*finalMode, "final", finalModeFromString, finalModeNames());
     }
+    resolveStyleFiles(scene, origin);
     return scene;
 }
 

@@ -6,6 +6,7 @@
 
 #include "tstyles/core/atomic_file.h"
 #include "tstyles/scene/scene_file.h"
+#include "tstyles/scene/style_reference.h"
 
 namespace tstyles {
 namespace {
@@ -55,7 +56,18 @@ std::string layOut(const ordered_json& value, int depth) {
 
 ordered_json vectorJson(const glm::dvec3& v) { return ordered_json::array({v.x, v.y, v.z}); }
 
-ordered_json curveJson(const TransferFunction1D& curve) {
+// Relative to the scene's folder when the two share a root, so that a folder of scenes and data can
+// be moved as a whole; otherwise absolute. Forward slashes on every platform.
+std::string pathJson(const std::filesystem::path& path, const std::filesystem::path& sceneFolder) {
+    const std::filesystem::path absolutePath = std::filesystem::absolute(path).lexically_normal();
+    const std::filesystem::path absoluteFolder =
+        (sceneFolder.empty() ? std::filesystem::current_path() : std::filesystem::absolute(sceneFolder))
+            .lexically_normal();
+    const std::filesystem::path relative = absolutePath.lexically_relative(absoluteFolder);
+    return (relative.empty() ? absolutePath : relative).generic_string();
+}
+
+ordered_json curveJson(const TransferFunction1D& curve, const std::filesystem::path& sceneFolder) {
     ordered_json opacity = ordered_json::array();
     for (const OpacityNode& node : curve.opacity) {
         ordered_json entry;
@@ -68,7 +80,7 @@ ordered_json curveJson(const TransferFunction1D& curve) {
     for (const ColorNode& node : curve.color) {
         ordered_json entry;
         entry["at"] = node.at;
-        if (!node.style.empty()) entry["style"] = node.style;
+        if (!node.style.empty()) entry["style"] = isStyleFile(node.style) ? pathJson(node.style, sceneFolder) : node.style;
         entry["color"] = vectorJson(node.color);
         if (node.group != 0) entry["group"] = node.group;
         color.push_back(entry);
@@ -109,22 +121,12 @@ ordered_json cameraJson(const Camera& camera) {
     return result;
 }
 
-// Relative to the scene's folder when the two share a root, so that a folder of scenes and data can
-// be moved as a whole; otherwise absolute. Forward slashes on every platform.
-std::string datasetJson(const std::filesystem::path& dataset, const std::filesystem::path& sceneFolder) {
-    const std::filesystem::path absoluteDataset = std::filesystem::absolute(dataset).lexically_normal();
-    const std::filesystem::path absoluteFolder =
-        (sceneFolder.empty() ? std::filesystem::current_path() : std::filesystem::absolute(sceneFolder))
-            .lexically_normal();
-    const std::filesystem::path relative = absoluteDataset.lexically_relative(absoluteFolder);
-    return (relative.empty() ? absoluteDataset : relative).generic_string();
-}
 
 }  // namespace
 
 std::string sceneToJson(const Scene& scene, const std::filesystem::path& sceneFolder) {
     ordered_json root;
-    root["dataset"] = datasetJson(scene.dataset, sceneFolder);
+    root["dataset"] = pathJson(scene.dataset, sceneFolder);
 
     ordered_json& image = root["image"];
     image["width"] = scene.width;
@@ -138,14 +140,14 @@ std::string sceneToJson(const Scene& scene, const std::filesystem::path& sceneFo
     if (scene.raycast.step) raycast["step"] = *scene.raycast.step;  // absent: half the finest spacing
     raycast["termination"] = scene.raycast.termination;
 
-    root["stf"] = curveJson(scene.stf.curve);
+    root["stf"] = curveJson(scene.stf.curve, sceneFolder);
     root["compositor"] = toString(scene.compositor);
 
     ordered_json& tstf = root["tstf"];
-    tstf["index"] = curveJson(scene.indexTstf.curve);
+    tstf["index"] = curveJson(scene.indexTstf.curve, sceneFolder);
     ordered_json gradient;
     gradient["range"] = ordered_json::array({scene.gradientTstf.rangeLow, scene.gradientTstf.rangeHigh});
-    gradient.update(curveJson(scene.gradientTstf.curve));
+    gradient.update(curveJson(scene.gradientTstf.curve, sceneFolder));
     tstf["gradient"] = gradient;
 
     root["final"] = toString(scene.finalMode);

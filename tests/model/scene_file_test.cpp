@@ -361,3 +361,20 @@ TEST(SceneFileNodes, BadGroupsAndStylesAreErrors) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(SceneFileNodes, StyleFilesAreRelativeToTheSceneFolderAndWrittenBackRelative) {
+    const auto folder = std::filesystem::temp_directory_path() / "tstyles_scene_style_paths";
+    std::filesystem::create_directories(folder / "scenes");
+    const std::string text = R"({"dataset": "d.json",
+      "stf": {"color": [{"at": 0, "style": "../looks/sphere.png"}, {"at": 1, "style": "toon-orange"}]}})";
+    const tstyles::Scene scene = tstyles::parseScene(text, folder / "scenes" / "s.json");
+    EXPECT_EQ(scene.stf.curve.color[0].style, (folder / "looks" / "sphere.png").lexically_normal().string());
+    EXPECT_EQ(scene.stf.curve.color[1].style, "toon-orange") << "built-in names stay names";
+    const std::string saved = tstyles::sceneToJson(scene, folder / "scenes");
+    EXPECT_NE(saved.find("\"../looks/sphere.png\""), std::string::npos) << saved;
+    EXPECT_NE(saved.find("\"toon-orange\""), std::string::npos) << saved;
+}
+
+}  // namespace

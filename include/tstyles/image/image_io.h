@@ -16,4 +16,7 @@ void writeImage(const Image& image, const std::filesystem::path& file);
 // get alpha 1). InputError naming the file if it cannot be read.
 Image readImage(const std::filesystem::path& file);
 
+// The image resampled to `width` x `height` (OpenImageIO's filtered resize).
+Image resizeImage(const Image& image, int width, int height);
+
 }  // namespace tstyles

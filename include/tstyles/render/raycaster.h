@@ -2,6 +2,7 @@
 // and final processing in one fragment shader (shaders/raycast.frag), one program per compositor.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <tuple>
@@ -28,6 +29,12 @@ struct RaycastParameters {
     glm::vec2 changeRange{0.0f, 1.0f};
     bool collectStatistics = false;
     int soloTimeStep = -1;  // -1: every time-step takes part
+    // Lit-sphere styles: whether any track is styled, each track's node range, the view rotation
+    // and the style-image footprint of a pixel.
+    bool styled = false;
+    std::array<glm::ivec2, 3> styleTracks{};
+    glm::mat3 worldToView{1.0f};
+    float styleFootprint = 0.0f;
 };
 
 struct RaycastStatistics {
@@ -50,8 +57,9 @@ private:
     const Program& programFor(const RaycastParameters& parameters);
 
     const ShaderLibrary& shaders_;
-    // Keyed by compositor, statistics on/off and the time-step capacity of the shader's arrays.
-    std::map<std::tuple<int, bool, int>, Program> programs_;
+    // Keyed by compositor, statistics on/off, styled or not and the time-step capacity of the
+    // shader's arrays.
+    std::map<std::tuple<int, bool, bool, int>, Program> programs_;
     VertexArray emptyVertexArray_;
     Buffer statistics_;
 };

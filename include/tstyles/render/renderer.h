@@ -13,6 +13,7 @@
 #include "tstyles/render/gpu_series.h"
 #include "tstyles/render/raycaster.h"
 #include "tstyles/render/render_target.h"
+#include "tstyles/render/style_textures.h"
 #include "tstyles/render/transfer_tables.h"
 #include "tstyles/scene/scene.h"
 
@@ -57,6 +58,7 @@ private:
     std::optional<GpuSeries> gpuSeries_;
     double finestSpacing_ = 1.0;
     TransferTables transferTables_;
+    StyleTextures styleTextures_;
     EntryExitBuffers entryExitBuffers_;
     Raycaster raycaster_;
     RenderTarget target_;

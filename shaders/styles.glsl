@@ -1,0 +1,82 @@
+// Lit-sphere styles (style transfer functions, Bruckner and Groeller 2007): a sample's colour is read
+// from a lit-sphere image at its view-space normal, and the style's alpha multiplies the opacity.
+// Each transfer function ("track") has its colour nodes in a table; between two nodes the colour is
+// the blend of their two lookups. A flat colour node is a style of one colour.
+layout(binding = STYLE_UNIT) uniform sampler2DArray styles;
+
+struct StyleNode {
+    vec4 tintAndPosition;  // rgb: tint (a flat node's colour), a: position on the track
+    ivec4 layer;           // x: layer in the style array, -1 for a flat colour
+};
+
+layout(std430, binding = STYLE_NODE_BUFFER) readonly buffer StyleNodes {
+    StyleNode nodes[];
+} styleNodes;
+
+const int STF_TRACK = 0;
+const int INDEX_TSTF_TRACK = 1;
+const int GRADIENT_TSTF_TRACK = 2;
+
+uniform ivec2 styleTracks[3];  // offset and count of each track's nodes; count 0: not styled
+uniform mat3 worldToView;
+// How far apart, in the style image, neighbouring pixels look: the pixel's world footprint over the
+// radius of the smallest curved feature the grid resolves. Feeds the mipmapped lookup.
+uniform float styleFootprint;
+
+struct SphereCoordinate {
+    vec2 uv;
+};
+
+// Where a sample reads the lit sphere: its view-space normal (the negated density gradient, turned
+// to face the viewer), or the sphere's centre where the gradient is too small to give a normal.
+SphereCoordinate sphereCoordinate(vec3 gradient) {
+    float magnitude = length(gradient);
+    if (magnitude < 1.0e-4) return SphereCoordinate(vec2(0.5));
+    vec3 normal = worldToView * (-gradient / magnitude);
+    if (normal.z < 0.0) normal = -normal;
+    // Row 0 of a style image is its top (normal.y = +1) and is uploaded at t = 0.
+    return SphereCoordinate(vec2(0.5 + 0.5 * normal.x, 0.5 - 0.5 * normal.y));
+}
+
+// Premultiplied colour of one node at a sphere coordinate.
+vec4 nodeLook(int node, SphereCoordinate sphere) {
+    vec3 tint = styleNodes.nodes[node].tintAndPosition.rgb;
+    int layer = styleNodes.nodes[node].layer.x;
+    if (layer < 0) return vec4(tint, 1.0);
+    vec4 look = textureGrad(styles, vec3(sphere.uv, float(layer)), vec2(styleFootprint, 0.0),
+                            vec2(0.0, styleFootprint));
+    return vec4(look.rgb * tint, look.a);
+}
+
+float nodePosition(int node) {
+    return styleNodes.nodes[node].tintAndPosition.a;
+}
+
+// The styled colour of a track at x: rgb (not premultiplied) and the style's alpha.
+vec4 trackStyle(int track, float x, SphereCoordinate sphere) {
+    int first = styleTracks[track].x;
+    int last = first + styleTracks[track].y - 1;
+    vec4 look;
+    if (x <= nodePosition(first)) {
+        look = nodeLook(first, sphere);
+    } else if (x >= nodePosition(last)) {
+        look = nodeLook(last, sphere);
+    } else {
+        int node = first;
+        while (node < last - 1 && x >= nodePosition(node + 1)) ++node;
+        float weight = (x - nodePosition(node)) / (nodePosition(node + 1) - nodePosition(node));
+        look = mix(nodeLook(node, sphere), nodeLook(node + 1, sphere), weight);
+    }
+    return vec4(look.a > 0.0 ? look.rgb / look.a : vec3(0.0), look.a);
+}
+
+bool trackStyled(int track) {
+    return styleTracks[track].y > 0;
+}
+
+// A classification (colour, opacity) with its track's style applied, if the track has styles.
+vec4 applyStyle(int track, float x, vec4 classification, SphereCoordinate sphere) {
+    if (!trackStyled(track)) return classification;
+    vec4 styled = trackStyle(track, x, sphere);
+    return vec4(styled.rgb, classification.a * styled.a);
+}
