@@ -6,6 +6,7 @@ const int EXIT_UNIT = 3;
 const int STF_UNIT = 4;
 const int GRADIENT_TSTF_UNIT = 5;
 const int STYLE_UNIT = 6;
+const int OCCUPANCY_UNIT = 7;
 
 #define TIME_STEP_BUFFER 0
 #define PROXY_BUFFER 1

@@ -52,14 +52,22 @@ void main() {
         // exactly at the exit, so a slab of thickness D gets exactly D worth of opacity.
         float segmentEnd = min(t + stepLength, rayDepth.y);
         float middle = 0.5 * (t + segmentEnd);
-        TemporalSample styled = compositeTemporal(ray.origin + ray.direction * middle, middle);
+        TemporalSample styled = compositeTemporal(ray.origin + ray.direction * middle, middle, ray.direction);
         samples += 1;
         fetches += styled.fetches;
+#if !NAIVE_RAYCASTER
         if (styled.contributing == 0) {
             // Between time-steps: jump to where the next one begins.
             t = nextEntryAfter(middle, rayDepth.y);
             continue;
         }
+        if (styled.emptyUntil > 0.0) {
+            // Every time-step here is transparent: jump to the end of the empty bricks, but not past
+            // the entry of a time-step the ray has not reached yet.
+            t = max(segmentEnd, min(styled.emptyUntil, nextEntryAfter(middle, rayDepth.y)));
+            continue;
+        }
+#endif
         float opacity = clamp(styled.colorOpacity.a, 0.0, 1.0);
         if (opacity > 0.0) {
             float corrected = 1.0 - pow(1.0 - opacity, (segmentEnd - t) / referenceLength);

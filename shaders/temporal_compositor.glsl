@@ -13,6 +13,11 @@
 #ifndef STYLED
 #define STYLED 1
 #endif
+// 1 for the benchmark's baseline: every time-step is tested at every sample (is the sample inside
+// its grid?) instead of walking the ray's list of time-steps, and nothing is skipped.
+#ifndef NAIVE_RAYCASTER
+#define NAIVE_RAYCASTER 0
+#endif
 
 // The max density change is scaled from [changeRange.x, changeRange.y] to [0, 1].
 uniform vec2 changeRange;
@@ -21,7 +26,38 @@ struct TemporalSample {
     vec4 colorOpacity;  // colour and opacity per reference length
     int contributing;   // how many time-steps contain the sample
     int fetches;        // volume texture fetches spent
+    // > 0 when every time-step at the sample is in an empty brick: the ray may skip to here.
+    float emptyUntil;
 };
+
+// The loop over the time-steps that contain the sample at ray parameter t; `step` is the time-step.
+#if NAIVE_RAYCASTER
+#define FOR_EACH_TIME_STEP_AT_SAMPLE                                                             \
+    for (int step = 0; step < timeStepCount; ++step) {                                           \
+        if (soloTimeStep >= 0 && step != soloTimeStep) continue;                                 \
+        vec3 rawVoxel = (timeSteps.steps[step].worldToVoxel * vec4(position, 1.0)).xyz;          \
+        if (any(lessThan(rawVoxel, vec3(0.0))) ||                                                \
+            any(greaterThan(rawVoxel, timeSteps.steps[step].dims.xyz - 1.0)))                    \
+            continue;
+#else
+#define FOR_EACH_TIME_STEP_AT_SAMPLE                                                             \
+    for (int i = 0; i < activeCount; ++i) {                                                      \
+        if (t < activeIntervals[i].x || t > activeIntervals[i].y) continue;                      \
+        int step = activeSteps[i];
+#endif
+
+// Whether all time-steps at the sample lie in empty bricks; if so, where the first brick ends.
+float emptySpaceUntil(vec3 position, float t, vec3 direction) {
+    float emptyUntil = 1.0e30;
+    bool anyStep = false;
+    FOR_EACH_TIME_STEP_AT_SAMPLE
+        vec3 voxel = voxelCoordinate(step, position);
+        if (brickVisible(step, voxel)) return -1.0;
+        emptyUntil = min(emptyUntil, brickExit(step, voxel, t, direction));
+        anyStep = true;
+    }
+    return anyStep ? emptyUntil : -1.0;
+}
 
 // Where the time-step's style is read at this sample (6 fetches when styled).
 SphereCoordinate styleCoordinate(int step, vec3 position, inout int fetches) {
@@ -33,8 +69,17 @@ SphereCoordinate styleCoordinate(int step, vec3 position, inout int fetches) {
 #endif
 }
 
-TemporalSample compositeTemporal(vec3 position, float t) {
-    TemporalSample result = TemporalSample(vec4(0.0), 0, 0);
+TemporalSample compositeTemporal(vec3 position, float t, vec3 direction) {
+    TemporalSample result = TemporalSample(vec4(0.0), 0, 0, -1.0);
+#if !NAIVE_RAYCASTER
+    // Skip transparent regions of all time-steps at once. The max density change needs every
+    // density once any time-step is visible, so the test comes before the real work.
+    result.emptyUntil = emptySpaceUntil(position, t, direction);
+    if (result.emptyUntil > 0.0) {
+        result.contributing = 1;
+        return result;
+    }
+#endif
 #if TEMPORAL_COMPOSITOR == TC_MAX_INTENSITY_PROJECTION
     // The time-step with the highest STF opacity wins. Inside overlapping opaque bodies the STF
     // opacities tie; then the time-step that the index TSTF shows most strongly wins (the focus of
@@ -56,9 +101,7 @@ TemporalSample compositeTemporal(vec3 position, float t) {
     bool anyInMask = false;
 #endif
 
-    for (int i = 0; i < activeCount; ++i) {
-        if (t < activeIntervals[i].x || t > activeIntervals[i].y) continue;
-        int step = activeSteps[i];
+    FOR_EACH_TIME_STEP_AT_SAMPLE
         vec3 atlasPosition = atlasCoordinate(step, position);
         float density = sampleDensity(atlasPosition);
         bool inMask = insideMask(step, atlasPosition);

@@ -4,6 +4,7 @@ struct TimeStepInfo {
     vec4 brickOrigin;   // xyz: first texel of this time-step's brick in the atlas
     vec4 dims;          // xyz: samples along each axis; w: 1 when the time-step has a mask
     ivec4 layer;        // x: layer of this time-step's proxy box in the entry/exit buffers
+    vec4 occupancyOrigin;  // xyz: first texel of this time-step's bricks in the occupancy atlas
 };
 
 layout(std430, binding = TIME_STEP_BUFFER) readonly buffer TimeSteps {

@@ -28,3 +28,37 @@ bool insideMask(int step, vec3 atlasPosition) {
     if (timeSteps.steps[step].dims.w < 0.5) return true;
     return texture(maskAtlas, atlasPosition).r >= 0.5;
 }
+
+// Empty-space skipping: one texel per brick of BRICK_SIZE³ cells in the occupancy atlas, non-zero
+// where the STF can give the brick's densities some opacity (render/brick_occupancy.h).
+layout(binding = OCCUPANCY_UNIT) uniform sampler3D occupancyAtlas;
+const float BRICK_SIZE = 8.0;
+
+vec3 brickCount(int step) {
+    return max(ceil((timeSteps.steps[step].dims.xyz - 1.0) / BRICK_SIZE), vec3(1.0));
+}
+
+vec3 brickOf(int step, vec3 voxel) {
+    return min(floor(voxel / BRICK_SIZE), brickCount(step) - 1.0);
+}
+
+bool brickVisible(int step, vec3 voxel) {
+    ivec3 texel = ivec3(timeSteps.steps[step].occupancyOrigin.xyz + brickOf(step, voxel));
+    return texelFetch(occupancyAtlas, texel, 0).r > 0.5;
+}
+
+// The ray parameter at which a ray at `t`, at `voxel` in the time-step's grid and heading along
+// `worldDirection`, leaves the brick it is in. Voxel coordinates are an affine function of world
+// position, so t carries over unchanged.
+float brickExit(int step, vec3 voxel, float t, vec3 worldDirection) {
+    vec3 direction = mat3(timeSteps.steps[step].worldToVoxel) * worldDirection;
+    vec3 lower = brickOf(step, voxel) * BRICK_SIZE;
+    vec3 upper = min(lower + BRICK_SIZE, timeSteps.steps[step].dims.xyz - 1.0);
+    float exit = 1.0e30;
+    for (int axis = 0; axis < 3; ++axis) {
+        if (abs(direction[axis]) < 1.0e-12) continue;
+        float bound = direction[axis] > 0.0 ? upper[axis] : lower[axis];
+        exit = min(exit, (bound - voxel[axis]) / direction[axis]);
+    }
+    return t + max(exit, 0.0);
+}

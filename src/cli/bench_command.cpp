@@ -25,6 +25,7 @@ struct BenchOptions {
     int warmup = 2;
     std::optional<std::filesystem::path> json;
     std::vector<std::string> datasets{"superellipsoid", "superellipsoid-aligned"};
+    bool baseline = false;
     GlOptions gl;
 };
 
@@ -40,6 +41,7 @@ struct BenchResult {
     std::size_t timeSteps = 0;
     double medianMs = 0.0;
     double maxMs = 0.0;
+    std::optional<double> naiveMedianMs;  // with --baseline
     RaycastStatistics statistics;
     std::size_t seriesTextureBytes = 0;
     std::size_t frameTextureBytes = 0;
@@ -73,18 +75,28 @@ BenchResult runCase(Renderer& renderer, const Series& series, const BenchCase& b
         if (auto* orbit = std::get_if<OrbitCamera>(&camera.pose)) orbit->azimuthDeg += 2.0 * index;
         return resolveView(camera, series.worldBounds(), benchCase.size, benchCase.size);
     };
-    for (int i = 0; i < options.warmup; ++i) renderer.draw(scene, viewForFrame(i), frame);
-    glFinish();
-    std::vector<double> milliseconds;
-    for (int i = 0; i < options.frames; ++i) {
-        const View view = viewForFrame(i);
-        const auto start = std::chrono::steady_clock::now();
-        renderer.draw(scene, view, frame);
+    auto timeFrames = [&](const FrameOptions& timed) {
+        for (int i = 0; i < options.warmup; ++i) renderer.draw(scene, viewForFrame(i), timed);
         glFinish();
-        milliseconds.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-    }
+        std::vector<double> milliseconds;
+        for (int i = 0; i < options.frames; ++i) {
+            const View view = viewForFrame(i);
+            const auto start = std::chrono::steady_clock::now();
+            renderer.draw(scene, view, timed);
+            glFinish();
+            milliseconds.push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        }
+        return milliseconds;
+    };
+    const std::vector<double> milliseconds = timeFrames(frame);
     BenchResult result{benchCase, series.size(), median(milliseconds),
-                       *std::max_element(milliseconds.begin(), milliseconds.end()), {}, 0, 0};
+                       *std::max_element(milliseconds.begin(), milliseconds.end()), std::nullopt, {}, 0, 0};
+    if (options.baseline) {
+        FrameOptions naive = frame;
+        naive.naive = true;
+        result.naiveMedianMs = median(timeFrames(naive));
+    }
     frame.collectStatistics = true;  // counted in an extra, untimed frame: atomics cost time
     renderer.draw(scene, viewForFrame(0), frame);
     result.statistics = renderer.lastStatistics();
@@ -104,14 +116,20 @@ void printTable(const std::vector<BenchResult>& results, const std::string& devi
     std::cout << std::left << std::setw(24) << "dataset" << std::setw(21) << "compositor" << std::right
               << std::setw(6) << "n" << std::setw(7) << "size" << std::setw(11) << "median ms" << std::setw(9)
               << "max ms" << std::setw(10) << "rays" << std::setw(13) << "samples" << std::setw(13)
-              << "fetches" << std::setw(11) << "tex MiB" << "\n";
+              << "fetches" << std::setw(11) << "tex MiB";
+    if (results.front().naiveMedianMs) std::cout << std::setw(11) << "naive ms" << std::setw(10) << "speed-up";
+    std::cout << "\n";
     for (const auto& r : results) {
         std::cout << std::left << std::setw(24) << r.benchCase.dataset << std::setw(21)
                   << toString(r.benchCase.compositor) << std::right << std::setw(6) << r.timeSteps << std::setw(7)
                   << r.benchCase.size << std::setw(11) << std::fixed << std::setprecision(1) << r.medianMs
                   << std::setw(9) << r.maxMs << std::setw(10) << r.statistics.rays << std::setw(13)
                   << r.statistics.samples << std::setw(13) << r.statistics.fetches << std::setw(11)
-                  << mebibytes(r.seriesTextureBytes + r.frameTextureBytes) << "\n";
+                  << mebibytes(r.seriesTextureBytes + r.frameTextureBytes);
+        if (r.naiveMedianMs)
+            std::cout << std::setw(11) << std::setprecision(1) << *r.naiveMedianMs << std::setw(9)
+                      << std::setprecision(1) << *r.naiveMedianMs / r.medianMs << "x";
+        std::cout << "\n";
     }
 }
 
@@ -124,7 +142,9 @@ nlohmann::json toJson(const std::vector<BenchResult>& results, const std::string
                          {"median_ms", r.medianMs}, {"max_ms", r.maxMs}, {"rays", r.statistics.rays},
                          {"samples", r.statistics.samples}, {"fetches", r.statistics.fetches},
                          {"series_texture_bytes", r.seriesTextureBytes},
-                         {"frame_texture_bytes", r.frameTextureBytes}});
+                         {"frame_texture_bytes", r.frameTextureBytes},
+                         {"naive_median_ms", r.naiveMedianMs ? nlohmann::json(*r.naiveMedianMs) : nlohmann::json()},
+                         {"speed_up", r.naiveMedianMs ? nlohmann::json(*r.naiveMedianMs / r.medianMs) : nlohmann::json()}});
     return {{"device", device}, {"cases", cases}};
 }
 
@@ -161,6 +181,9 @@ Command addBenchCommand(CLI::App& app) {
         ->check(CLI::Range(0, 100));
     command->add_option("--datasets", options->datasets, "Bundled datasets (folders under data/)");
     command->add_option("--json", options->json, "Also write the results as JSON to this file");
+    command->add_flag("--baseline", options->baseline,
+                      "Also time the naive raycaster (every time-step at every sample, no skipping) in the same run "
+                      "and print the speed-up");
     addGlOptions(*command, options->gl);
     return {command, [options] { return runBench(*options); }};
 }

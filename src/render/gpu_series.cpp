@@ -19,6 +19,7 @@ struct TimeStepInfo {
     glm::vec4 brickOrigin;
     glm::vec4 dims;
     glm::ivec4 layer;
+    glm::vec4 occupancyOrigin;  // xyz: first texel of this time-step's bricks in the occupancy atlas
 };
 
 // Mirrors ProxyBox in shaders/proxy_geometry.glsl (std430).
@@ -77,6 +78,7 @@ std::vector<int> assignProxyLayers(const Series& series, std::vector<ProxyBox>& 
 GpuSeries::GpuSeries(const Series& series)
     : densityAtlas_(Texture::create(GL_TEXTURE_3D)),
       maskAtlas_(Texture::create(GL_TEXTURE_3D)),
+      occupancyAtlas_(Texture::create(GL_TEXTURE_3D)),
       timeStepTable_(Buffer::create()),
       proxyTable_(Buffer::create()) {
     timeStepCount_ = series.size();
@@ -114,6 +116,20 @@ GpuSeries::GpuSeries(const Series& series)
     }
     requireNoOutOfMemory(series, "volume atlas");
 
+    // Empty-space skipping: a brick grid per time-step, packed like the volumes; its visibility is
+    // filled in by updateOccupancy once the STF is known.
+    std::vector<glm::ivec3> brickCounts;
+    for (const auto& step : series.steps) {
+        brickGrids_.push_back(computeBrickGrid(step));
+        brickCounts.push_back(brickGrids_.back().bricks);
+    }
+    occupancyLayout_ = planAtlas(brickCounts, maxTextureSize3D());
+    occupancyAtlas_ = Texture::create(GL_TEXTURE_3D);
+    glTextureStorage3D(occupancyAtlas_.id(), 1, GL_R8, occupancyLayout_.size.x, occupancyLayout_.size.y,
+                       occupancyLayout_.size.z);
+    occupancyAtlas_.setFilter(GL_NEAREST, GL_NEAREST);
+    occupancyAtlas_.setClampToEdge();
+
     std::vector<ProxyBox> boxes;
     const std::vector<int> layers = assignProxyLayers(series, boxes);
     proxyCount_ = boxes.size();
@@ -124,19 +140,33 @@ GpuSeries::GpuSeries(const Series& series)
             step.placement.gridToWorld() * glm::scale(glm::dmat4(1.0), step.rectilinear().spacing);
         table.push_back({glm::mat4(glm::inverse(voxelToWorld)), glm::vec4(glm::vec3(layout_.brickOrigins[index]), 0.0f),
                          glm::vec4(glm::vec3(step.rectilinear().dims), step.mask ? 1.0f : 0.0f),
-                         glm::ivec4(layers[index], 0, 0, 0)});
+                         glm::ivec4(layers[index], 0, 0, 0),
+                         glm::vec4(glm::vec3(occupancyLayout_.brickOrigins[index]), 0.0f)});
     }
     timeStepTable_.setData(std::as_bytes(std::span(table)), GL_STATIC_DRAW);
     proxyTable_.setData(std::as_bytes(std::span(boxes)), GL_STATIC_DRAW);
 }
 
 std::size_t GpuSeries::textureBytes() const {
-    return layout_.texelCount() * 2 + (hasMasks_ ? layout_.texelCount() : 1);
+    return layout_.texelCount() * 2 + (hasMasks_ ? layout_.texelCount() : 1) + occupancyLayout_.texelCount();
+}
+
+void GpuSeries::updateOccupancy(const std::vector<glm::vec4>& stfTable) {
+    const OpacityRangeMaximum opacity(stfTable);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    for (std::size_t index = 0; index < brickGrids_.size(); ++index) {
+        const std::vector<std::uint8_t> visible = brickVisibility(brickGrids_[index], opacity);
+        const glm::ivec3 origin = occupancyLayout_.brickOrigins[index];
+        const glm::ivec3 size = brickGrids_[index].bricks;
+        glTextureSubImage3D(occupancyAtlas_.id(), 0, origin.x, origin.y, origin.z, size.x, size.y, size.z, GL_RED,
+                            GL_UNSIGNED_BYTE, visible.data());
+    }
 }
 
 void GpuSeries::bind() const {
     densityAtlas_.bindToUnit(binding::kAtlasUnit);
     maskAtlas_.bindToUnit(binding::kMaskAtlasUnit);
+    occupancyAtlas_.bindToUnit(binding::kOccupancyUnit);
     timeStepTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kTimeStepBuffer);
     proxyTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kProxyBuffer);
 }

@@ -27,6 +27,7 @@ Renderer::Renderer(ShaderLibrary shaders)
 void Renderer::setSeries(const Series& series) {
     gpuSeries_.reset();  // free the old atlas before allocating the new one
     gpuSeries_.emplace(series);
+    occupancyStf_.reset();
     finestSpacing_ = series.finestSpacing();
 }
 
@@ -39,6 +40,10 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     const glm::mat4 viewProjection = glm::mat4(view.projectionMatrix * view.viewMatrix);
     const glm::mat4 inverseViewProjection = glm::mat4(glm::inverse(view.projectionMatrix * view.viewMatrix));
 
+    if (!occupancyStf_ || !(*occupancyStf_ == scene.stf)) {
+        gpuSeries_->updateOccupancy(bakeTransferTable(scene.stf.curve));
+        occupancyStf_ = scene.stf;
+    }
     gpuSeries_->bind();
     transferTables_.update(scene.stf, scene.indexTstf, scene.gradientTstf, gpuSeries_->timeStepCount());
     transferTables_.bind();
@@ -63,6 +68,7 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     parameters.changeRange = glm::vec2(float(scene.gradientTstf.rangeLow), float(scene.gradientTstf.rangeHigh));
     parameters.collectStatistics = options.collectStatistics;
     parameters.soloTimeStep = options.soloTimeStep.value_or(-1);
+    parameters.naive = options.naive;
     parameters.styled = styleTextures_.anyStyled();
     parameters.styleTracks = styleTextures_.trackRanges();
     parameters.worldToView = glm::mat3(view.viewMatrix);

@@ -10,6 +10,7 @@ inline constexpr unsigned kExitUnit = 3;
 inline constexpr unsigned kStfUnit = 4;
 inline constexpr unsigned kGradientTstfUnit = 5;
 inline constexpr unsigned kStyleUnit = 6;
+inline constexpr unsigned kOccupancyUnit = 7;
 
 inline constexpr unsigned kTimeStepBuffer = 0;
 inline constexpr unsigned kProxyBuffer = 1;

@@ -10,6 +10,7 @@
 #include "tstyles/data/series.h"
 #include "tstyles/gl/objects.h"
 #include "tstyles/render/atlas_layout.h"
+#include "tstyles/render/brick_occupancy.h"
 
 namespace tstyles {
 
@@ -26,6 +27,10 @@ public:
     // Bytes of texture memory: the density atlas, the mask atlas.
     std::size_t textureBytes() const;
 
+    // Marks each brick visible or empty under the STF (its baked table), for empty-space skipping.
+    // Per transfer-function change, not per frame.
+    void updateOccupancy(const std::vector<glm::vec4>& stfTable);
+
     // Binds the atlases and the time-step and proxy tables at their binding points.
     void bind() const;
 
@@ -36,6 +41,9 @@ private:
     AtlasLayout layout_;
     Texture densityAtlas_;
     Texture maskAtlas_;
+    std::vector<BrickGrid> brickGrids_;
+    AtlasLayout occupancyLayout_;
+    Texture occupancyAtlas_;
     Buffer timeStepTable_;
     Buffer proxyTable_;
 };

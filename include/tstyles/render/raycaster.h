@@ -29,6 +29,7 @@ struct RaycastParameters {
     glm::vec2 changeRange{0.0f, 1.0f};
     bool collectStatistics = false;
     int soloTimeStep = -1;  // -1: every time-step takes part
+    bool naive = false;     // the benchmark's baseline raycaster
     // Lit-sphere styles: whether any track is styled, each track's node range, the view rotation
     // and the style-image footprint of a pixel.
     bool styled = false;
@@ -59,7 +60,7 @@ private:
     const ShaderLibrary& shaders_;
     // Keyed by compositor, statistics on/off, styled or not and the time-step capacity of the
     // shader's arrays.
-    std::map<std::tuple<int, bool, bool, int>, Program> programs_;
+    std::map<std::tuple<int, bool, bool, bool, int>, Program> programs_;
     VertexArray emptyVertexArray_;
     Buffer statistics_;
 };

@@ -26,6 +26,9 @@ struct FrameOptions {
     float stepScale = 1.0f;
     // Shows this one time-step alone (plain playback, for comparison); none: all time-steps.
     std::optional<int> soloTimeStep;
+    // The naive raycaster of the benchmark's baseline: every time-step tested at every sample, no
+    // skipping of empty space or of gaps between time-steps. Same image, more work.
+    bool naive = false;
 };
 
 class Renderer {
@@ -57,6 +60,7 @@ private:
     ShaderLibrary shaders_;
     std::optional<GpuSeries> gpuSeries_;
     double finestSpacing_ = 1.0;
+    std::optional<Stf> occupancyStf_;  // the STF the brick visibility was computed for
     TransferTables transferTables_;
     StyleTextures styleTextures_;
     EntryExitBuffers entryExitBuffers_;

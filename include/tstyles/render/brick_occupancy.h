@@ -1,0 +1,41 @@
+// Empty-space skipping, the data side: each time-step's grid is cut into bricks of kBrickSize³
+// cells; a brick keeps the min and max density of the samples it interpolates from, and is
+// "visible" when the STF gives some opacity to a density in that range. GL-free.
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "tstyles/data/series.h"
+
+namespace tstyles {
+
+inline constexpr int kBrickSize = 8;
+
+struct BrickGrid {
+    glm::ivec3 bricks{0};  // ceil((dims - 1) / kBrickSize) along each axis
+    // Per brick (x fastest): min and max density over the samples [b*k, b*k + k] of each axis
+    // (clipped to the grid), i.e. every sample a trilinear lookup inside the brick can read.
+    std::vector<std::pair<float, float>> minMax;
+};
+
+BrickGrid computeBrickGrid(const TimeStep& step);
+
+// The largest opacity of a transfer-function table (entry i at i / (size - 1), linearly
+// interpolated between entries) over any density in [low, high], answered in constant time.
+class OpacityRangeMaximum {
+public:
+    explicit OpacityRangeMaximum(const std::vector<glm::vec4>& table);
+    float over(float low, float high) const;
+
+private:
+    std::vector<std::vector<float>> levels_;  // levels_[k][i]: max of entries i .. i + 2^k - 1
+};
+
+// 1 for each brick the STF can make visible, 0 for bricks it leaves fully transparent.
+std::vector<std::uint8_t> brickVisibility(const BrickGrid& grid, const OpacityRangeMaximum& opacity);
+
+}  // namespace tstyles
