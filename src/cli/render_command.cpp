@@ -44,16 +44,12 @@ void overrideStyles(Scene& scene, const std::vector<std::string>& overrides) {
 }
 
 int runRender(const RenderOptions& options) {
+    requireWritableImagePath(options.output);
     Scene scene = loadScene(options.scene);
     if (options.width) scene.width = *options.width;
     if (options.height) scene.height = *options.height;
     if (options.compositor) {
-        auto compositor = temporalCompositorFromString(*options.compositor);
-        if (!compositor)
-            throwInputError("", "--tc",
-                            "unknown temporal compositor \"" + *options.compositor +
-                                "\" (temporal-mip, temporal-average, temporal-max-change)");
-        scene.compositor = *compositor;
+        scene.compositor = *temporalCompositorFromString(*options.compositor);
     }
     overrideStyles(scene, options.styleOverrides);
     const Series series = loadSeries(scene.dataset);
@@ -83,7 +79,8 @@ Command addRenderCommand(CLI::App& app) {
     command->add_option("--height", options->height, "Image height (overrides the scene)")
         ->check(CLI::Range(1, 16384));
     command->add_option("--tc", options->compositor,
-                        "Temporal compositor: temporal-mip, temporal-average, temporal-max-change");
+                        "Temporal compositor: temporal-mip, temporal-average, temporal-max-change")
+        ->check(CLI::IsMember(temporalCompositorNames()));
     command->add_option("--style", options->styleOverrides,
                         "NAME=FILE: use this image (any format OpenImageIO reads) wherever the scene uses style NAME");
     addGlOptions(*command, options->gl);

@@ -5,20 +5,35 @@
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 
+#include <cctype>
+
 #include "tstyles/core/atomic_file.h"
 #include "tstyles/core/errors.h"
 
 namespace tstyles {
 
-void writeImage(const Image& image, const std::filesystem::path& file) {
-    auto probe = OIIO::ImageOutput::create(file.string());
-    if (!probe)
+namespace {
+bool isFloatFormat(const std::filesystem::path& file) {
+    std::string extension = file.extension().string();
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return extension == ".exr" || extension == ".hdr";
+}
+}  // namespace
+
+void requireWritableImagePath(const std::filesystem::path& file) {
+    const std::filesystem::path folder = file.parent_path().empty() ? "." : file.parent_path();
+    if (!std::filesystem::is_directory(folder))
+        throwInputError(file, "", "the folder " + folder.string() + " does not exist");
+    if (std::filesystem::is_directory(file)) throwInputError(file, "", "is a folder, not an image file");
+    if (!OIIO::ImageOutput::create(file.string()))
         throwInputError(file, "", "cannot write images of this type (" + OIIO::geterror() +
                                       "); use .png, .tif or .exr");
-    const bool floatFormat = probe->supports("float") != 0 &&
-                             (file.extension() == ".exr" || file.extension() == ".EXR");
-    probe.reset();
-    const OIIO::TypeDesc format = floatFormat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
+}
+
+void writeImage(const Image& image, const std::filesystem::path& file) {
+    requireWritableImagePath(file);
+    // Float formats keep the renderer's 32-bit values; the others get 8 bits per channel.
+    const OIIO::TypeDesc format = isFloatFormat(file) ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
     writeAtomically(file, [&](const std::filesystem::path& temporary) {
         auto output = OIIO::ImageOutput::create(temporary.string());
         if (!output) throwInputError(file, "", "cannot create the image writer: " + OIIO::geterror());

@@ -3,6 +3,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <string>
+
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -22,7 +25,8 @@ constexpr float kTolerance = 6e-3f;
 
 std::filesystem::path styleFolder() {
     static const auto folder = [] {
-        auto path = std::filesystem::temp_directory_path() / "tstyles_style_tests";
+        // One folder per test process: ctest runs the EGL and OSMesa variants at the same time.
+        auto path = std::filesystem::temp_directory_path() / ("tstyles_style_tests_" + std::to_string(::getpid()));
         std::filesystem::remove_all(path);
         std::filesystem::create_directories(path);
         return path;

@@ -12,6 +12,10 @@ namespace tstyles {
 // the file.
 void writeImage(const Image& image, const std::filesystem::path& file);
 
+// Checks before any work is done that `file` can be written: its folder exists, it is not a
+// folder, and OpenImageIO knows its format. InputError naming the file otherwise.
+void requireWritableImagePath(const std::filesystem::path& file);
+
 // Reads any image OpenImageIO knows as RGBA floats with associated alpha (images without alpha
 // get alpha 1). InputError naming the file if it cannot be read.
 Image readImage(const std::filesystem::path& file);
