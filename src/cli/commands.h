@@ -35,5 +35,6 @@ struct Command {
 Command addRenderCommand(CLI::App& app);
 Command addInfoCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);
+Command addViewCommand(CLI::App& app);
 
 }  // namespace tstyles::cli

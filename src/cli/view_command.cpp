@@ -1,0 +1,60 @@
+// `tstyles view [SCENE|DATASET]`: the interactive viewer (a GLFW window with ImGui panels).
+#include <memory>
+#include <regex>
+
+#include "commands.h"
+#include "tstyles/core/errors.h"
+#include "viewer/viewer.h"
+
+namespace tstyles::cli {
+namespace {
+
+struct ViewOptions {
+    std::optional<std::filesystem::path> input;
+    std::optional<std::filesystem::path> script;
+    std::string size = "1280x800";
+    bool noVsync = false;
+    std::optional<std::filesystem::path> shaderDirectory;
+};
+
+glm::ivec2 parseWindowSize(const std::string& text) {
+    std::smatch match;
+    if (!std::regex_match(text, match, std::regex(R"((\d{2,5})x(\d{2,5}))")))
+        throwInputError("", "--size", "expected WIDTHxHEIGHT such as 1280x800, got \"" + text + "\"");
+    const glm::ivec2 size{std::stoi(match[1]), std::stoi(match[2])};
+    if (size.x < 320 || size.y < 240 || size.x > 16384 || size.y > 16384)
+        throwInputError("", "--size", "the window must be between 320x240 and 16384x16384, got \"" + text + "\"");
+    return size;
+}
+
+int runView(const ViewOptions& options) {
+    viewer::ViewerOptions viewerOptions;
+    viewerOptions.input = options.input;
+    viewerOptions.dataDirectory = bundledDataDirectory();
+    viewerOptions.script = options.script;
+    viewerOptions.windowSize = parseWindowSize(options.size);
+    viewerOptions.shaderDirectory = options.shaderDirectory;
+    viewerOptions.vsync = !options.noVsync;
+    return viewer::runViewer(viewerOptions);
+}
+
+}  // namespace
+
+Command addViewCommand(CLI::App& app) {
+    auto options = std::make_shared<ViewOptions>();
+    CLI::App* command = app.add_subcommand(
+        "view", "Open the interactive viewer on a scene or dataset (default: the bundled Figure 1 scene)");
+    command->add_option("input", options->input, "Scene file (JSON), or a dataset folder or manifest");
+    command->add_option("--script", options->script,
+                        "Play input events from this file (format: docs/viewer.md), e.g. for tests")
+        ->check(CLI::ExistingFile);
+    command->add_option("--size", options->size, "Window size in screen pixels, WIDTHxHEIGHT")
+        ->capture_default_str();
+    command->add_flag("--no-vsync", options->noVsync, "Do not wait for the display's refresh between frames");
+    command->add_option("--shader-dir", options->shaderDirectory,
+                        "Load shaders from this folder instead of the embedded copy (also: TSTYLES_SHADER_DIR)")
+        ->check(CLI::ExistingDirectory);
+    return {command, [options] { return runView(*options); }};
+}
+
+}  // namespace tstyles::cli

@@ -1,0 +1,104 @@
+// The compositor and camera sections: how samples are combined, and from where the data is seen.
+#include <algorithm>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <imgui.h>
+
+#include "camera_controller.h"
+#include "side_panel.h"
+
+namespace tstyles::viewer {
+namespace {
+
+// A combo over names; returns the chosen index when it changed.
+std::optional<std::size_t> nameCombo(const char* label, const std::vector<std::string>& names, const std::string& now) {
+    std::optional<std::size_t> chosen;
+    if (ImGui::BeginCombo(label, now.c_str())) {
+        for (std::size_t i = 0; i < names.size(); ++i)
+            if (ImGui::Selectable(names[i].c_str(), names[i] == now) && names[i] != now) chosen = i;
+        ImGui::EndCombo();
+    }
+    return chosen;
+}
+
+void drawRaycastSettings(Scene& scene, double defaultStep) {
+    bool automatic = !scene.raycast.step.has_value();
+    if (ImGui::Checkbox("automatic step", &automatic))
+        scene.raycast.step = automatic ? std::nullopt : std::optional<double>(defaultStep);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Half the finest voxel spacing: %.4g world units", defaultStep);
+    if (scene.raycast.step) {
+        double step = *scene.raycast.step;
+        const double low = defaultStep * 0.1;
+        const double high = defaultStep * 20.0;
+        if (ImGui::SliderScalar("step", ImGuiDataType_Double, &step, &low, &high, "%.4g",
+                                ImGuiSliderFlags_Logarithmic))
+            scene.raycast.step = std::max(step, 1e-9);
+    }
+    const double lowest = 0.05;
+    const double highest = 1.0;
+    ImGui::SliderScalar("termination", ImGuiDataType_Double, &scene.raycast.termination, &lowest, &highest, "%.3f");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Rays stop once their accumulated opacity reaches this.");
+}
+
+void drawGradientRange(GradientTstf& tstf) {
+    double range[2] = {tstf.rangeLow, tstf.rangeHigh};
+    const double zero = 0.0;
+    const double one = 1.0;
+    if (ImGui::DragScalarN("change range", ImGuiDataType_Double, range, 2, 0.002f, &zero, &one, "%.3f")) {
+        // The scene format wants 0 <= low < high.
+        range[0] = std::clamp(range[0], 0.0, 0.999);
+        range[1] = std::max(range[1], range[0] + 0.001);
+        tstf.rangeLow = range[0];
+        tstf.rangeHigh = range[1];
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Gradient TSTF: the temporal change (max - min density) in this range maps to [0, 1].");
+}
+
+}  // namespace
+
+void drawCompositorSection(SidePanelState& state) {
+    Scene& scene = state.scene;
+    if (auto chosen = nameCombo("compositor", temporalCompositorNames(), toString(scene.compositor)))
+        scene.compositor = *temporalCompositorFromString(temporalCompositorNames()[*chosen]);
+    if (auto chosen = nameCombo("final mode", finalModeNames(), toString(scene.finalMode)))
+        scene.finalMode = *finalModeFromString(finalModeNames()[*chosen]);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("stf: STF alone; tstf: TSTF alone; modulate: STF times TSTF");
+    drawRaycastSettings(scene, state.defaultStep);
+    drawGradientRange(scene.gradientTstf);
+    float background[4] = {float(scene.background.r), float(scene.background.g), float(scene.background.b),
+                           float(scene.background.a)};
+    if (ImGui::ColorEdit4("background", background, ImGuiColorEditFlags_NoInputs | ImGuiColorEditFlags_AlphaPreviewHalf))
+        scene.background = glm::clamp(glm::dvec4(background[0], background[1], background[2], background[3]),
+                                      glm::dvec4(0.0), glm::dvec4(1.0));
+}
+
+void drawCameraSection(SidePanelState& state, ViewerCommands& commands) {
+    Camera& camera = state.scene.camera;
+    if (auto chosen = nameCombo("projection", projectionNames(), toString(camera.projection)))
+        camera.projection = *projectionFromString(projectionNames()[*chosen]);
+    const double narrow = 5.0;
+    const double wide = 120.0;
+    ImGui::SliderScalar("field of view", ImGuiDataType_Double, &camera.fovDeg, &narrow, &wide, "%.1f deg");
+    if (auto* orbit = std::get_if<OrbitCamera>(&camera.pose)) {
+        const double turn[2] = {-180.0, 180.0};
+        const double pole[2] = {-89.0, 89.0};
+        ImGui::SliderScalar("azimuth", ImGuiDataType_Double, &orbit->azimuthDeg, &turn[0], &turn[1], "%.1f deg");
+        ImGui::SliderScalar("elevation", ImGuiDataType_Double, &orbit->elevationDeg, &pole[0], &pole[1], "%.1f deg");
+        ImGui::TextDisabled("distance %s, target %s", orbit->distance ? "set" : "framing the data",
+                            orbit->target ? "set" : "data centre");
+    } else {
+        ImGui::TextDisabled("look-at camera (dragging turns it into an orbit camera)");
+    }
+    if (ImGui::Button("Reset (R)")) commands.push_back(ViewerCommand::ResetCamera);
+    ImGui::SameLine();
+    if (ImGui::Button("Fit to data (F)")) commands.push_back(ViewerCommand::FitCamera);
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("Drag: orbit. Shift+drag or middle drag: pan. Wheel or right drag: zoom. Ctrl+click: "
+                        "temporal profile.");
+    ImGui::PopTextWrapPos();
+}
+
+}  // namespace tstyles::viewer

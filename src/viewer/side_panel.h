@@ -1,0 +1,43 @@
+// The panel on the left: the dataset (time-steps, grids, placement, value range, memory) with the
+// time slider and play button; the compositor settings (TC, step, termination, final mode,
+// gradient-TSTF range, background); the camera; and the temporal profile of the last pick.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+
+#include "time_control.h"
+#include "tstyles/data/series.h"
+#include "tstyles/scene/scene.h"
+#include "ui_anchors.h"
+#include "ui_geometry.h"
+#include "viewer_commands.h"
+#include "volume_picking.h"
+
+namespace tstyles::viewer {
+
+struct GpuMemory {
+    std::size_t seriesBytes = 0;
+    std::size_t frameBytes = 0;
+};
+
+struct SidePanelState {
+    Scene& scene;
+    const Series& series;
+    TimeControl& time;
+    const std::optional<Pick>& pick;
+    bool pickIsNew = false;  // scroll the profile into view
+    GpuMemory memory;
+    double defaultStep = 0.0;  // the renderer's step when the scene leaves it out
+};
+
+void drawSidePanel(const ScreenRect& rect, SidePanelState& state, ViewerCommands& commands, UiAnchors& anchors);
+
+// The sections, one file each.
+void drawDatasetSection(SidePanelState& state, UiAnchors& anchors);
+void drawTimeSection(SidePanelState& state, ViewerCommands& commands, UiAnchors& anchors);
+void drawCompositorSection(SidePanelState& state);
+void drawCameraSection(SidePanelState& state, ViewerCommands& commands);
+void drawProfileSection(SidePanelState& state);
+
+}  // namespace tstyles::viewer

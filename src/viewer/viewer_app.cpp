@@ -1,0 +1,236 @@
+// The frame loop: input (window and script), UI, history, progressive rendering, presentation.
+#include "viewer_app.h"
+
+#include <cmath>
+#include <iostream>
+
+#include <imgui.h>
+
+#include "side_panel.h"
+#include "tstyles/core/errors.h"
+#include "tstyles/gl/gl_api.h"
+#include "tstyles/gl/headless_context.h"
+#include "tstyles/image/image_io.h"
+#include "tstyles/scene/scene_file.h"
+#include "viewer_menu.h"
+#include "window_capture.h"
+
+namespace tstyles::viewer {
+namespace {
+
+ViewerDocument openInitialDocument(const ViewerOptions& options) {
+    return openDocument(options.input.value_or(defaultViewerInput(options.dataDirectory)), nullptr);
+}
+
+std::optional<ScriptPlayer> loadScript(const ViewerOptions& options) {
+    if (!options.script) return std::nullopt;
+    return ScriptPlayer(loadInputScript(*options.script), *options.script);
+}
+
+// An idle viewer sleeps until input arrives, but ImGui needs a few frames after an event to settle
+// hover and focus states.
+constexpr int kSettleFrames = 3;
+constexpr double kIdleWaitSeconds = 0.5;
+
+}  // namespace
+
+int runViewer(const ViewerOptions& options) {
+    ViewerApp app(options);
+    return app.run();
+}
+
+ViewerApp::ViewerApp(const ViewerOptions& options)
+    : options_(options),
+      document_(openInitialDocument(options)),
+      script_(loadScript(options)),
+      window_(options.windowSize, "Temporal Styles", glDebugOutputRequested(), options.vsync),
+      platform_(window_.handle()),
+      renderer_(ShaderLibrary::fromEnvironment(options.shaderDirectory)),
+      history_(document_.scene),
+      lastRenderable_(document_.scene),
+      savedScene_(document_.scene) {
+    renderer_.setSeries(*document_.series);
+}
+
+int ViewerApp::run() {
+    while (!quit_) {
+        const bool idle = !script_ && !time_.playing && frame_.refined() && !screenshotPath_ && settleFrames_ == 0 &&
+                          window_.events().empty();
+        if (idle)
+            window_.waitEvents(kIdleWaitSeconds);
+        else
+            window_.pollEvents();
+        settleFrames_ = window_.events().empty() ? std::max(settleFrames_ - 1, 0) : kSettleFrames;
+        frame();
+        if (script_ && script_->finished()) script_.reset();
+        if (window_.closeRequested()) {
+            window_.cancelClose();
+            requestQuit();
+        }
+    }
+    return 0;
+}
+
+void ViewerApp::frame() {
+    const Clock::time_point now = Clock::now();
+    const double seconds = std::chrono::duration<double>(now - lastFrame_).count();
+    lastFrame_ = now;
+    if (script_) script_->advance(*this, window_.events(), now);
+    for (const auto& path : window_.takeDroppedFiles()) openPath(path);
+
+    platform_.newFrame(window_.events(), window_.windowSize(), window_.framebufferSize());
+    anchors_.beginFrame();
+    buildUi(seconds);
+
+    const ImGuiIO& io = ImGui::GetIO();
+    const bool mouseHeld = io.MouseDown[0] || io.MouseDown[1] || io.MouseDown[2];
+    // Something is being dragged (camera, node, group, slider): keep previews coming, and let the
+    // whole drag become one undo step.
+    const bool interacting = volumeView_.interacting(now) || editors_.dragging() ||
+                             (mouseHeld && ImGui::IsAnyItemActive());
+    presentVolume(interacting);
+    if (!interacting) history_.record(document_.scene);
+}
+
+void ViewerApp::buildUi(double seconds) {
+    const MenuState menu{history_.canUndo() || !(document_.scene == history_.latest()), history_.canRedo(),
+                         !editors_.focused().selection().empty(), time_.playing};
+    const float menuHeight = drawMainMenu(menu, commands_);
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    layout_ = layoutViewer({display.x, display.y}, menuHeight);
+
+    SidePanelState side{document_.scene,
+                        *document_.series,
+                        time_,
+                        pick_,
+                        std::exchange(pickIsNew_, false),
+                        {renderer_.seriesTextureBytes(), renderer_.frameTextureBytes()},
+                        0.5 * document_.series->finestSpacing()};
+    drawSidePanel(layout_.sidePanel, side, commands_, anchors_);
+    editors_.draw(document_.scene, *document_.series, *document_.histogram, layout_, anchors_);
+    drawVolumeArea();
+
+    collectShortcuts(commands_);
+    for (const ViewerCommand command : ViewerCommands(std::exchange(commands_, {}))) execute(command);
+    if (const auto choice = fileDialog_.draw()) handleFileChoice(*choice);
+    errorDialog_.draw();
+    switch (quitDialog_.draw(document_.sceneFile.has_value())) {
+        case QuitDialog::Answer::SaveAndQuit:
+            execute(ViewerCommand::Save);
+            quit_ = !errorDialog_.visible();
+            break;
+        case QuitDialog::Answer::Quit:
+            quit_ = true;
+            break;
+        default:
+            break;
+    }
+    updateTitle();
+    time_.advance(seconds, int(document_.series->size()));
+}
+
+void ViewerApp::drawVolumeArea() {
+    const Bounds bounds = document_.series->worldBounds();
+    if (const auto pixel = volumeView_.handleInput(layout_.volume, framebufferScale(), document_.scene.camera, bounds,
+                                                   frameSize(), anchors_)) {
+        pick_ = pickFirstVisibleSample(*document_.series, document_.scene, *pixel, frameSize(),
+                                       renderer_.stepLengthFor(document_.scene));
+        pickNote_ = pick_ ? nullptr : "nothing visible under the pointer to profile";
+        pickIsNew_ = pick_.has_value();
+    }
+    VolumeOverlay overlay;
+    overlay.progress = frame_.progress();
+    overlay.refined = frame_.refined();
+    overlayShowedRefined_ = overlay.refined;
+    overlay.previewDivisor = frame_.previewDivisor();
+    overlay.framesPerSecond = statistics_.framesPerSecond();
+    overlay.refinementSeconds = frame_.lastRefinementSeconds();
+    if (pick_) overlay.pickedPoint = pick_->world;
+    overlay.note = time_.solo ? "showing one time-step alone (not saved in the scene)" : pickNote_;
+    volumeView_.drawOverlay(layout_.volume, overlay, document_.scene.camera, bounds, frameSize());
+}
+
+void ViewerApp::presentVolume(bool interacting) {
+    const FrameWork work = updateFrame(interacting);
+    const glm::ivec2 framebuffer = window_.framebufferSize();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, framebuffer.x, framebuffer.y);
+    glDisable(GL_SCISSOR_TEST);
+    glClearColor(0.06f, 0.06f, 0.07f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    frame_.present(frameOffset());
+    takeScreenshotIfDue(false);
+    platform_.render();
+    takeScreenshotIfDue(true);
+    window_.swapBuffers();
+    statistics_.addFrame(std::chrono::duration<double>(Clock::now() - lastFrame_).count(), work == FrameWork::Preview,
+                         work == FrameWork::Refinement);
+}
+
+FrameWork ViewerApp::updateFrame(bool interacting) {
+    try {
+        const FrameWork work = frame_.update(renderer_, document_.scene, document_.series->worldBounds(), frameSize(),
+                                             time_.soloTimeStep(), interacting);
+        if (work == FrameWork::Preview) lastRenderable_ = document_.scene;
+        return work;
+    } catch (const InputError& error) {
+        if (document_.scene == lastRenderable_) throw;  // nothing better to go back to
+        errorDialog_.show(error.what());
+        document_.scene = lastRenderable_;
+        frame_.invalidate();
+        return FrameWork::None;
+    }
+}
+
+void ViewerApp::requestScreenshot(const std::filesystem::path& path, bool wholeWindow) {
+    screenshotPath_ = path;
+    screenshotOfWindow_ = wholeWindow;
+}
+
+void ViewerApp::takeScreenshotIfDue(bool wholeWindow) {
+    if (!screenshotPath_ || !frame_.refined() || screenshotOfWindow_ != wholeWindow) return;
+    if (wholeWindow && !overlayShowedRefined_) return;
+    const std::filesystem::path path = *std::exchange(screenshotPath_, std::nullopt);
+    const glm::ivec2 offset = wholeWindow ? glm::ivec2(0) : frameOffset();
+    const glm::ivec2 size = wholeWindow ? window_.framebufferSize() : frameSize();
+    try {
+        writeImage(captureWindowRegion(offset, size), path);
+        std::cout << "wrote screenshot " << path.string() << " (" << size.x << "x" << size.y << ")" << std::endl;
+    } catch (const InputError& error) {
+        if (script_) throw;
+        errorDialog_.show(error.what());
+    }
+}
+
+void ViewerApp::stopMeasurement() {
+    std::cout << FrameStatistics::describe(statistics_.stop()) << " at " << frameSize().x << "x" << frameSize().y
+              << " volume pixels, previews at 1/" << frame_.previewDivisor() << ", tiles 1/" << frame_.tileDivisor()
+              << " of each side" << std::endl;
+}
+
+std::optional<glm::vec2> ViewerApp::resolveAnchor(const std::string& name,
+                                                  const std::optional<glm::dvec2>& parameters) const {
+    return anchors_.resolve(name, parameters);
+}
+
+glm::vec2 ViewerApp::framebufferScale() const {
+    const glm::ivec2 window = window_.windowSize();
+    const glm::ivec2 framebuffer = window_.framebufferSize();
+    if (window.x <= 0 || window.y <= 0) return glm::vec2(1.0f);
+    return glm::vec2(framebuffer) / glm::vec2(window);
+}
+
+glm::ivec2 ViewerApp::frameSize() const {
+    const glm::vec2 scale = framebufferScale();
+    const glm::ivec2 min = glm::ivec2(glm::round(layout_.volume.min * scale));
+    const glm::ivec2 max = glm::ivec2(glm::round(layout_.volume.max * scale));
+    return glm::max(max - min, glm::ivec2(0));
+}
+
+glm::ivec2 ViewerApp::frameOffset() const {
+    const glm::vec2 scale = framebufferScale();
+    const glm::ivec2 min = glm::ivec2(glm::round(layout_.volume.min * scale));
+    return {min.x, window_.framebufferSize().y - min.y - frameSize().y};
+}
+
+}  // namespace tstyles::viewer

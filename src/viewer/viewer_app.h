@@ -1,0 +1,117 @@
+// The viewer application: owns the window, the renderer, the open document and the panels, runs
+// the frame loop, and carries out the commands the UI and scripts ask for.
+#pragma once
+
+#include <chrono>
+#include <filesystem>
+#include <optional>
+
+#include "editor_panels.h"
+#include "frame_statistics.h"
+#include "imgui_platform.h"
+#include "progressive_frame.h"
+#include "scene_history.h"
+#include "script_player.h"
+#include "time_control.h"
+#include "tstyles/render/renderer.h"
+#include "ui_anchors.h"
+#include "viewer.h"
+#include "viewer_commands.h"
+#include "viewer_dialogs.h"
+#include "viewer_document.h"
+#include "viewer_layout.h"
+#include "viewer_window.h"
+#include "volume_picking.h"
+#include "volume_view.h"
+
+namespace tstyles::viewer {
+
+class ViewerApp final : public ScriptHost {
+public:
+    explicit ViewerApp(const ViewerOptions& options);
+    int run();
+
+    // ScriptHost: what test scripts may ask of the application.
+    std::optional<glm::vec2> resolveAnchor(const std::string& name,
+                                           const std::optional<glm::dvec2>& parameters) const override;
+    std::string anchorNames() const override { return anchors_.currentNames(); }
+    bool viewRefined() const override { return frame_.refined(); }
+    void openFromScript(const std::filesystem::path& path) override { openPath(path); }
+    void saveSceneFromScript(const std::filesystem::path& path) override { saveTo(path); }
+    void requestScreenshot(const std::filesystem::path& path, bool wholeWindow) override;
+    bool screenshotPending() const override { return screenshotPath_.has_value(); }
+    void startMeasurement(const std::string& label) override { statistics_.start(label); }
+    void stopMeasurement() override;
+    void quitFromScript() override { quit_ = true; }
+
+private:
+    using Clock = std::chrono::steady_clock;
+
+    void frame();
+    void buildUi(double seconds);
+    void drawVolumeArea();
+    void presentVolume(bool interacting);
+    // Brings the progressive frame up to date; an InputError from the renderer shows the error
+    // dialog and restores the last scene it accepted.
+    FrameWork updateFrame(bool interacting);
+    // Called after the volume is drawn (wholeWindow false) and after the panels (true).
+    void takeScreenshotIfDue(bool wholeWindow);
+
+    // Quits, or asks first when there are unsaved changes (never while a script runs).
+    void requestQuit();
+    void updateTitle();
+
+    void execute(ViewerCommand command);
+    void executeEdit(ViewerCommand command);
+    void handleFileChoice(const FileChoice& choice);
+    // Opens a scene or dataset; a failure shows the error dialog and keeps the current scene.
+    void openPath(const std::filesystem::path& path);
+    void adopt(ViewerDocument next);
+    // Writes the scene as shown (image size = the volume area). Throws InputError.
+    void saveTo(const std::filesystem::path& path);
+    std::filesystem::path dialogFolder() const;
+
+    // The volume area in framebuffer pixels: its size, and its offset from the bottom left.
+    glm::ivec2 frameSize() const;
+    glm::ivec2 frameOffset() const;
+    glm::vec2 framebufferScale() const;
+
+    ViewerOptions options_;
+    // Opened and read first: a bad input or script fails before any window appears.
+    ViewerDocument document_;
+    std::optional<ScriptPlayer> script_;
+    ViewerWindow window_;
+    ImGuiPlatform platform_;
+    Renderer renderer_;
+    SceneHistory history_;
+    ProgressiveFrame frame_;
+    EditorPanels editors_;
+    VolumeView volumeView_;
+    TimeControl time_;
+    std::optional<Pick> pick_;
+    UiAnchors anchors_;
+    FileDialog fileDialog_;
+    ErrorDialog errorDialog_;
+    QuitDialog quitDialog_;
+    FrameStatistics statistics_;
+    ViewerLayout layout_;
+    ViewerCommands commands_;
+    std::optional<std::filesystem::path> screenshotPath_;
+    bool screenshotOfWindow_ = false;
+    bool quit_ = false;
+    int settleFrames_ = 0;
+    Clock::time_point lastFrame_ = Clock::now();
+    const char* pickNote_ = nullptr;
+    // What the overlay (drawn before this frame's rendering) said: a window screenshot waits until
+    // the overlay too shows the finished frame.
+    bool overlayShowedRefined_ = false;
+    bool pickIsNew_ = false;
+    // The last scene the renderer accepted: an edit it refuses (a style image that cannot be read)
+    // is taken back to this.
+    Scene lastRenderable_;
+    // The scene as opened or last saved: anything else is an unsaved change.
+    Scene savedScene_;
+    std::string title_;
+};
+
+}  // namespace tstyles::viewer

@@ -1,0 +1,183 @@
+// Carrying out the viewer commands: files (open, save, screenshot), undo/redo, node edits, camera.
+#include <iostream>
+
+#include "camera_controller.h"
+#include "tstyles/core/errors.h"
+#include "tstyles/scene/scene_file.h"
+#include "viewer_app.h"
+
+namespace tstyles::viewer {
+
+void ViewerApp::execute(ViewerCommand command) {
+    Scene& scene = document_.scene;
+    switch (command) {
+        case ViewerCommand::Open:
+            fileDialog_.open(FilePurpose::Open, dialogFolder(), "");
+            break;
+        case ViewerCommand::Save:
+            if (!document_.sceneFile) {
+                execute(ViewerCommand::SaveAs);
+                break;
+            }
+            try {
+                saveTo(*document_.sceneFile);
+            } catch (const InputError& error) {
+                errorDialog_.show(error.what());
+            }
+            break;
+        case ViewerCommand::SaveAs:
+            fileDialog_.open(FilePurpose::SaveScene, dialogFolder(),
+                             document_.sceneFile ? document_.sceneFile->filename().string() : "scene.json");
+            break;
+        case ViewerCommand::Screenshot:
+            fileDialog_.open(FilePurpose::SaveScreenshot, std::filesystem::current_path(), "tstyles-view.png");
+            break;
+        case ViewerCommand::Quit:
+            requestQuit();
+            break;
+        case ViewerCommand::Undo:
+        case ViewerCommand::Redo:
+            // A change still being dragged is committed first, so undo takes back exactly it.
+            history_.record(scene);
+            if (command == ViewerCommand::Undo ? history_.canUndo() : history_.canRedo()) {
+                scene = command == ViewerCommand::Undo ? history_.undo() : history_.redo();
+                editors_.clearSelections();
+            }
+            break;
+        case ViewerCommand::ResetCamera:
+            scene.camera = document_.openedCamera;
+            break;
+        case ViewerCommand::FitCamera:
+            scene.camera = fitCameraToData(scene.camera);
+            break;
+        case ViewerCommand::TogglePlay:
+            time_.togglePlay();
+            break;
+        default:
+            executeEdit(command);
+    }
+}
+
+void ViewerApp::executeEdit(ViewerCommand command) {
+    CurveEditor& editor = editors_.focused();
+    TransferFunction1D& curve = editors_.focusedCurve(document_.scene);
+    switch (command) {
+        case ViewerCommand::Group:
+            editor.groupSelection(curve);
+            break;
+        case ViewerCommand::Ungroup:
+            editor.ungroupSelection(curve);
+            break;
+        case ViewerCommand::DeleteNodes:
+            editor.deleteSelection(curve);
+            break;
+        case ViewerCommand::SelectAll:
+            editor.selectAll(curve);
+            break;
+        case ViewerCommand::ClearSelection:
+            editor.clearSelection();
+            break;
+        case ViewerCommand::NudgeEarlier:
+        case ViewerCommand::NudgeLater:
+            editor.nudgeSelection(curve, command == ViewerCommand::NudgeEarlier ? -1 : 1,
+                                  editors_.focusedAxis(*document_.series));
+            break;
+        default:
+            break;
+    }
+}
+
+void ViewerApp::handleFileChoice(const FileChoice& choice) {
+    switch (choice.purpose) {
+        case FilePurpose::Open:
+            openPath(choice.path);
+            break;
+        case FilePurpose::SaveScene:
+            try {
+                saveTo(choice.path);
+            } catch (const InputError& error) {
+                errorDialog_.show(error.what());
+            }
+            break;
+        case FilePurpose::SaveScreenshot:
+            requestScreenshot(choice.path, false);
+            break;
+    }
+}
+
+void ViewerApp::openPath(const std::filesystem::path& path) {
+    try {
+        ViewerDocument previous = document_;
+        adopt(openDocument(path, &document_));
+        try {
+            // Draw it now: what only the renderer can refuse (an unreadable style image) must
+            // send us back to the previous document, not to half of each.
+            frame_.update(renderer_, document_.scene, document_.series->worldBounds(), frameSize(), std::nullopt, false);
+        } catch (...) {
+            adopt(std::move(previous));
+            throw;
+        }
+        std::cout << "opened " << path.string() << std::endl;
+    } catch (const InputError& error) {
+        errorDialog_.show(error.what());
+    } catch (const std::exception& error) {
+        errorDialog_.show(path.string() + ": cannot be shown: " + error.what());
+    }
+}
+
+void ViewerApp::adopt(ViewerDocument next) {
+    if (next.series != document_.series) {
+        try {
+            renderer_.setSeries(*next.series);
+        } catch (...) {
+            // The upload failed half-way (too big for the GPU, say): put the current series back.
+            renderer_.setSeries(*document_.series);
+            throw;
+        }
+    }
+    document_ = std::move(next);
+    history_.reset(document_.scene);
+    lastRenderable_ = document_.scene;
+    savedScene_ = document_.scene;
+    editors_.clearSelections();
+    frame_.invalidate();
+    pick_.reset();
+    pickNote_ = nullptr;
+    time_.solo = false;
+    time_.playing = false;
+    time_.step = 0;
+}
+
+void ViewerApp::saveTo(const std::filesystem::path& path) {
+    // The file records the volume area's size, so `tstyles render` of it gives the window's image.
+    Scene saved = document_.scene;
+    saved.width = std::max(frameSize().x, 1);
+    saved.height = std::max(frameSize().y, 1);
+    saveScene(saved, path);
+    document_.sceneFile = std::filesystem::absolute(path).lexically_normal();
+    savedScene_ = document_.scene;
+    std::cout << "saved scene " << path.string() << " (" << saved.width << "x" << saved.height << ")" << std::endl;
+}
+
+void ViewerApp::requestQuit() {
+    if (script_ || document_.scene == savedScene_)
+        quit_ = true;
+    else
+        quitDialog_.ask();
+}
+
+void ViewerApp::updateTitle() {
+    const std::string name = document_.sceneFile ? document_.sceneFile->filename().string()
+                                                 : document_.series->name + " (no scene file)";
+    const std::string title = "Temporal Styles - " + name + (document_.scene == savedScene_ ? "" : " *");
+    if (title == title_) return;
+    title_ = title;
+    window_.setTitle(title);
+}
+
+std::filesystem::path ViewerApp::dialogFolder() const {
+    if (document_.sceneFile) return document_.sceneFile->parent_path();
+    return std::filesystem::current_path();
+}
+
+}  // namespace tstyles::viewer

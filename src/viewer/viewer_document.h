@@ -1,0 +1,39 @@
+// What the viewer has open: the scene being edited, the series it shows, and where they came from.
+// Opening builds a complete new document or throws, so a bad file never half-replaces a good one.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "density_histogram.h"
+#include "tstyles/data/series.h"
+#include "tstyles/scene/scene.h"
+
+namespace tstyles::viewer {
+
+struct ViewerDocument {
+    Scene scene;
+    std::shared_ptr<const Series> series;
+    std::shared_ptr<const DensityHistogram> histogram;
+    // The scene file it was opened from or last saved to; none for a dataset opened on its own.
+    std::optional<std::filesystem::path> sceneFile;
+    // The camera as opened: what "reset camera" returns to.
+    Camera openedCamera;
+};
+
+enum class ViewerInputKind { Scene, Dataset };
+
+// A folder, or a JSON file that is a series manifest, is a dataset; any other file a scene.
+ViewerInputKind classifyViewerInput(const std::filesystem::path& path);
+
+// Opens a scene file or a dataset (with a default scene). A series already held by `current` is
+// reused rather than read again. Throws InputError naming the file and the problem.
+ViewerDocument openDocument(const std::filesystem::path& path, const ViewerDocument* current);
+
+// What `tstyles view` opens without an argument: the bundled Figure 1 scene, else the bundled
+// super-ellipsoid dataset. Throws InputError if the data folder has neither.
+std::filesystem::path defaultViewerInput(const std::filesystem::path& dataDirectory);
+
+}  // namespace tstyles::viewer

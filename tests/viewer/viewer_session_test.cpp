@@ -1,0 +1,226 @@
+// End-to-end tests of `tstyles view`: the real executable in a real window under Xvfb, driven by
+// the scripts in tests/viewer/scripts (input events through the viewer's own input path), checked
+// against the scenes it saves and against `tstyles render` of those scenes.
+//
+// Window vs. headless tolerance: both images come from the same shaders on the same device at the
+// same size and camera, but the window's frame is assembled from tiles rendered through cropped
+// projections (ray origins differ from the one-pass frame in the last bits of a float) and is
+// turned into 8 bits by OpenGL when it is copied into the window, while `tstyles render` rounds
+// with OpenImageIO. Either may move a channel by one level. We allow at most 2 levels anywhere,
+// a mean below 0.05 levels, and at most 0.1 % of pixels off by more than one level; on llvmpipe
+// we measured max 1 level and a mean of about 0.001 levels.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "render/image_comparison.h"
+#include "tstyles/image/image_io.h"
+#include "tstyles/render/style_library.h"
+#include "tstyles/scene/scene_file.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using tstyles::Image;
+using tstyles::Scene;
+
+constexpr int kMaxLevels = 2;
+constexpr double kMaxMeanLevels = 0.05;
+constexpr double kMaxFractionAboveOneLevel = 0.001;
+
+std::optional<fs::path> findProgram(const std::string& name) {
+    const char* path = std::getenv("PATH");
+    std::stringstream folders(path != nullptr ? path : "");
+    std::string folder;
+    while (std::getline(folders, folder, ':')) {
+        const fs::path candidate = fs::path(folder) / name;
+        std::error_code error;
+        if (!folder.empty() && fs::is_regular_file(candidate, error)) return candidate;
+    }
+    return std::nullopt;
+}
+
+std::string quoted(const fs::path& path) {
+    std::string text = "'";
+    for (const char c : path.string()) text += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return text + "'";
+}
+
+struct CommandResult {
+    int exitCode = -1;
+    std::string output;
+};
+
+CommandResult runCommand(const std::string& command) {
+    CommandResult result;
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    if (pipe == nullptr) return result;
+    std::array<char, 4096> buffer{};
+    while (std::fgets(buffer.data(), int(buffer.size()), pipe) != nullptr) result.output += buffer.data();
+    const int status = pclose(pipe);
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+class ViewerSession : public ::testing::Test {
+protected:
+    void SetUp() override {
+        xvfbRun_ = findProgram("xvfb-run");
+        if (!xvfbRun_)
+            GTEST_SKIP() << "xvfb-run is not on PATH, so the viewer cannot open a window here; install the "
+                            "xvfb package (CI does) to run the viewer tests";
+        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+        out_ = fs::path(TSTYLES_TEST_OUTPUT_DIR) / "viewer" / test->name();
+        fs::remove_all(out_);
+        fs::create_directories(out_);
+    }
+
+    // Runs the viewer on `input` with a script from tests/viewer/scripts in a 640x480 window.
+    CommandResult view(const fs::path& input, const std::string& script) const {
+        const fs::path scriptFile = fs::path(TSTYLES_SOURCE_DIR) / "tests/viewer/scripts" / script;
+        const std::string command = "OUT=" + quoted(out_) + " timeout 100 " + quoted(*xvfbRun_) +
+                                    " -a -s '-screen 0 1024x768x24' " + quoted(TSTYLES_EXECUTABLE) + " view " +
+                                    quoted(input) + " --size 640x480 --no-vsync --script " + quoted(scriptFile);
+        CommandResult result = runCommand(command);
+        fs::path log = out_ / "viewer.log";
+        std::ofstream(log) << command << "\n" << result.output;
+        return result;
+    }
+
+    Image renderHeadless(const fs::path& scene, const fs::path& image) const {
+        const CommandResult result = runCommand(quoted(TSTYLES_EXECUTABLE) + " render " + quoted(scene) + " -o " +
+                                                quoted(image));
+        EXPECT_EQ(result.exitCode, 0) << result.output;
+        return tstyles::readImage(image);
+    }
+
+    // The window's volume area against `tstyles render` of the scene it saved.
+    void expectWindowMatchesHeadless(const fs::path& scene, const fs::path& windowImage) const {
+        const Image window = tstyles::readImage(windowImage);
+        const Image headless = renderHeadless(scene, out_ / "headless.png");
+        ASSERT_EQ(window.width, headless.width);
+        ASSERT_EQ(window.height, headless.height);
+        const auto difference = tstyles::testing::compareImages(window, headless, 1);
+        const bool close = difference.maxDelta <= kMaxLevels && difference.meanDelta <= kMaxMeanLevels &&
+                           difference.failingFraction <= kMaxFractionAboveOneLevel;
+        if (!close) tstyles::writeImage(tstyles::testing::differenceImage(window, headless, 16.0f), out_ / "difference.png");
+        EXPECT_TRUE(close) << tstyles::testing::describe(difference) << " (window " << windowImage << ", headless "
+                           << (out_ / "headless.png") << ", difference x16 " << (out_ / "difference.png") << ")";
+    }
+
+    static fs::path bundledScene(const std::string& name) {
+        return fs::path(TSTYLES_SOURCE_DIR) / "data/scenes" / name;
+    }
+
+    std::optional<fs::path> xvfbRun_;
+    fs::path out_;
+};
+
+TEST_F(ViewerSession, GroupDragMovesTheFocusToTimeStepSix) {
+    const fs::path opened = bundledScene("figure1-focus-step3.json");
+    const CommandResult run = view(opened, "group_drag.txt");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+
+    const Scene before = tstyles::loadScene(opened);
+    const Scene after = tstyles::loadScene(out_ / "focus-step6.json");
+    // The focus is the opaque time-step: 3 before, 6 after.
+    EXPECT_EQ(before.indexTstf.atStep(3).opacity, 1.0);
+    EXPECT_EQ(after.indexTstf.atStep(6).opacity, 1.0);
+    EXPECT_LT(after.indexTstf.atStep(3).opacity, 0.1);
+    // Exactly the focus nodes (time-steps 2 to 4) moved, by three whole time-steps, as one group;
+    // everything else is as it was.
+    Scene expected = before;
+    for (auto& node : expected.indexTstf.curve.opacity)
+        if (node.at >= 2.0 && node.at <= 4.0) node = {node.at + 3.0, node.opacity, 1};
+    for (auto& node : expected.indexTstf.curve.color)
+        if (node.at >= 2.0 && node.at <= 4.0) {
+            node.at += 3.0;
+            node.group = 1;
+        }
+    expected.indexTstf.curve.sortNodes();
+    EXPECT_EQ(after.indexTstf, expected.indexTstf);
+    EXPECT_EQ(after.stf, before.stf);
+    EXPECT_EQ(after.camera, before.camera);
+    if (fs::exists(bundledScene("figure1-focus-step6.json"))) {
+        EXPECT_EQ(after.indexTstf, tstyles::loadScene(bundledScene("figure1-focus-step6.json")).indexTstf)
+            << "the bundled right half of Figure 1 differs from the group moved in the window";
+    }
+
+    expectWindowMatchesHeadless(out_ / "focus-step6.json", out_ / "window.png");
+}
+
+TEST_F(ViewerSession, OrbitDragChangesTheCameraAndRendersHeadlessAlike) {
+    const CommandResult run = view(bundledScene("figure1-focus-step3.json"), "orbit_drag.txt");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+
+    const Scene before = tstyles::loadScene(out_ / "before.json");
+    const Scene after = tstyles::loadScene(out_ / "after.json");
+    EXPECT_NE(after.camera, before.camera);
+    const auto& orbitBefore = std::get<tstyles::OrbitCamera>(before.camera.pose);
+    const auto& orbitAfter = std::get<tstyles::OrbitCamera>(after.camera.pose);
+    // 30 % of the view's width to the right turns the data right (azimuth down), 10 % of its height
+    // up lowers the eye; 0.3 degrees per pixel.
+    const double dx = 0.3 * after.width;
+    const double dy = -0.1 * after.height;
+    EXPECT_NEAR(orbitAfter.azimuthDeg - orbitBefore.azimuthDeg, -0.3 * dx, 0.5);
+    EXPECT_NEAR(orbitAfter.elevationDeg - orbitBefore.elevationDeg, 0.3 * dy, 0.5);
+    EXPECT_EQ(after.indexTstf, before.indexTstf);
+
+    expectWindowMatchesHeadless(out_ / "after.json", out_ / "window.png");
+}
+
+// Lit-sphere styles read the image at a rate set by the size of a pixel: the tiles the window
+// refines in must count their pixels as the frame's, or styled data would differ from headless.
+TEST_F(ViewerSession, AStyledSceneRefinesToTheOnePassRender) {
+    const std::vector<std::string> styles = tstyles::builtInStyleNames();
+    if (styles.size() < 2) GTEST_SKIP() << "fewer than two built-in styles in the bundled data/styles";
+    Scene scene = tstyles::loadScene(bundledScene("figure1-focus-step3.json"));
+    for (std::size_t i = 0; i < scene.indexTstf.curve.color.size(); ++i)
+        scene.indexTstf.curve.color[i].style = styles[i % styles.size()];
+    tstyles::saveScene(scene, out_ / "styled.json");
+    const CommandResult run = view(out_ / "styled.json", "refine_and_save.txt");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_EQ(tstyles::loadScene(out_ / "shown.json").indexTstf, scene.indexTstf);
+    expectWindowMatchesHeadless(out_ / "shown.json", out_ / "window.png");
+}
+
+TEST_F(ViewerSession, UndoRestoresThePreviousSceneExactly) {
+    const CommandResult run = view(bundledScene("figure1-focus-step3.json"), "undo_redo.txt");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    auto scene = [&](const char* name) { return tstyles::loadScene(out_ / name); };
+
+    const Scene opened = scene("0-opened.json");
+    const Scene groupMoved = scene("1-group-moved.json");
+    const Scene stfEdited = scene("2-stf-edited.json");
+    const Scene orbited = scene("3-orbited.json");
+    // Each edit changed what it should and nothing else.
+    EXPECT_NE(groupMoved.indexTstf, opened.indexTstf);
+    EXPECT_EQ(groupMoved.indexTstf.atStep(5).opacity, 1.0);
+    EXPECT_EQ(groupMoved.stf, opened.stf);
+    EXPECT_NE(stfEdited.stf, groupMoved.stf);
+    EXPECT_EQ(stfEdited.indexTstf, groupMoved.indexTstf);
+    EXPECT_NE(orbited.camera, stfEdited.camera);
+
+    EXPECT_EQ(scene("4-undo-orbit.json"), stfEdited);
+    EXPECT_EQ(scene("5-undo-stf.json"), groupMoved);
+    EXPECT_EQ(scene("6-redo-stf.json"), stfEdited);
+}
+
+TEST_F(ViewerSession, BadScenesShowAnErrorAndKeepTheOpenScene) {
+    std::ofstream(out_ / "broken.json") << "{\"dataset\": \"../superellipsoid/series.json\", \"image\": {\"width\": \"wide\"}}";
+    Scene missingStyle = tstyles::loadScene(bundledScene("figure1-focus-step3.json"));
+    missingStyle.indexTstf.curve.color.front().style = "no-such-folder/missing-style.png";
+    tstyles::saveScene(missingStyle, out_ / "missing-style.json");
+    const CommandResult run = view(bundledScene("figure1-focus-step3.json"), "bad_scene.txt");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("image.width: expected a number"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("missing-style.png"), std::string::npos) << run.output;
+    EXPECT_EQ(tstyles::loadScene(out_ / "after.json"), tstyles::loadScene(out_ / "before.json"));
+}
+
+}  // namespace
