@@ -26,6 +26,7 @@ struct BenchOptions {
     std::optional<std::filesystem::path> json;
     std::vector<std::string> datasets{"superellipsoid", "superellipsoid-aligned"};
     bool baseline = false;
+    bool styled = false;
     GlOptions gl;
 };
 
@@ -47,14 +48,16 @@ struct BenchResult {
     std::size_t frameTextureBytes = 0;
 };
 
-// Each compositor is measured with the figure scene made for it.
-std::string sceneFor(TemporalCompositor compositor) {
+// Each compositor is measured with the Figure 4 scene made for it, flat or with lit-sphere styles
+// (styles add gradients: six more fetches per visible sample).
+std::string sceneFor(TemporalCompositor compositor, bool styled) {
+    const std::string prefix = styled ? "figure4-styled-" : "figure4-";
     switch (compositor) {
-        case TemporalCompositor::MaxIntensityProjection: return "figure4-temporal-mip";
-        case TemporalCompositor::Average: return "figure4-temporal-average";
-        case TemporalCompositor::MaxDensityChange: return "figure4-max-density-change";
+        case TemporalCompositor::MaxIntensityProjection: return prefix + "temporal-mip";
+        case TemporalCompositor::Average: return prefix + "temporal-average";
+        case TemporalCompositor::MaxDensityChange: return prefix + "max-density-change";
     }
-    return "figure4-temporal-mip";
+    return prefix + "temporal-mip";
 }
 
 double median(std::vector<double> values) {
@@ -113,6 +116,8 @@ std::string mebibytes(std::size_t bytes) {
 
 void printTable(const std::vector<BenchResult>& results, const std::string& device) {
     std::cout << "device: " << device << "\n";
+    const bool styled = results.front().benchCase.scene.find("styled") != std::string::npos;
+    std::cout << "scenes: data/scenes/figure4-" << (styled ? "styled-" : "") << "*.json\n";
     std::cout << std::left << std::setw(24) << "dataset" << std::setw(21) << "compositor" << std::right
               << std::setw(6) << "n" << std::setw(7) << "size" << std::setw(11) << "median ms" << std::setw(9)
               << "max ms" << std::setw(10) << "rays" << std::setw(13) << "samples" << std::setw(13)
@@ -158,7 +163,7 @@ int runBench(const BenchOptions& options) {
         for (auto compositor : {TemporalCompositor::MaxIntensityProjection, TemporalCompositor::Average,
                                 TemporalCompositor::MaxDensityChange})
             for (int size : options.sizes) {
-                results.push_back(runCase(renderer, series, {dataset, sceneFor(compositor), compositor, size}, options));
+                results.push_back(runCase(renderer, series, {dataset, sceneFor(compositor, options.styled), compositor, size}, options));
                 std::cerr << "." << std::flush;
             }
     }
@@ -184,6 +189,7 @@ Command addBenchCommand(CLI::App& app) {
     command->add_flag("--baseline", options->baseline,
                       "Also time the naive raycaster (every time-step at every sample, no skipping) in the same run "
                       "and print the speed-up");
+    command->add_flag("--styled", options->styled, "Measure the Figure 4 scenes with lit-sphere styles");
     addGlOptions(*command, options->gl);
     return {command, [options] { return runBench(*options); }};
 }

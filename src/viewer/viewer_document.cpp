@@ -59,12 +59,12 @@ ViewerDocument openDocument(const std::filesystem::path& path, const ViewerDocum
 }
 
 std::filesystem::path defaultViewerInput(const std::filesystem::path& dataDirectory) {
-    const std::filesystem::path scene = dataDirectory / "scenes" / "figure1-focus-step3.json";
+    const std::filesystem::path scene = dataDirectory / "scenes" / "figure1-styled-focus-step3.json";
     if (std::filesystem::exists(scene)) return scene;
     const std::filesystem::path dataset = dataDirectory / "superellipsoid" / "series.json";
     if (std::filesystem::exists(dataset)) return dataset;
     throwInputError(dataDirectory, "",
-                    "no bundled scene (scenes/figure1-focus-step3.json) or dataset (superellipsoid/series.json) "
+                    "no bundled scene (scenes/figure1-styled-focus-step3.json) or dataset (superellipsoid/series.json) "
                     "here; build the project to generate it, set TSTYLES_DATA_DIR, or pass a scene or dataset");
 }
 
