@@ -18,15 +18,7 @@ double millisecondsSince(Clock::time_point start) {
 }  // namespace
 
 void ProgressiveFrame::ensureCanvas(glm::ivec2 size) {
-    if (size == size_ && color_) return;
-    color_.emplace(Texture::create(GL_TEXTURE_2D));
-    glTextureStorage2D(color_->id(), 1, GL_RGBA32F, size.x, size.y);
-    color_->setFilter(GL_NEAREST, GL_NEAREST);
-    framebuffer_.emplace(Framebuffer::create());
-    framebuffer_->attachTexture(GL_COLOR_ATTACHMENT0, *color_);
-    const std::array<GLenum, 1> drawBuffers{GL_COLOR_ATTACHMENT0};
-    framebuffer_->setDrawBuffers(drawBuffers);
-    framebuffer_->requireComplete("viewer canvas");
+    canvas_.resize(size);
     size_ = size;
 }
 
@@ -46,7 +38,7 @@ double ProgressiveFrame::renderWindow(Renderer& renderer, const Scene& scene, co
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_BLEND);
     renderer.draw(scene, cropped, options);
-    glBlitNamedFramebuffer(renderer.target().framebufferId(), framebuffer_->id(), 0, 0, renderSize.x,
+    glBlitNamedFramebuffer(renderer.target().framebufferId(), canvas_.framebufferId(), 0, 0, renderSize.x,
                            renderSize.y, window.offset.x, window.offset.y, window.offset.x + window.size.x,
                            window.offset.y + window.size.y, GL_COLOR_BUFFER_BIT,
                            renderSize == window.size ? GL_NEAREST : GL_LINEAR);
@@ -97,11 +89,11 @@ double ProgressiveFrame::progress() const {
 }
 
 void ProgressiveFrame::present(glm::ivec2 offset) const {
-    if (!framebuffer_) return;
+    if (size_.x == 0) return;
     GLint drawFramebuffer = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer);
     glDisable(GL_SCISSOR_TEST);
-    glBlitNamedFramebuffer(framebuffer_->id(), GLuint(drawFramebuffer), 0, 0, size_.x, size_.y, offset.x, offset.y,
+    glBlitNamedFramebuffer(canvas_.framebufferId(), GLuint(drawFramebuffer), 0, 0, size_.x, size_.y, offset.x, offset.y,
                            offset.x + size_.x, offset.y + size_.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 

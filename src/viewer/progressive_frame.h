@@ -13,6 +13,7 @@
 
 #include "tile_plan.h"
 #include "tstyles/gl/objects.h"
+#include "tstyles/render/render_target.h"
 #include "tstyles/render/renderer.h"
 #include "tstyles/scene/scene.h"
 
@@ -73,8 +74,7 @@ private:
 
     std::optional<Request> drawn_;
     std::optional<View> view_;
-    std::optional<Texture> color_;
-    std::optional<Framebuffer> framebuffer_;
+    RenderTarget canvas_;  // the assembled frame, tile by tile
     glm::ivec2 size_{0};
     std::vector<PixelWindow> pending_;
     std::size_t tileCount_ = 0;
