@@ -1,9 +1,13 @@
 // Canvas layout, hit tests and drawing for the transfer-function editors.
 #include "curve_canvas.h"
 
+#include "style_thumbnails.h"
+
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <optional>
 
 namespace tstyles::viewer {
 namespace {
@@ -118,7 +122,7 @@ void drawOpacityNodes(ImDrawList& drawList, const CurveCanvas& canvas, const Tra
 }
 
 void drawColorStrip(ImDrawList& drawList, const CurveCanvas& canvas, const TransferFunction1D& curve,
-                    const NodeSelection& selection) {
+                    const NodeSelection& selection, StyleThumbnails* thumbnails) {
     const ScreenRect& strip = canvas.colorStrip;
     constexpr float column = 2.0f;
     for (float x = strip.min.x; x < strip.max.x; x += column)
@@ -138,10 +142,19 @@ void drawColorStrip(ImDrawList& drawList, const CurveCanvas& canvas, const Trans
             drawList.AddTriangleFilled({point.x - 4.0f, strip.min.y - 5.0f}, {point.x + 4.0f, strip.min.y - 5.0f},
                                        {point.x, strip.min.y}, outline == kNodeOutline ? kNodeFill : kSelectedFill);
         } else {
-            // A styled node is a small lit sphere: a disc with a highlight.
-            drawList.AddCircleFilled(toImVec(point), kColorNodeHalfWidth + 1.0f, colorOf(node.color, 1.0));
-            drawList.AddCircleFilled({point.x - 2.0f, point.y - 2.0f}, 2.0f, IM_COL32(255, 255, 255, 200));
-            drawList.AddCircle(toImVec(point), kColorNodeHalfWidth + 1.0f, outline, 0, selected ? 2.5f : 1.5f);
+            // A styled node is its lit sphere (tinted); a plain disc with a highlight if the style
+            // cannot be read.
+            const float radius = kColorNodeHalfWidth + 3.0f;
+            const std::optional<GLuint> texture = thumbnails ? thumbnails->textureOf(node.style) : std::nullopt;
+            if (texture) {
+                drawList.AddImageRounded(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(*texture)),
+                                         {point.x - radius, point.y - radius}, {point.x + radius, point.y + radius},
+                                         {0, 0}, {1, 1}, colorOf(node.color, 1.0), radius);
+            } else {
+                drawList.AddCircleFilled(toImVec(point), radius, colorOf(node.color, 1.0));
+                drawList.AddCircleFilled({point.x - 2.0f, point.y - 2.0f}, 2.0f, IM_COL32(255, 255, 255, 200));
+            }
+            drawList.AddCircle(toImVec(point), radius, outline, 0, selected ? 2.5f : 1.5f);
         }
         if (node.group > 0) {
             drawList.AddCircle(toImVec(point), kColorNodeHalfWidth + 5.0f, kGroupRing, 0, 2.0f);
@@ -260,7 +273,7 @@ void drawCurveCanvas(ImDrawList& drawList, const CurveCanvas& canvas, const Tran
     if (config.histogram != nullptr) drawHistogram(drawList, canvas, *config.histogram);
     drawCurve(drawList, canvas, curve);
     if (!config.stepTimes.empty()) drawSections(drawList, canvas, curve, config);
-    drawColorStrip(drawList, canvas, curve, selection);
+    drawColorStrip(drawList, canvas, curve, selection, config.thumbnails);
     drawOpacityNodes(drawList, canvas, curve, selection);
     drawAxis(drawList, canvas, config);
     drawList.PopClipRect();

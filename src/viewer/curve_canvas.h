@@ -16,12 +16,15 @@
 namespace tstyles::viewer {
 
 // What an editor edits and how to show it.
+class StyleThumbnails;
+
 struct CurveEditorConfig {
     std::string anchor;  // anchor name for scripts: "stf", "tstf", "gradient"
     CurveAxis axis;
     // Index TSTF: the time of each time-step; one section per entry. Empty for other curves.
     std::vector<double> stepTimes;
     const DensityHistogram* histogram = nullptr;  // drawn behind the STF
+    StyleThumbnails* thumbnails = nullptr;        // styled nodes drawn as their lit sphere
     std::string axisLabel;
 };
 

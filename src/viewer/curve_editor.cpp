@@ -58,7 +58,9 @@ bool CurveEditor::drawCanvas(TransferFunction1D& curve, const CurveEditorConfig&
     }
 
     ImDrawList& drawList = *ImGui::GetWindowDrawList();
-    drawCurveCanvas(drawList, canvas, curve, config, selection_);
+    CurveEditorConfig drawing = config;
+    drawing.thumbnails = &thumbnails_;
+    drawCurveCanvas(drawList, canvas, curve, drawing, selection_);
     if (band_) drawRubberBand(drawList, band_->start, mouse);
     if (hovered && !dragging()) drawTooltip(curve, canvas, config, mouse);
     drawContextMenu(curve, canvas, config);

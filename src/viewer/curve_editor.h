@@ -12,6 +12,7 @@
 
 #include "curve_canvas.h"
 #include "node_editing.h"
+#include "style_thumbnails.h"
 #include "ui_anchors.h"
 
 namespace tstyles::viewer {
@@ -80,6 +81,7 @@ private:
     std::optional<NodeRef> styleDraftFor_;
     // The built-in style names, read from the bundled data on first use.
     std::optional<std::vector<std::string>> builtInStyles_;
+    StyleThumbnails thumbnails_;
 };
 
 }  // namespace tstyles::viewer
