@@ -50,7 +50,7 @@ OpenedDisplay openDisplay() {
     if (getPlatformDisplay != nullptr && hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless")) {
         EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
         if (display != EGL_NO_DISPLAY && eglInitialize(display, nullptr, nullptr)) return {display, "EGL surfaceless"};
-        tried += "surfaceless platform failed (" + eglErrorName(eglGetError()) + "); ";
+        tried += std::string(tried.empty() ? "" : "; ") + "surfaceless platform failed (" + eglErrorName(eglGetError()) + ")";
     }
     auto queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
     if (getPlatformDisplay != nullptr && queryDevices != nullptr) {
@@ -63,7 +63,7 @@ OpenedDisplay openDisplay() {
                     return {display, "EGL device " + std::to_string(i)};
             }
         }
-        tried += "no usable EGL device among " + std::to_string(count) + "; ";
+        tried += std::string(tried.empty() ? "" : "; ") + "no usable EGL device among " + std::to_string(count);
     }
     throw GlUnavailableError("EGL: no headless display: " + (tried.empty() ? std::string("no platform extensions") : tried));
 }

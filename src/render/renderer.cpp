@@ -27,7 +27,7 @@ Renderer::Renderer(ShaderLibrary shaders)
 void Renderer::setSeries(const Series& series) {
     gpuSeries_.reset();  // free the old atlas before allocating the new one
     gpuSeries_.emplace(series);
-    occupancyStf_.reset();
+    occupancyStale_ = true;
     finestSpacing_ = series.finestSpacing();
 }
 
@@ -40,12 +40,13 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     const glm::mat4 viewProjection = glm::mat4(view.projectionMatrix * view.viewMatrix);
     const glm::mat4 inverseViewProjection = glm::mat4(glm::inverse(view.projectionMatrix * view.viewMatrix));
 
-    if (!occupancyStf_ || !(*occupancyStf_ == scene.stf)) {
-        gpuSeries_->updateOccupancy(bakeTransferTable(scene.stf.curve));
-        occupancyStf_ = scene.stf;
+    const bool stfChanged =
+        transferTables_.update(scene.stf, scene.indexTstf, scene.gradientTstf, gpuSeries_->timeStepCount());
+    if (stfChanged || occupancyStale_) {
+        gpuSeries_->updateOccupancy(transferTables_.stfEntries());
+        occupancyStale_ = false;
     }
     gpuSeries_->bind();
-    transferTables_.update(scene.stf, scene.indexTstf, scene.gradientTstf, gpuSeries_->timeStepCount());
     transferTables_.bind();
     styleTextures_.update({&scene.stf.curve, &scene.indexTstf.curve, &scene.gradientTstf.curve});
     styleTextures_.bind();

@@ -38,10 +38,12 @@ std::vector<glm::vec4> bakeIndexTstf(const IndexTstf& tstf, std::size_t timeStep
 TransferTables::TransferTables()
     : stfTable_(createTable()), gradientTstfTable_(createTable()), indexTstfBuffer_(Buffer::create()) {}
 
-void TransferTables::update(const Stf& stf, const IndexTstf& indexTstf, const GradientTstf& gradientTstf,
+bool TransferTables::update(const Stf& stf, const IndexTstf& indexTstf, const GradientTstf& gradientTstf,
                             std::size_t timeStepCount) {
-    if (!bakedStf_ || !(*bakedStf_ == stf)) {
-        upload(stfTable_, bakeTransferTable(stf.curve));
+    const bool stfChanged = !bakedStf_ || !(*bakedStf_ == stf);
+    if (stfChanged) {
+        stfEntries_ = bakeTransferTable(stf.curve);
+        upload(stfTable_, stfEntries_);
         bakedStf_ = stf;
     }
     if (!bakedGradientCurve_ || !(*bakedGradientCurve_ == gradientTstf.curve)) {
@@ -54,6 +56,7 @@ void TransferTables::update(const Stf& stf, const IndexTstf& indexTstf, const Gr
         bakedIndexTstf_ = indexTstf;
         bakedTimeStepCount_ = timeStepCount;
     }
+    return stfChanged;
 }
 
 void TransferTables::bind() const {

@@ -38,13 +38,6 @@ std::vector<std::string> goldenSceneNames() {
     return names;
 }
 
-const Series& cachedSeries(const std::filesystem::path& manifest) {
-    static std::map<std::filesystem::path, Series> cache;
-    auto found = cache.find(manifest);
-    if (found == cache.end()) found = cache.emplace(manifest, loadSeries(manifest)).first;
-    return found->second;
-}
-
 class GoldenImage : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(GoldenImage, MatchesTheReviewedRender) {
@@ -52,7 +45,7 @@ TEST_P(GoldenImage, MatchesTheReviewedRender) {
     Scene scene = loadScene(kSourceDir / "data/scenes" / (name + ".json"));
     scene.width = kGoldenSize;
     scene.height = kGoldenSize;
-    const Series& series = cachedSeries(scene.dataset);
+    const Series& series = loadSeriesOnce(scene.dataset);
     const Image actual = renderSeries(series, scene);
     const Image golden = readImage(kSourceDir / "tests/golden" / (name + ".png"));
     ASSERT_EQ(golden.width, kGoldenSize);

@@ -3,9 +3,11 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <memory>
 #include <stdexcept>
 
+#include "tstyles/data/manifest.h"
 #include "tstyles/gl/headless_context.h"
 
 namespace tstyles::testing {
@@ -78,6 +80,13 @@ Scene orthographicSceneLookingDownZ(glm::dvec2 centre, double viewHeight, int si
     scene.height = size;
     scene.background = glm::dvec4(0.0);
     return scene;
+}
+
+const Series& loadSeriesOnce(const std::filesystem::path& manifest) {
+    static std::map<std::filesystem::path, Series> cache;
+    auto found = cache.find(manifest);
+    if (found == cache.end()) found = cache.emplace(manifest, loadSeries(manifest)).first;
+    return found->second;
 }
 
 Image renderSeries(const Series& series, const Scene& scene) {

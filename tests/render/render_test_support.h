@@ -3,6 +3,7 @@
 // look straight down an axis so that closed-form expectations are easy to state.
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -37,6 +38,9 @@ Series makeSeries(const std::vector<BoxSpec>& boxes);
 // A scene with an orthographic camera looking down -z at (centre.x, centre.y), showing `viewHeight`
 // world units vertically, a transparent background, and STF / TSTFs left to the test.
 Scene orthographicSceneLookingDownZ(glm::dvec2 centre, double viewHeight, int size);
+
+// The series of a manifest, loaded once per test process.
+const Series& loadSeriesOnce(const std::filesystem::path& manifest);
 
 // Renders `series` with `scene` (uploads the series each call).
 Image renderSeries(const Series& series, const Scene& scene);

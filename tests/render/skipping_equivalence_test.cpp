@@ -25,13 +25,6 @@ constexpr int kPixelThreshold = 8;
 constexpr double kMaxFailingFraction = 0.005;
 constexpr double kMaxMeanDelta = 0.3;
 
-const Series& cachedSeries(const std::filesystem::path& manifest) {
-    static std::map<std::filesystem::path, Series> cache;
-    auto found = cache.find(manifest);
-    if (found == cache.end()) found = cache.emplace(manifest, loadSeries(manifest)).first;
-    return found->second;
-}
-
 struct Case {
     std::string scene;
     std::string dataset;
@@ -42,7 +35,7 @@ class SkippingEquivalence : public ::testing::TestWithParam<Case> {};
 TEST_P(SkippingEquivalence, OptimisedAndNaiveRaycastersGiveTheSameImage) {
     const Case& c = GetParam();
     Scene scene = loadScene(kSourceDir / "data/scenes" / (c.scene + ".json"));
-    const Series& series = cachedSeries(kSourceDir / "data" / c.dataset / "series.json");
+    const Series& series = loadSeriesOnce(kSourceDir / "data" / c.dataset / "series.json");
     Renderer& renderer = testRenderer();
     renderer.setSeries(series);
     const View view = resolveView(scene.camera, series.worldBounds(), kSize, kSize);

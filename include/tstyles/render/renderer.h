@@ -60,7 +60,7 @@ private:
     ShaderLibrary shaders_;
     std::optional<GpuSeries> gpuSeries_;
     double finestSpacing_ = 1.0;
-    std::optional<Stf> occupancyStf_;  // the STF the brick visibility was computed for
+    bool occupancyStale_ = true;  // a new series needs its brick visibility computed
     TransferTables transferTables_;
     StyleTextures styleTextures_;
     EntryExitBuffers entryExitBuffers_;

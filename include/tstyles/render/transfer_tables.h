@@ -26,8 +26,11 @@ class TransferTables {
 public:
     TransferTables();
 
-    void update(const Stf& stf, const IndexTstf& indexTstf, const GradientTstf& gradientTstf,
+    // Re-bakes what changed; true when the STF did (empty-space skipping depends on it).
+    bool update(const Stf& stf, const IndexTstf& indexTstf, const GradientTstf& gradientTstf,
                 std::size_t timeStepCount);
+    // The STF as baked into its table.
+    const std::vector<glm::vec4>& stfEntries() const { return stfEntries_; }
     void bind() const;
 
 private:
@@ -35,6 +38,7 @@ private:
     Texture gradientTstfTable_;
     Buffer indexTstfBuffer_;
     std::optional<Stf> bakedStf_;
+    std::vector<glm::vec4> stfEntries_;
     std::optional<IndexTstf> bakedIndexTstf_;
     std::optional<TransferFunction1D> bakedGradientCurve_;
     std::size_t bakedTimeStepCount_ = 0;
