@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -14,6 +15,13 @@
 #include <glm/gtc/quaternion.hpp>
 
 namespace tstyles {
+
+// A voxel without data (a fill value, land under a weather model's atmosphere): neither a density
+// nor zero. Readers store it as a quiet NaN in TimeStep::density; the renderer treats it as
+// transparent and leaves it out of every temporal compositor. NaN in a source file that does not
+// declare it as a missing-value marker is bad input, not missing data.
+inline float missingDensity() { return std::nanf(""); }
+inline bool isMissing(float density) { return std::isnan(density); }
 
 // How the values of a time-step are stored in its raw file (little-endian).
 enum class ValueType { UInt8, UInt16, Float32 };
@@ -27,8 +35,18 @@ std::size_t bytesPerValue(ValueType type);
 struct RectilinearGrid {
     glm::ivec3 dims{0};
     glm::dvec3 spacing{1.0};
+    // Uneven axes (ocean depth or pressure levels): where non-empty, the grid-local positions of
+    // the nodes along that axis, dims[axis] strictly increasing values starting at 0; `spacing` is
+    // then unused for that axis. Empty means evenly spaced nodes.
+    std::array<std::vector<double>, 3> axisPositions;
 
-    glm::dvec3 extent() const { return glm::dvec3(dims - 1) * spacing; }
+    bool isUneven(int axis) const { return !axisPositions[std::size_t(axis)].empty(); }
+    glm::dvec3 extent() const {
+        glm::dvec3 result = glm::dvec3(dims - 1) * spacing;
+        for (int axis = 0; axis < 3; ++axis)
+            if (isUneven(axis)) result[axis] = axisPositions[std::size_t(axis)].back();
+        return result;
+    }
     std::size_t voxelCount() const {
         return std::size_t(dims.x) * std::size_t(dims.y) * std::size_t(dims.z);
     }
