@@ -46,18 +46,29 @@ struct TemporalSample {
         int step = activeSteps[i];
 #endif
 
+// The time-step's voxel position at the sample, inside FOR_EACH_TIME_STEP_AT_SAMPLE.
+#if NAIVE_RAYCASTER
+#define VOXEL_AT_SAMPLE voxelCoordinate(step, position)
+#else
+#define VOXEL_AT_SAMPLE voxelAtSample(i, step, position, t)
+#endif
+
+#if !NAIVE_RAYCASTER
 // Whether all time-steps at the sample lie in empty bricks; if so, where the first brick ends.
-float emptySpaceUntil(vec3 position, float t, vec3 direction) {
+float emptySpaceUntil(vec3 position, float t) {
     float emptyUntil = 1.0e30;
     bool anyStep = false;
     FOR_EACH_TIME_STEP_AT_SAMPLE
-        vec3 voxel = voxelCoordinate(step, position);
+        vec3 voxel = VOXEL_AT_SAMPLE;
         if (brickVisible(step, voxel)) return -1.0;
-        emptyUntil = min(emptyUntil, brickExit(step, voxel, t, direction));
+        // The jump to the brick's exit needs voxel positions linear in t; elsewhere the ray only
+        // skips this sample's work.
+        emptyUntil = min(emptyUntil, activeAffine[i] ? brickExit(step, voxel, t, activeVoxelDirection[i]) : t);
         anyStep = true;
     }
     return anyStep ? emptyUntil : -1.0;
 }
+#endif
 
 // Where the time-step's style is read at this sample (6 fetches when styled).
 SphereCoordinate styleCoordinate(int step, vec3 position, inout int fetches) {
@@ -69,12 +80,12 @@ SphereCoordinate styleCoordinate(int step, vec3 position, inout int fetches) {
 #endif
 }
 
-TemporalSample compositeTemporal(vec3 position, float t, vec3 direction) {
+TemporalSample compositeTemporal(vec3 position, float t) {
     TemporalSample result = TemporalSample(vec4(0.0), 0, 0, -1.0);
 #if !NAIVE_RAYCASTER
     // Skip transparent regions of all time-steps at once. The max density change needs every
     // density once any time-step is visible, so the test comes before the real work.
-    result.emptyUntil = emptySpaceUntil(position, t, direction);
+    result.emptyUntil = emptySpaceUntil(position, t);
     if (result.emptyUntil > 0.0) {
         result.contributing = 1;
         return result;
@@ -102,7 +113,7 @@ TemporalSample compositeTemporal(vec3 position, float t, vec3 direction) {
 #endif
 
     FOR_EACH_TIME_STEP_AT_SAMPLE
-        vec3 atlasPosition = atlasCoordinate(step, position);
+        vec3 atlasPosition = atlasCoordinateOfVoxel(step, VOXEL_AT_SAMPLE);
         float density = sampleDensity(atlasPosition);
         bool inMask = insideMask(step, atlasPosition);
         vec4 stf = classifyStf(density);

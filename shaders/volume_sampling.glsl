@@ -23,8 +23,18 @@ float sampleDensity(vec3 atlasPosition) {
     return texture(densityAtlas, atlasPosition).r;
 }
 
+// 1 when any time-step of the series has a mask. A compile-time switch, not a run-time test:
+// llvmpipe executes both sides of a branch (masked per pixel), so only removing the mask lookup
+// from the program saves its cost.
+#ifndef HAS_MASKS
+#define HAS_MASKS 1
+#endif
+
 // Time-steps without a mask are region of interest everywhere.
 bool insideMask(int step, vec3 atlasPosition) {
+#if !HAS_MASKS
+    return true;
+#endif
     if (timeSteps.steps[step].dims.w < 0.5) return true;
     return texture(maskAtlas, atlasPosition).r >= 0.5;
 }
@@ -47,11 +57,10 @@ bool brickVisible(int step, vec3 voxel) {
     return texelFetch(occupancyAtlas, texel, 0).r > 0.5;
 }
 
-// The ray parameter at which a ray at `t`, at `voxel` in the time-step's grid and heading along
-// `worldDirection`, leaves the brick it is in. Voxel coordinates are an affine function of world
-// position, so t carries over unchanged.
-float brickExit(int step, vec3 voxel, float t, vec3 worldDirection) {
-    vec3 direction = mat3(timeSteps.steps[step].worldToVoxel) * worldDirection;
+// The ray parameter at which a ray at `t`, at `voxel` in the time-step's grid and moving by
+// `direction` voxels per unit of t, leaves the brick it is in. Only for time-steps whose voxel
+// coordinates are an affine function of world position (TimeStepInfo.flags.x).
+float brickExit(int step, vec3 voxel, float t, vec3 direction) {
     vec3 lower = brickOf(step, voxel) * BRICK_SIZE;
     vec3 upper = min(lower + BRICK_SIZE, timeSteps.steps[step].dims.xyz - 1.0);
     float exit = 1.0e30;

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include <nlohmann/json.hpp>
+#include <sys/resource.h>
 
 #include "bench_datasets.h"
 #include "bench_scaling.h"
@@ -52,10 +53,26 @@ struct BenchResult {
     std::size_t timeSteps = 0;
     double medianMs = 0.0;
     double maxMs = 0.0;
+    // CPU time of the whole process (llvmpipe's threads included) per frame: on a shared machine
+    // it moves far less with other work than the wall clock does.
+    double medianCpuMs = 0.0;
     std::optional<double> naiveMedianMs;  // with --baseline
     RaycastStatistics statistics;
     std::size_t seriesTextureBytes = 0;
     std::size_t frameTextureBytes = 0;
+};
+
+// User and system time of every thread of this process so far.
+double processCpuMilliseconds() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    auto ms = [](const timeval& time) { return 1e3 * double(time.tv_sec) + 1e-3 * double(time.tv_usec); };
+    return ms(usage.ru_utime) + ms(usage.ru_stime);
+}
+
+struct FrameTimes {
+    std::vector<double> wallMs;
+    std::vector<double> cpuMs;
 };
 
 double median(std::vector<double> values) {
@@ -82,24 +99,27 @@ BenchResult runCase(Renderer& renderer, const Series& series, const BenchCase& b
     auto timeFrames = [&](const FrameOptions& timed) {
         for (int i = 0; i < options.warmup; ++i) renderer.draw(scene, viewForFrame(i), timed);
         glFinish();
-        std::vector<double> milliseconds;
+        FrameTimes times;
         for (int i = 0; i < options.frames; ++i) {
             const View view = viewForFrame(i);
+            const double cpuStart = processCpuMilliseconds();
             const auto start = std::chrono::steady_clock::now();
             renderer.draw(scene, view, timed);
             glFinish();
-            milliseconds.push_back(
+            times.wallMs.push_back(
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+            times.cpuMs.push_back(processCpuMilliseconds() - cpuStart);
         }
-        return milliseconds;
+        return times;
     };
-    const std::vector<double> milliseconds = timeFrames(frame);
-    BenchResult result{benchCase, series.size(), median(milliseconds),
-                       *std::max_element(milliseconds.begin(), milliseconds.end()), std::nullopt, {}, 0, 0};
+    const FrameTimes times = timeFrames(frame);
+    BenchResult result{benchCase, series.size(), median(times.wallMs),
+                       *std::max_element(times.wallMs.begin(), times.wallMs.end()), median(times.cpuMs),
+                       std::nullopt, {}, 0, 0};
     if (options.baseline) {
         FrameOptions naive = frame;
         naive.naive = true;
-        result.naiveMedianMs = median(timeFrames(naive));
+        result.naiveMedianMs = median(timeFrames(naive).wallMs);
     }
     frame.collectStatistics = true;  // counted in an extra, untimed frame: atomics cost time
     renderer.draw(scene, viewForFrame(0), frame);
@@ -121,7 +141,7 @@ void printTable(const std::vector<BenchResult>& results, const std::string& devi
     std::cout << "scenes: data/scenes/<dataset's prefix>" << (styled ? "styled-" : "") << "*.json\n";
     std::cout << std::left << std::setw(28) << "dataset" << std::setw(21) << "compositor" << std::right
               << std::setw(6) << "n" << std::setw(7) << "size" << std::setw(11) << "median ms" << std::setw(9)
-              << "max ms" << std::setw(10) << "rays" << std::setw(13) << "samples" << std::setw(13)
+              << "max ms" << std::setw(9) << "cpu ms" << std::setw(10) << "rays" << std::setw(13) << "samples" << std::setw(13)
               << "fetches" << std::setw(11) << "tex MiB";
     if (results.front().naiveMedianMs) std::cout << std::setw(11) << "naive ms" << std::setw(10) << "speed-up";
     std::cout << "\n";
@@ -129,7 +149,7 @@ void printTable(const std::vector<BenchResult>& results, const std::string& devi
         std::cout << std::left << std::setw(28) << r.benchCase.dataset << std::setw(21)
                   << toString(r.benchCase.compositor) << std::right << std::setw(6) << r.timeSteps << std::setw(7)
                   << r.benchCase.size << std::setw(11) << std::fixed << std::setprecision(1) << r.medianMs
-                  << std::setw(9) << r.maxMs << std::setw(10) << r.statistics.rays << std::setw(13)
+                  << std::setw(9) << r.maxMs << std::setw(9) << r.medianCpuMs << std::setw(10) << r.statistics.rays << std::setw(13)
                   << r.statistics.samples << std::setw(13) << r.statistics.fetches << std::setw(11)
                   << mebibytes(r.seriesTextureBytes + r.frameTextureBytes);
         if (r.naiveMedianMs)
@@ -145,7 +165,7 @@ nlohmann::json toJson(const std::vector<BenchResult>& results, const std::string
         cases.push_back({{"dataset", r.benchCase.dataset}, {"scene", r.benchCase.scene},
                          {"compositor", toString(r.benchCase.compositor)}, {"time_steps", r.timeSteps},
                          {"width", r.benchCase.size}, {"height", r.benchCase.size},
-                         {"median_ms", r.medianMs}, {"max_ms", r.maxMs}, {"rays", r.statistics.rays},
+                         {"median_ms", r.medianMs}, {"max_ms", r.maxMs}, {"median_cpu_ms", r.medianCpuMs}, {"rays", r.statistics.rays},
                          {"samples", r.statistics.samples}, {"fetches", r.statistics.fetches},
                          {"series_texture_bytes", r.seriesTextureBytes},
                          {"frame_texture_bytes", r.frameTextureBytes},

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <variant>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -20,6 +21,7 @@ struct TimeStepInfo {
     glm::vec4 dims;
     glm::ivec4 layer;
     glm::vec4 occupancyOrigin;  // xyz: first texel of this time-step's bricks in the occupancy atlas
+    glm::ivec4 flags;           // x: 1 when world -> voxel is affine
 };
 
 // Mirrors ProxyBox in shaders/proxy_geometry.glsl (std430).
@@ -71,6 +73,13 @@ std::vector<int> assignProxyLayers(const Series& series, std::vector<ProxyBox>& 
         layers.push_back(layer);
     }
     return layers;
+}
+
+// Whether world -> voxel coordinates is one matrix product: evenly spaced rectilinear grids.
+// Other grids (uneven axes, and the grid kinds still to come) take the general path in the shader.
+bool hasAffineWorldToVoxel(const TimeStep& step) {
+    const auto* grid = std::get_if<RectilinearGrid>(&step.grid);
+    return grid && !grid->isUneven(0) && !grid->isUneven(1) && !grid->isUneven(2);
 }
 
 }  // namespace
@@ -141,7 +150,8 @@ GpuSeries::GpuSeries(const Series& series)
         table.push_back({glm::mat4(glm::inverse(voxelToWorld)), glm::vec4(glm::vec3(layout_.brickOrigins[index]), 0.0f),
                          glm::vec4(glm::vec3(step.rectilinear().dims), step.mask ? 1.0f : 0.0f),
                          glm::ivec4(layers[index], 0, 0, 0),
-                         glm::vec4(glm::vec3(occupancyLayout_.brickOrigins[index]), 0.0f)});
+                         glm::vec4(glm::vec3(occupancyLayout_.brickOrigins[index]), 0.0f),
+                         glm::ivec4(hasAffineWorldToVoxel(step) ? 1 : 0, 0, 0, 0)});
     }
     timeStepTable_.setData(std::as_bytes(std::span(table)), GL_STATIC_DRAW);
     proxyTable_.setData(std::as_bytes(std::span(boxes)), GL_STATIC_DRAW);
