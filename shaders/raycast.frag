@@ -56,6 +56,9 @@ void main() {
         // exactly at the exit, so a slab of thickness D gets exactly D worth of opacity.
         float segmentEnd = min(t + stepLength, rayDepth.y);
         float middle = 0.5 * (t + segmentEnd);
+#if !NAIVE_RAYCASTER
+        advanceLiveWindow(middle);
+#endif
         TemporalSample styled = compositeTemporal(ray.origin + ray.direction * middle, middle);
         samples += 1;
         fetches += styled.fetches;

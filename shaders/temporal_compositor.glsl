@@ -41,7 +41,7 @@ struct TemporalSample {
             continue;
 #else
 #define FOR_EACH_TIME_STEP_AT_SAMPLE                                                             \
-    for (int i = 0; i < activeCount; ++i) {                                                      \
+    for (int i = liveBegin; i < liveEnd; ++i) {                                                  \
         if (t < activeIntervals[i].x || t > activeIntervals[i].y) continue;                      \
         int step = activeSteps[i];
 #endif
