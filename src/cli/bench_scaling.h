@@ -1,6 +1,7 @@
-// The benchmark's scaling run: the bouncing super-ellipsoid simulated for longer, so that n
-// time-steps keep the bundled dataset's rate of 10 time-steps per 1.6 s, with boxes riding with the
-// object (partial overlap) or on one common grid (full overlap).
+// The benchmark's scaling run: n time-steps of the bouncing super-ellipsoid. Partial overlap: the
+// simulation runs longer, so that n time-steps keep the bundled dataset's rate of 10 per 1.6 s, each
+// in a box riding with the object. Full overlap: every time-step on the bundled 256x128x64 common
+// grid over the bundled 1.6 s, n time-steps sampled more densely in time.
 #pragma once
 
 #include <string>
@@ -9,7 +10,8 @@
 
 namespace tstyles::cli {
 
-// The simulated seconds that n time-steps span at the bundled dataset's rate (step 10 at 1.6 s).
+// The simulated seconds that n partially overlapping time-steps span at the bundled dataset's rate
+// (step 10 at 1.6 s).
 double scalingDuration(int steps);
 
 // Builds the series in memory through a scratch folder that is removed again.
