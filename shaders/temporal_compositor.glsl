@@ -63,7 +63,11 @@ float emptySpaceUntil(vec3 position, float t) {
         if (brickVisible(step, voxel)) return -1.0;
         // The jump to the brick's exit needs voxel positions linear in t; elsewhere the ray only
         // skips this sample's work.
+#if ALL_AFFINE
+        emptyUntil = min(emptyUntil, brickExit(step, voxel, t, activeVoxelDirection[i]));
+#else
         emptyUntil = min(emptyUntil, activeAffine[i] ? brickExit(step, voxel, t, activeVoxelDirection[i]) : t);
+#endif
         anyStep = true;
     }
     return anyStep ? emptyUntil : -1.0;

@@ -92,6 +92,7 @@ GpuSeries::GpuSeries(const Series& series)
       proxyTable_(Buffer::create()) {
     timeStepCount_ = series.size();
     hasMasks_ = series.hasMasks();
+    allAffine_ = std::all_of(series.steps.begin(), series.steps.end(), hasAffineWorldToVoxel);
     std::vector<glm::ivec3> dims;
     for (const auto& step : series.steps) dims.push_back(step.rectilinear().dims);
     layout_ = planAtlas(dims, maxTextureSize3D());

@@ -44,7 +44,8 @@ Raycaster::Raycaster(const ShaderLibrary& shaders)
 const Program& Raycaster::programFor(const RaycastParameters& parameters) {
     const int capacity = arrayCapacity(parameters.timeStepCount);
     const auto key = std::make_tuple(compositorDefine(parameters.compositor), parameters.collectStatistics,
-                                     parameters.styled, parameters.naive, parameters.masks, capacity);
+                                     parameters.styled, parameters.naive, parameters.masks,
+                                     parameters.allAffine, capacity);
     auto found = programs_.find(key);
     if (found != programs_.end()) return found->second;
     const ShaderDefines defines = {
@@ -54,6 +55,7 @@ const Program& Raycaster::programFor(const RaycastParameters& parameters) {
         {"STYLED", parameters.styled ? "1" : "0"},
         {"NAIVE_RAYCASTER", parameters.naive ? "1" : "0"},
         {"HAS_MASKS", parameters.masks ? "1" : "0"},
+        {"ALL_AFFINE", parameters.allAffine ? "1" : "0"},
     };
     auto program = Program::build(shaders_, {{GL_VERTEX_SHADER, "fullscreen.vert"},
                                              {GL_FRAGMENT_SHADER, "raycast.frag"}},

@@ -71,6 +71,7 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     parameters.soloTimeStep = options.soloTimeStep.value_or(-1);
     parameters.naive = options.naive;
     parameters.masks = gpuSeries_->hasMasks();
+    parameters.allAffine = gpuSeries_->allAffine();
     parameters.styled = styleTextures_.anyStyled();
     parameters.styleTracks = styleTextures_.trackRanges();
     parameters.worldToView = glm::mat3(view.viewMatrix);

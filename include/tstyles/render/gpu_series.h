@@ -24,6 +24,8 @@ public:
     std::size_t proxyCount() const { return proxyCount_; }
     const AtlasLayout& layout() const { return layout_; }
     bool hasMasks() const { return hasMasks_; }
+    // Whether every time-step's world -> voxel map is affine (TimeStepInfo.flags.x).
+    bool allAffine() const { return allAffine_; }
     // Bytes of texture memory: the density atlas, the mask atlas.
     std::size_t textureBytes() const;
 
@@ -38,6 +40,7 @@ private:
     std::size_t timeStepCount_ = 0;
     std::size_t proxyCount_ = 0;
     bool hasMasks_ = false;
+    bool allAffine_ = true;
     AtlasLayout layout_;
     Texture densityAtlas_;
     Texture maskAtlas_;
