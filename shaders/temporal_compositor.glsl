@@ -52,7 +52,7 @@ float emptySpaceUntil(vec3 position, float t, vec3 direction) {
     bool anyStep = false;
     FOR_EACH_TIME_STEP_AT_SAMPLE
         vec3 voxel = voxelCoordinate(step, position);
-        if (brickVisible(step, voxel)) return -1.0;
+        if (insideGrid(step, position) && brickVisible(step, voxel)) return -1.0;
         emptyUntil = min(emptyUntil, brickExit(step, voxel, t, direction));
         anyStep = true;
     }
@@ -102,6 +102,7 @@ TemporalSample compositeTemporal(vec3 position, float t, vec3 direction) {
 #endif
 
     FOR_EACH_TIME_STEP_AT_SAMPLE
+        if (!insideGrid(step, position)) continue;
         vec3 atlasPosition = atlasCoordinate(step, position);
         float density = sampleDensity(atlasPosition);
         bool inMask = insideMask(step, atlasPosition);
