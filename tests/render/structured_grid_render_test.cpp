@@ -2,10 +2,15 @@
 // closed form) seen down z, where the footprint follows the curved boundary and the colour follows
 // the computational coordinate, and seen along its bent axis, where a ray crosses a concave gap.
 #include <cmath>
+#include <filesystem>
+#include <string>
+
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
 #include "render_test_support.h"
+#include "tstyles/image/image_io.h"
 #include "tstyles/data/inverse_map.h"
 #include "tstyles/data/structured_point_location.h"
 #include "tstyles/data/warped_box.h"
@@ -132,6 +137,55 @@ TEST(StructuredGridRender, RaysThroughAConcaveGapSkipIt) {
             EXPECT_EQ(pieces, 2);
             EXPECT_LT(actual, slabOpacity(0.02, grid.localUpper.y - 0.3, reference));
         }
+    }
+}
+
+// A style whose colour is the normal it is looked up at: red = 0.5 + 0.5 nx, green = 0.5 + 0.5 ny.
+std::string writeNormalStyle() {
+    constexpr int kStyleSize = 64;
+    Image image(kStyleSize, kStyleSize);
+    for (int row = 0; row < kStyleSize; ++row)
+        for (int column = 0; column < kStyleSize; ++column) {
+            const glm::vec2 normal((column + 0.5f) / kStyleSize * 2.0f - 1.0f, 1.0f - (row + 0.5f) / kStyleSize * 2.0f);
+            image.set(column, row, glm::vec4(0.5f + 0.5f * normal.x, 0.5f + 0.5f * normal.y, 0.0f, 1.0f));
+        }
+    const auto file = std::filesystem::temp_directory_path() /
+                      ("tstyles_structured_normal_style_" + std::to_string(::getpid()) + ".png");
+    writeImage(image, file);
+    return file.string();
+}
+
+TEST(StructuredGridRender, LitSphereStylesSeeWorldSpaceNormalsOnABentGrid) {
+    // A ball defined in world space, sampled at the nodes of a bent grid: its surface normals are
+    // radial whatever the grid, so the style shows the sphere's normal at each pixel. Gradients taken
+    // in the grid's computational space would skew them by the bend: with them this test fails
+    // by up to 0.12 in colour (checked by swapping structured_gradient.glsl for voxel differences).
+    WarpedBox box;
+    box.dims = {33, 33, 33};
+    box.spacing = 1.0 / 32.0;
+    box.amplitude = {0.25, 0.2, 0.15};
+    const glm::dvec3 centre(0.65, 0.55, 0.5);
+    constexpr double kRadius = 0.3;
+    const StructuredGrid grid = box.grid();
+    const Series series = warpedSeries(box, [&](glm::ivec3 node) {
+        const double r = glm::length(grid.node(node.x, node.y, node.z) - centre);
+        return float(std::clamp((kRadius - r) / (2.0 / 32.0) + 0.5, 0.0, 1.0));
+    });
+    Scene scene = orthographicSceneLookingDownZ({centre.x, centre.y}, 1.0, kSize);
+    scene.stf.curve.opacity = {{0.45, 0.0}, {0.55, 1.0}};
+    scene.stf.curve.color = {{0.0, {1.0, 1.0, 1.0}, writeNormalStyle(), 0}};
+    scene.finalMode = FinalMode::Stf;
+    const Image image = renderSeries(series, scene);
+    for (const glm::dvec2 offset : {glm::dvec2(0.0, 0.0), glm::dvec2(-0.2, 0.0), glm::dvec2(0.2, 0.05),
+                                    glm::dvec2(0.0, 0.2), glm::dvec2(-0.12, -0.15), glm::dvec2(0.15, 0.15)}) {
+        const glm::ivec2 pixel = pixelOf(glm::dvec2(centre) + offset, {centre.x, centre.y}, 1.0, kSize);
+        const glm::vec4 actual = image.at(pixel.x, pixel.y);
+        const glm::dvec2 normal = offset / kRadius;
+        // 0.05 in colour is 0.1 in the normal's x or y: the surface of a trilinear field between
+        // nodes is not quite a sphere, and 8-bit style texels add a little.
+        EXPECT_NEAR(actual.r, 0.5 + 0.5 * normal.x, 0.05) << "offset " << offset.x << ", " << offset.y;
+        EXPECT_NEAR(actual.g, 0.5 + 0.5 * normal.y, 0.05) << "offset " << offset.x << ", " << offset.y;
+        EXPECT_NEAR(actual.a, 1.0, kTolerance);
     }
 }
 
