@@ -2,6 +2,12 @@
 // come from the grid's inverse map, a 3D texture over the grid's local bounds filled on load by
 // exact point location (data/inverse_map.h). The time-step's worldToVoxel takes world positions to
 // the lattice of dims nodes spread over those bounds; mapScale turns that into inverse-map texels.
+// 1 when the series has structured time-steps; 0 compiles every lookup below away, so that
+// rectilinear series pay nothing for them.
+#ifndef STRUCTURED_GRIDS
+#define STRUCTURED_GRIDS 1
+#endif
+
 struct StructuredGridInfo {
     vec4 mapOrigin;  // xyz: first texel of the grid's inverse map in the atlas; w: 1 when structured
     vec4 mapScale;   // xyz: inverse-map texels per lattice voxel; w: world step of gradient differences
@@ -15,7 +21,11 @@ layout(std430, binding = STRUCTURED_GRID_BUFFER) readonly buffer StructuredGrids
 layout(binding = INVERSE_MAP_UNIT) uniform sampler3D inverseMapAtlas;
 
 bool isStructured(int step) {
+#if STRUCTURED_GRIDS
     return structuredGrids.steps[step].mapOrigin.w > 0.5;
+#else
+    return false;
+#endif
 }
 
 vec4 inverseMapAt(int step, vec3 worldPosition) {

@@ -44,7 +44,7 @@ Raycaster::Raycaster(const ShaderLibrary& shaders)
 const Program& Raycaster::programFor(const RaycastParameters& parameters) {
     const int capacity = arrayCapacity(parameters.timeStepCount);
     const auto key = std::make_tuple(compositorDefine(parameters.compositor), parameters.collectStatistics,
-                                     parameters.styled, parameters.naive, capacity);
+                                     parameters.styled, parameters.naive, capacity, parameters.structuredGrids);
     auto found = programs_.find(key);
     if (found != programs_.end()) return found->second;
     const ShaderDefines defines = {
@@ -53,6 +53,7 @@ const Program& Raycaster::programFor(const RaycastParameters& parameters) {
         {"MAX_TIME_STEPS", std::to_string(capacity)},
         {"STYLED", parameters.styled ? "1" : "0"},
         {"NAIVE_RAYCASTER", parameters.naive ? "1" : "0"},
+        {"STRUCTURED_GRIDS", parameters.structuredGrids ? "1" : "0"},
     };
     auto program = Program::build(shaders_, {{GL_VERTEX_SHADER, "fullscreen.vert"},
                                              {GL_FRAGMENT_SHADER, "raycast.frag"}},

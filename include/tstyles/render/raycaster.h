@@ -30,6 +30,7 @@ struct RaycastParameters {
     bool collectStatistics = false;
     int soloTimeStep = -1;  // -1: every time-step takes part
     bool naive = false;     // the benchmark's baseline raycaster
+    bool structuredGrids = false;  // the series has structured time-steps (inverse-map lookups compiled in)
     // Lit-sphere styles: whether any track is styled, each track's node range, the view rotation
     // and the style-image footprint of a pixel.
     bool styled = false;
@@ -60,7 +61,7 @@ private:
     const ShaderLibrary& shaders_;
     // Keyed by compositor, statistics on/off, styled or not and the time-step capacity of the
     // shader's arrays.
-    std::map<std::tuple<int, bool, bool, bool, int>, Program> programs_;
+    std::map<std::tuple<int, bool, bool, bool, int, bool>, Program> programs_;
     VertexArray emptyVertexArray_;
     Buffer statistics_;
 };
