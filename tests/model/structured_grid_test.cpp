@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tstyles/data/density_sampling.h"
 #include "tstyles/data/inverse_map.h"
 #include "tstyles/data/series.h"
 #include "tstyles/data/structured_point_location.h"
@@ -175,6 +176,35 @@ TEST(StructuredSeries, WorldBoundsAndFinestSpacingFollowTheNodes) {
     EXPECT_NEAR(series.finestSpacing(), 1.0 / 16.0, 1e-6);
     EXPECT_EQ(series.steps[0].dims(), glm::ivec3(17, 17, 9));
     EXPECT_EQ(gridTypeName(series.steps[0].grid), "structured");
+}
+
+TEST(StructuredSeries, CpuDensitySamplingLocatesThePointInTheGrid) {
+    // Density i / (nx - 1) on the warped box, placed at an offset: sampling at the world position of
+    // computational coordinates (i, j, k) gives back i / (nx - 1), as picking in the viewer needs.
+    const WarpedBox box;
+    Series series;
+    for (int copy = 0; copy < 2; ++copy) {
+        TimeStep step;
+        step.grid = box.grid();
+        step.placement.origin = {1.0, 0.0, 0.0};
+        for (int k = 0; k < box.dims.z; ++k)
+            for (int j = 0; j < box.dims.y; ++j)
+                for (int i = 0; i < box.dims.x; ++i) step.density.push_back(float(i) / float(box.dims.x - 1));
+        series.steps.push_back(step);
+    }
+    const StructuredGrid& grid = *series.steps[0].structured();
+    for (const glm::dvec3 computational : {glm::dvec3(3.25, 7.5, 2.0), glm::dvec3(12.8, 1.1, 6.6)}) {
+        const glm::dvec3 world = glm::dvec3(1.0, 0.0, 0.0) + positionAtComputational(grid, computational);
+        const auto density = sampleDensity(series.steps[0], world);
+        ASSERT_TRUE(density);
+        EXPECT_NEAR(*density, computational.x / (box.dims.x - 1), 1e-5);
+        const auto profile = temporalProfile(series, world);
+        ASSERT_EQ(profile.size(), 2u);
+        ASSERT_TRUE(profile[1]);
+        EXPECT_NEAR(*profile[1], *density, 1e-9);
+    }
+    // Inside the bounding box, outside the bent -x face: no density.
+    EXPECT_FALSE(sampleDensity(series.steps[0], {1.1, 0.5, 0.25}));
 }
 
 }  // namespace
