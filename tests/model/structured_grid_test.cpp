@@ -163,6 +163,17 @@ TEST(StructuredGridProblems, InvertedDegenerateAndNonFiniteCellsAreNamed) {
     EXPECT_NE(notFinite->find("node (2, 2, 2) has a non-finite coordinate"), std::string::npos) << *notFinite;
 }
 
+TEST(StructuredGridProblems, LeftHandedGridsAreFineWhenEveryCellAgrees) {
+    // Mirrored in x, every cell is left-handed: consistent, so not inverted; point location works.
+    std::vector<glm::vec3> nodes = *WarpedBox{}.grid().nodes;
+    for (glm::vec3& node : nodes) node.x = -node.x;
+    const StructuredGrid mirrored = makeStructuredGrid(WarpedBox{}.dims, nodes);
+    EXPECT_FALSE(findGridProblem(mirrored));
+    const auto found = StructuredPointLocator(mirrored).locate(positionAtComputational(mirrored, {4.5, 6.25, 3.0}));
+    ASSERT_TRUE(found);
+    EXPECT_LT(maxComponent(*found - glm::dvec3(4.5, 6.25, 3.0)), 1e-6);
+}
+
 TEST(StructuredSeries, WorldBoundsAndFinestSpacingFollowTheNodes) {
     Series series;
     TimeStep step;

@@ -96,6 +96,28 @@ TEST(StructuredGridRender, FootprintFollowsTheCurvedBoundaryAndColourTheComputat
     EXPECT_GT(outsideInBounds, 100);
 }
 
+TEST(StructuredGridRender, ALeftHandedGridGetsTheSameSlab) {
+    // Mirrored in x, every cell is left-handed: the boundary normals must still point outwards, or
+    // entries and exits swap and the slab vanishes.
+    const WarpedBox box;
+    std::vector<glm::vec3> nodes = *box.grid().nodes;
+    for (glm::vec3& node : nodes) node.x = -node.x;
+    Series series = warpedSeries(box, [](glm::ivec3) { return 1.0f; });
+    series.steps[0].grid = makeStructuredGrid(box.dims, nodes);
+    const glm::dvec2 centre(-0.575, 0.55);
+    Scene scene = orthographicSceneLookingDownZ(centre, kViewHeight, kSize);
+    scene.stf.curve = constantFunction({1.0, 1.0, 1.0}, 0.05);
+    scene.finalMode = FinalMode::Stf;
+    const Image image = renderSeries(series, scene);
+    const double alpha = slabOpacity(0.05, 0.5, series.finestSpacing());
+    for (const glm::dvec2 world : {glm::dvec2(-0.575, 0.55), glm::dvec2(-0.9, 0.2), glm::dvec2(-0.4, 0.9)}) {
+        const glm::ivec2 pixel = pixelOf(world, centre, kViewHeight, kSize);
+        EXPECT_NEAR(image.at(pixel.x, pixel.y).a, alpha, kTolerance) << world.x << ", " << world.y;
+    }
+    const glm::ivec2 outside = pixelOf({-0.05, 0.55}, centre, kViewHeight, kSize);  // beyond the bent face
+    EXPECT_NEAR(image.at(outside.x, outside.y).a, 0.0f, kTolerance);
+}
+
 TEST(StructuredGridRender, RaysThroughAConcaveGapSkipIt) {
     // Rotated +90 degrees about x, local y becomes world z: rays down z run along local y. At
     // local x = 0.1 the bent -x face (x = 0.15 sin(pi y / 1.0)) leaves the ray inside the grid for
