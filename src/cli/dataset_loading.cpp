@@ -1,5 +1,9 @@
-// Manifest or Plot3D: which reader a dataset path goes to.
+// Manifest or Plot3D: which reader a dataset path goes to, by extension or by content.
 #include "dataset_loading.h"
+
+#include <cctype>
+#include <fstream>
+#include <system_error>
 
 #include "tstyles/core/errors.h"
 #include "tstyles/data/manifest.h"
@@ -18,8 +22,24 @@ void addPlot3DOptions(CLI::App& command, Plot3DCliOptions& options) {
         ->check(CLI::Range(1.0000001, 10.0));
 }
 
+namespace {
+
+// A file that does not start like a JSON manifest (an object, perhaps after a comment) is taken for
+// a Plot3D grid, whose reader then says clearly if it is not one either.
+bool looksLikeBinaryGrid(const std::filesystem::path& dataset) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(dataset, error) || dataset.extension() == ".json") return false;
+    std::ifstream in(dataset, std::ios::binary);
+    char first = 0;
+    while (in.get(first) && std::isspace(static_cast<unsigned char>(first))) {
+    }
+    return in && first != '{' && first != '/';
+}
+
+}  // namespace
+
 Series loadDataset(const std::filesystem::path& dataset, const Plot3DCliOptions& plot3d) {
-    if (hasPlot3DGridExtension(dataset) || !plot3d.solutions.empty()) {
+    if (hasPlot3DGridExtension(dataset) || !plot3d.solutions.empty() || looksLikeBinaryGrid(dataset)) {
         Plot3DOptions options;
         options.gridFile = dataset;
         options.solutionFiles = plot3d.solutions;

@@ -1,5 +1,6 @@
 // Loading the dataset a command names: a tstyles manifest (or its folder), or a Plot3D grid file
-// (by its extension .xyz/.x/.g/.grd, or when solution files are given) with the Plot3D options.
+// (by its extension .xyz/.x/.g/.grd, when solution files are given, or when the file does not
+// start like JSON) with the Plot3D options.
 #pragma once
 
 #include <filesystem>

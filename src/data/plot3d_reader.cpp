@@ -130,9 +130,6 @@ void checkOptions(const Plot3DOptions& options) {
         for (const std::string& name : names) known += (known.empty() ? "" : ", ") + name;
         throwInputError("", "--var", "unknown Plot3D variable '" + options.variable + "' (known: " + known + ")");
     }
-    if (options.solutionFiles.empty())
-        throwInputError(options.gridFile, "--solution",
-                        "a Plot3D grid needs at least one solution (q) file: one per time-step");
     if (!(options.gamma > 1.0) || !std::isfinite(options.gamma))
         throwInputError("", "--gamma", "must be a finite number greater than 1");
 }
@@ -154,6 +151,10 @@ Series readPlot3D(const Plot3DOptions& options) {
     checkOptions(options);
     const Plot3DFile gridFile = readPlot3DFile(options.gridFile, Plot3DKind::GridFile);
     const GridBlock grid = readGridBlock(gridFile, options.block);
+    // Checked after the grid: a file that is no Plot3D grid at all should be reported as such.
+    if (options.solutionFiles.empty())
+        throwInputError(options.gridFile, "--solution",
+                        "a Plot3D grid needs at least one solution (q) file: one per time-step");
 
     Series series;
     series.name = options.gridFile.stem().string() + " (" + options.variable + ")";

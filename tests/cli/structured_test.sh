@@ -53,6 +53,18 @@ case_render_plot3d() {
     expect_image "$SCRATCH/out.png" 64 64
 }
 
+# Without a Plot3D extension the content decides: a binary file is read as a Plot3D grid.
+case_plot3d_by_content() {
+    warped_plot3d
+    mv "$SCRATCH/plot3d/grid.xyz" "$SCRATCH/plot3d/mesh.bin"
+    run_tstyles -- info "$SCRATCH/plot3d/mesh.bin" --solution "$SOLUTIONS"
+    expect_exit 0
+    expect_stdout_contains "structured 33x33x17"
+    run_tstyles -- info "$SCRATCH/plot3d/mesh.bin"
+    expect_exit 2
+    expect_error_line "$SCRATCH/plot3d/mesh.bin" "--solution" "needs at least one solution (q) file"
+}
+
 case_plot3d_truncated() {
     warped_plot3d
     truncate -s 1000 "$SCRATCH/plot3d/grid.xyz"
