@@ -12,10 +12,12 @@ namespace tstyles::cli {
 
 void addPlot3DOptions(CLI::App& command, Plot3DCliOptions& options) {
     command.add_option("--solution", options.solutions,
-                       "Plot3D: solution (q) files, one per time-step in time order (comma-separated or repeated)")
+                       "Plot3D: solution (.q) or function (.f) files, one per time-step in time order "
+                       "(comma-separated or repeated)")
         ->delimiter(',');
-    command.add_option("--var", options.variable, "Plot3D: the quantity shown as density")
-        ->check(CLI::IsMember(plot3DVariableNames()));
+    command.add_option("--var", options.variable,
+                       "Plot3D: the quantity shown as density: density, x-momentum, y-momentum, z-momentum, energy, "
+                       "momentum-magnitude, pressure; function-K for function (.f) files");
     command.add_option("--block", options.block, "Plot3D: which block of a multi-block file (from 0)")
         ->check(CLI::NonNegativeNumber);
     command.add_option("--gamma", options.gamma, "Plot3D: ratio of specific heats, for pressure")

@@ -36,8 +36,11 @@ struct HeaderGuess {
     bool records = false;
     bool multiBlock = false;
     std::vector<glm::ivec3> dims;
+    std::vector<int> functionCounts;  // function files only
     std::size_t dataStart = 0;  // first byte after the header
 };
+
+constexpr int kMaxFunctions = 10000;
 
 // Reads `count` ints at `offset`, framed by markers when `records`; nothing if they do not fit.
 std::optional<std::vector<std::int32_t>> readIntRecord(const std::vector<std::uint8_t>& bytes, std::size_t& offset,
@@ -57,8 +60,9 @@ std::optional<std::vector<std::int32_t>> readIntRecord(const std::vector<std::ui
 }
 
 std::optional<HeaderGuess> parseHeader(const std::vector<std::uint8_t>& bytes, bool bigEndian, bool records,
-                                       bool multiBlock) {
-    HeaderGuess guess{bigEndian, records, multiBlock, {}, 0};
+                                       bool multiBlock, Plot3DKind kind) {
+    HeaderGuess guess{bigEndian, records, multiBlock, {}, {}, 0};
+    const std::size_t intsPerBlock = kind == Plot3DKind::FunctionFile ? 4 : 3;
     std::size_t offset = 0;
     std::int64_t blocks = 1;
     if (multiBlock) {
@@ -66,11 +70,16 @@ std::optional<HeaderGuess> parseHeader(const std::vector<std::uint8_t>& bytes, b
         if (!count || (*count)[0] < 1 || (*count)[0] > kMaxBlocks) return std::nullopt;
         blocks = (*count)[0];
     }
-    const auto dims = readIntRecord(bytes, offset, std::size_t(blocks) * 3, records, bigEndian);
+    const auto dims = readIntRecord(bytes, offset, std::size_t(blocks) * intsPerBlock, records, bigEndian);
     if (!dims) return std::nullopt;
-    for (std::int64_t block = 0; block < blocks; ++block) {
-        const glm::ivec3 size((*dims)[std::size_t(block * 3)], (*dims)[std::size_t(block * 3 + 1)],
-                              (*dims)[std::size_t(block * 3 + 2)]);
+    for (std::size_t block = 0; block < std::size_t(blocks); ++block) {
+        const std::size_t first = block * intsPerBlock;
+        const glm::ivec3 size((*dims)[first], (*dims)[first + 1], (*dims)[first + 2]);
+        if (kind == Plot3DKind::FunctionFile) {
+            const int functions = (*dims)[first + 3];
+            if (functions < 1 || functions > kMaxFunctions) return std::nullopt;
+            guess.functionCounts.push_back(functions);
+        }
         if (glm::any(glm::lessThan(size, glm::ivec3(1)))) return std::nullopt;
         if (double(size.x) * double(size.y) * double(size.z) > double(kMaxNodesPerBlock)) return std::nullopt;
         guess.dims.push_back(size);
@@ -84,9 +93,10 @@ std::size_t nodeCount(glm::ivec3 dims) {
 }
 
 // The record payload sizes of each block's data.
-std::vector<std::size_t> blockRecords(Plot3DKind kind, glm::ivec3 dims, int precision, bool iblank) {
+std::vector<std::size_t> blockRecords(Plot3DKind kind, glm::ivec3 dims, int precision, bool iblank, int functions) {
     const std::size_t nodes = nodeCount(dims);
     if (kind == Plot3DKind::GridFile) return {nodes * (3 * std::size_t(precision) + (iblank ? 4 : 0))};
+    if (kind == Plot3DKind::FunctionFile) return {nodes * std::size_t(functions) * std::size_t(precision)};
     return {4 * std::size_t(precision), 5 * nodes * std::size_t(precision)};
 }
 
@@ -94,9 +104,11 @@ std::vector<std::size_t> blockRecords(Plot3DKind kind, glm::ivec3 dims, int prec
 bool placeBlocks(const std::vector<std::uint8_t>& bytes, const HeaderGuess& guess, Plot3DKind kind, int precision,
                  bool iblank, Plot3DLayout& layout) {
     std::size_t offset = guess.dataStart;
-    layout = Plot3DLayout{guess.bigEndian, guess.records, guess.multiBlock, precision, iblank, guess.dims, {}, {}};
-    for (const glm::ivec3& dims : guess.dims) {
-        const std::vector<std::size_t> records = blockRecords(kind, dims, precision, iblank);
+    layout = Plot3DLayout{guess.bigEndian, guess.records, guess.multiBlock, precision, iblank, guess.dims,
+                          guess.functionCounts, {}, {}};
+    for (std::size_t block = 0; block < guess.dims.size(); ++block) {
+        const int functions = guess.functionCounts.empty() ? 0 : guess.functionCounts[block];
+        const std::vector<std::size_t> records = blockRecords(kind, guess.dims[block], precision, iblank, functions);
         for (std::size_t record = 0; record < records.size(); ++record) {
             const std::size_t payload = records[record];
             if (offset + payload + (guess.records ? 8 : 0) > bytes.size()) return false;
@@ -125,11 +137,14 @@ std::string dimsText(const std::vector<glm::ivec3>& dims) {
 
 [[noreturn]] void failNoLayout(const std::filesystem::path& path, const std::vector<std::uint8_t>& bytes,
                                const std::vector<HeaderGuess>& guesses, Plot3DKind kind) {
-    const char* what = kind == Plot3DKind::GridFile ? "grid" : "solution";
+    const char* what = kind == Plot3DKind::GridFile ? "grid" : kind == Plot3DKind::SolutionFile ? "solution" : "function";
     for (const HeaderGuess& guess : guesses) {
         std::size_t smallest = guess.dataStart;
-        for (const glm::ivec3& dims : guess.dims)
-            for (std::size_t payload : blockRecords(kind, dims, 4, false)) smallest += payload + (guess.records ? 8 : 0);
+        for (std::size_t block = 0; block < guess.dims.size(); ++block) {
+            const int functions = guess.functionCounts.empty() ? 0 : guess.functionCounts[block];
+            for (std::size_t payload : blockRecords(kind, guess.dims[block], 4, false, functions))
+                smallest += payload + (guess.records ? 8 : 0);
+        }
         if (bytes.size() < smallest) {
             throwInputError(path, "", std::string("Plot3D ") + what + " file is truncated: its header announces " +
                                           std::to_string(guess.dims.size()) + " block(s) of " + dimsText(guess.dims) +
@@ -177,7 +192,7 @@ Plot3DFile readPlot3DFile(const std::filesystem::path& path, Plot3DKind kind) {
     for (bool records : {true, false})
         for (bool bigEndian : {false, true})
             for (bool multiBlock : {true, false})
-                if (auto guess = parseHeader(file.bytes, bigEndian, records, multiBlock)) guesses.push_back(*guess);
+                if (auto guess = parseHeader(file.bytes, bigEndian, records, multiBlock, kind)) guesses.push_back(*guess);
     for (const HeaderGuess& guess : guesses)
         for (int precision : {4, 8})
             for (bool iblank : kind == Plot3DKind::GridFile ? std::vector<bool>{false, true} : std::vector<bool>{false})

@@ -12,7 +12,9 @@
 
 namespace tstyles {
 
-enum class Plot3DKind { GridFile, SolutionFile };
+// Grid files (.xyz), solution files (.q: five flow variables) and function files (.f: any number
+// of variables per block, the count stored with each block's dims).
+enum class Plot3DKind { GridFile, SolutionFile, FunctionFile };
 
 struct Plot3DLayout {
     bool bigEndian = false;
@@ -21,8 +23,10 @@ struct Plot3DLayout {
     int precision = 4;        // bytes per real
     bool iblank = false;      // grid files: an int per node after x, y, z
     std::vector<glm::ivec3> dims;  // per block
+    std::vector<int> functionCounts;  // function files: variables per block
     // Byte offset of each block's data: for grids the x array (y, z, IBLANK follow); for solutions
-    // the four reals (mach, alpha, Reynolds number, time), then (next offset) the five q arrays.
+    // the four reals (mach, alpha, Reynolds number, time), then (next offset) the five q arrays;
+    // for function files the first variable's array (the others follow).
     std::vector<std::size_t> blockOffsets;
     std::vector<std::size_t> solutionArrayOffsets;
 

@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 #include "plot3d_layout.h"
@@ -24,6 +25,26 @@ std::string nodeText(glm::ivec3 dims, std::size_t index) {
 
 std::string dimsText(glm::ivec3 dims) {
     return std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" + std::to_string(dims.z);
+}
+
+// "function-K": variable K (from 0) of a function file.
+std::optional<int> functionIndex(const std::string& variable) {
+    const std::string prefix = "function-";
+    if (variable.rfind(prefix, 0) != 0 || variable.size() == prefix.size() || variable.size() > prefix.size() + 4)
+        return std::nullopt;
+    int index = 0;
+    for (char digit : variable.substr(prefix.size())) {
+        if (!std::isdigit(static_cast<unsigned char>(digit))) return std::nullopt;
+        index = index * 10 + (digit - '0');
+    }
+    return index;
+}
+
+bool hasFunctionExtension(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    return extension == ".f" || extension == ".fun";
 }
 
 void requireBlock(const Plot3DFile& file, int block) {
@@ -92,6 +113,9 @@ SolutionBlock readSolutionBlock(const Plot3DFile& file, const Plot3DOptions& opt
         throwInputError(file.path, "", "block " + std::to_string(block) + " has " + dimsText(dims) +
                                            " nodes but the grid '" + gridFile.string() + "' has " +
                                            dimsText(grid.grid.dims) + " in that block");
+    if (functionIndex(options.variable))
+        throwInputError(file.path, "--var", options.variable + " names a variable of a function (.f) file, not of a "
+                                                               "solution (q) file");
     const std::size_t nodes = grid.grid.voxelCount();
     const std::size_t precision = std::size_t(file.layout.precision);
     SolutionBlock result;
@@ -123,12 +147,45 @@ SolutionBlock readSolutionBlock(const Plot3DFile& file, const Plot3DOptions& opt
     return result;
 }
 
+SolutionBlock readFunctionBlock(const Plot3DFile& file, const Plot3DOptions& options, const GridBlock& grid,
+                                const std::filesystem::path& gridFile) {
+    requireBlock(file, options.block);
+    const auto block = std::size_t(options.block);
+    const glm::ivec3 dims = file.layout.dims[block];
+    if (dims != grid.grid.dims)
+        throwInputError(file.path, "", "block " + std::to_string(block) + " has " + dimsText(dims) +
+                                           " nodes but the grid '" + gridFile.string() + "' has " +
+                                           dimsText(grid.grid.dims) + " in that block");
+    const auto function = functionIndex(options.variable);
+    if (!function)
+        throwInputError(file.path, "--var", "a function file holds variables function-0, function-1, ...; '" +
+                                                options.variable + "' is a solution (q) variable");
+    const int functions = file.layout.functionCounts[block];
+    if (*function >= functions)
+        throwInputError(file.path, "--var", "block " + std::to_string(block) + " has " + std::to_string(functions) +
+                                                " function(s); " + options.variable + " was asked for");
+    const std::size_t nodes = grid.grid.voxelCount();
+    const std::size_t start =
+        file.layout.blockOffsets[block] + std::size_t(*function) * nodes * std::size_t(file.layout.precision);
+    SolutionBlock result{std::numeric_limits<double>::quiet_NaN(), std::vector<float>(nodes)};  // no time stored
+    for (std::size_t node = 0; node < nodes; ++node) {
+        const double value = file.real(start + node * std::size_t(file.layout.precision));
+        if (!std::isfinite(value) || std::abs(value) > std::numeric_limits<float>::max())
+            throwInputError(file.path, "", "non-finite " + options.variable + " at node " + nodeText(dims, node) +
+                                               " of block " + std::to_string(block));
+        result.values[node] = grid.blanked[node] ? missingDensity() : float(value);
+    }
+    return result;
+}
+
 void checkOptions(const Plot3DOptions& options) {
     const auto names = plot3DVariableNames();
-    if (std::find(names.begin(), names.end(), options.variable) == names.end()) {
+    if (std::find(names.begin(), names.end(), options.variable) == names.end() && !functionIndex(options.variable)) {
         std::string known;
         for (const std::string& name : names) known += (known.empty() ? "" : ", ") + name;
-        throwInputError("", "--var", "unknown Plot3D variable '" + options.variable + "' (known: " + known + ")");
+        throwInputError("", "--var",
+                        "unknown Plot3D variable '" + options.variable + "' (known: " + known +
+                            "; function-0, function-1, ... for function files)");
     }
     if (!(options.gamma > 1.0) || !std::isfinite(options.gamma))
         throwInputError("", "--gamma", "must be a finite number greater than 1");
@@ -161,8 +218,11 @@ Series readPlot3D(const Plot3DOptions& options) {
     series.manifestPath = options.gridFile;
     std::vector<double> times;
     for (const std::filesystem::path& path : options.solutionFiles) {
-        const Plot3DFile solution = readPlot3DFile(path, Plot3DKind::SolutionFile);
-        SolutionBlock block = readSolutionBlock(solution, options, grid, options.gridFile);
+        const bool functionFile = hasFunctionExtension(path);
+        const Plot3DFile solution =
+            readPlot3DFile(path, functionFile ? Plot3DKind::FunctionFile : Plot3DKind::SolutionFile);
+        SolutionBlock block = functionFile ? readFunctionBlock(solution, options, grid, options.gridFile)
+                                           : readSolutionBlock(solution, options, grid, options.gridFile);
         TimeStep step;
         step.grid = grid.grid;
         step.sourceType = ValueType::Float32;

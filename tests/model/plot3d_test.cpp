@@ -249,6 +249,72 @@ TEST(Plot3D, BadOptionsAndUnknownFilesAreReported) {
     EXPECT_NE(readError(options).find("needs at least one solution (q) file"), std::string::npos);
 }
 
+// A function file: dims and a variable count per block, then the variables (function K at node n:
+// K * 100 + n / 10).
+std::vector<std::uint8_t> functionBytes(const Flavour& flavour, const std::vector<StructuredGrid>& blocks,
+                                        int functions) {
+    Plot3DWriter writer(flavour);
+    if (flavour.multiBlock) {
+        writer.beginRecord();
+        writer.integer(std::int32_t(blocks.size()));
+        writer.endRecord();
+    }
+    writer.beginRecord();
+    for (const StructuredGrid& grid : blocks) {
+        for (int axis = 0; axis < 3; ++axis) writer.integer(grid.dims[axis]);
+        writer.integer(functions);
+    }
+    writer.endRecord();
+    for (const StructuredGrid& grid : blocks) {
+        writer.beginRecord();
+        for (int function = 0; function < functions; ++function)
+            for (std::size_t node = 0; node < grid.voxelCount(); ++node) writer.real(function * 100.0 + node / 10.0);
+        writer.endRecord();
+    }
+    return writer.bytes();
+}
+
+TEST(Plot3D, FunctionFilesGiveTheirVariablesByIndex) {
+    for (const Flavour flavour : {Flavour{}, Flavour{true, true, true, 8, false}}) {
+        SCOPED_TRACE(flavourName(flavour));
+        Plot3DOptions options = writeDataset("function_" + flavourName(flavour), flavour, {0.0});
+        const std::vector<StructuredGrid> blocks = testBlocks(flavour.multiBlock);
+        options.solutionFiles = {options.gridFile.parent_path() / "a.f", options.gridFile.parent_path() / "b.f"};
+        for (const auto& file : options.solutionFiles) tstyles_test::writeBytes(file, functionBytes(flavour, blocks, 3));
+        options.variable = "function-2";
+        const Series series = readPlot3D(options);
+        ASSERT_EQ(series.size(), 2u);
+        EXPECT_EQ(series.steps[1].time, 1.0);  // function files store no time
+        EXPECT_NEAR(series.valueRange[0], 200.0, 1e-9);
+        EXPECT_NEAR(series.valueRange[1], 200.0 + (blocks.back().voxelCount() - 1) / 10.0, 1e-4);
+        const double value =
+            series.valueRange[0] + series.steps[0].density[40] * (series.valueRange[1] - series.valueRange[0]);
+        EXPECT_NEAR(value, 204.0, 1e-3);
+
+        options.variable = "function-3";
+        EXPECT_NE(readError(options).find("a.f: --var: block " + std::to_string(options.block) +
+                                          " has 3 function(s); function-3 was asked for"),
+                  std::string::npos)
+            << readError(options);
+        options.variable = "pressure";
+        EXPECT_NE(readError(options).find("'pressure' is a solution (q) variable"), std::string::npos)
+            << readError(options);
+    }
+}
+
+TEST(Plot3D, TruncatedFunctionFileIsReported) {
+    Plot3DOptions options = writeDataset("function_truncated", Flavour{}, {0.0});
+    options.solutionFiles = {options.gridFile.parent_path() / "a.f"};
+    std::vector<std::uint8_t> bytes = functionBytes(Flavour{}, testBlocks(false), 2);
+    bytes.resize(bytes.size() - 8);
+    tstyles_test::writeBytes(options.solutionFiles[0], bytes);
+    options.variable = "function-0";
+    EXPECT_NE(readError(options).find("a.f: Plot3D function file is truncated: its header announces 1 block(s) of "
+                                      "9x7x5 nodes"),
+              std::string::npos)
+        << readError(options);
+}
+
 TEST(Plot3D, GridExtensions) {
     EXPECT_TRUE(hasPlot3DGridExtension("a/b/wing.xyz"));
     EXPECT_TRUE(hasPlot3DGridExtension("WING.X"));

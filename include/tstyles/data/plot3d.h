@@ -1,5 +1,6 @@
 // Reading Plot3D (NASA's structured-grid CFD format): a grid file (x, y, z per node, optionally
-// IBLANK) and one solution ("q") file per time-step (density, momentum x/y/z, energy per node).
+// IBLANK) and one solution ("q") file per time-step (density, momentum x/y/z, energy per node) or
+// one function file (".f", ".fun": any number of variables per node) per time-step.
 // Binary only, 3D, single or multi-block, big- or little-endian, float32 or float64, with or
 // without Fortran record markers: the layout is found from the file size and header.
 #pragma once
@@ -14,9 +15,10 @@ namespace tstyles {
 
 struct Plot3DOptions {
     std::filesystem::path gridFile;
-    // One solution file per time-step, in time order.
+    // One solution (.q) or function (.f, .fun) file per time-step, in time order.
     std::vector<std::filesystem::path> solutionFiles;
-    // Which quantity becomes the density (plot3DVariableNames()).
+    // Which quantity becomes the density: plot3DVariableNames() for q files, "function-K" (K from 0)
+    // for function files.
     std::string variable = "density";
     // Which block of a multi-block file (a series holds one grid per time-step).
     int block = 0;
