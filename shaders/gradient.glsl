@@ -1,7 +1,10 @@
 // Density gradients for lit-sphere shading: central differences one voxel apart in the time-step's
 // own grid (one-sided at its faces), turned into world space through the grid's placement and
 // spacing, so anisotropic and rotated grids shade correctly.
+#include "structured_gradient.glsl"
+
 vec3 worldGradient(int step, vec3 worldPosition) {
+    if (isStructured(step)) return structuredWorldGradient(step, worldPosition);
     vec3 voxel = voxelCoordinate(step, worldPosition);
     vec3 upperLimit = timeSteps.steps[step].dims.xyz - 1.0;
     vec3 gradient;

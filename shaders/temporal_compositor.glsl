@@ -60,7 +60,7 @@ float emptySpaceUntil(vec3 position, float t) {
     bool anyStep = false;
     FOR_EACH_TIME_STEP_AT_SAMPLE
         vec3 voxel = VOXEL_AT_SAMPLE;
-        if (brickVisible(step, voxel)) return -1.0;
+        if (insideGrid(step, position) && brickVisible(step, voxel)) return -1.0;
         // The jump to the brick's exit needs voxel positions linear in t; elsewhere the ray only
         // skips this sample's work.
 #if ALL_AFFINE
@@ -117,6 +117,7 @@ TemporalSample compositeTemporal(vec3 position, float t) {
 #endif
 
     FOR_EACH_TIME_STEP_AT_SAMPLE
+        if (!insideGrid(step, position)) continue;
         vec3 atlasPosition = atlasCoordinateOfVoxel(step, VOXEL_AT_SAMPLE);
         float density = sampleDensity(atlasPosition);
         bool inMask = insideMask(step, atlasPosition);

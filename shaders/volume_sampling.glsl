@@ -3,10 +3,13 @@ layout(binding = ATLAS_UNIT) uniform sampler3D densityAtlas;
 layout(binding = MASK_ATLAS_UNIT) uniform sampler3D maskAtlas;
 uniform vec3 inverseAtlasSize;
 
+#include "structured_grid.glsl"
+
 // Voxel coordinates of a world position in a time-step's grid, clamped to the grid: samples sit
 // on texel centres, and clamping to [0, dims - 1] keeps trilinear filtering inside the time-step's
 // own brick, so bricks need no border between them.
 vec3 voxelCoordinate(int step, vec3 worldPosition) {
+    if (isStructured(step)) return structuredVoxelCoordinate(step, worldPosition);
     vec3 voxel = (timeSteps.steps[step].worldToVoxel * vec4(worldPosition, 1.0)).xyz;
     return clamp(voxel, vec3(0.0), timeSteps.steps[step].dims.xyz - 1.0);
 }

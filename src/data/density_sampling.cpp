@@ -1,8 +1,11 @@
-// Trilinear density lookups in a time-step's rectilinear grid, in world coordinates.
+// Trilinear density lookups in a time-step's grid (rectilinear or structured), in world coordinates.
 #include "tstyles/data/density_sampling.h"
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+
+#include "tstyles/data/structured_point_location.h"
 
 namespace tstyles {
 namespace {
@@ -15,34 +18,69 @@ double valueAt(const TimeStep& step, const glm::ivec3& dims, int x, int y, int z
     return double(step.density[index]);
 }
 
-}  // namespace
-
-std::optional<double> sampleDensity(const TimeStep& step, const glm::dvec3& world) {
-    const RectilinearGrid& grid = step.rectilinear();
-    if (step.density.size() != grid.voxelCount() || grid.voxelCount() == 0) return std::nullopt;
-    // Grid-local position: undo the placement (origin, then rotation), then count voxels.
-    const glm::dvec3 local = glm::conjugate(step.placement.rotation) * (world - step.placement.origin);
-    glm::dvec3 voxel = local / grid.spacing;
-    const glm::dvec3 last = glm::dvec3(grid.dims - 1);
-    for (int axis = 0; axis < 3; ++axis) {
-        if (voxel[axis] < -kBoundaryTolerance || voxel[axis] > last[axis] + kBoundaryTolerance) return std::nullopt;
-        voxel[axis] = std::clamp(voxel[axis], 0.0, last[axis]);
-    }
-    const glm::ivec3 lower = glm::min(glm::ivec3(glm::floor(voxel)), glm::max(grid.dims - 2, 0));
-    const glm::ivec3 upper = glm::min(lower + 1, grid.dims - 1);
+// Trilinear between the samples around `voxel` (inside [0, dims - 1]).
+double interpolateAtVoxel(const TimeStep& step, const glm::ivec3& dims, glm::dvec3 voxel) {
+    const glm::ivec3 lower = glm::min(glm::ivec3(glm::floor(voxel)), glm::max(dims - 2, 0));
+    const glm::ivec3 upper = glm::min(lower + 1, dims - 1);
     const glm::dvec3 t = voxel - glm::dvec3(lower);
     auto along = [&](int y, int z) {
-        return glm::mix(valueAt(step, grid.dims, lower.x, y, z), valueAt(step, grid.dims, upper.x, y, z), t.x);
+        return glm::mix(valueAt(step, dims, lower.x, y, z), valueAt(step, dims, upper.x, y, z), t.x);
     };
     const double front = glm::mix(along(lower.y, lower.z), along(upper.y, lower.z), t.y);
     const double back = glm::mix(along(lower.y, upper.z), along(upper.y, upper.z), t.y);
     return glm::mix(front, back, t.z);
 }
 
+glm::dvec3 localPosition(const TimeStep& step, const glm::dvec3& world) {
+    // Undo the placement: origin, then rotation.
+    return glm::conjugate(step.placement.rotation) * (world - step.placement.origin);
+}
+
+std::optional<double> sampleStructured(const TimeStep& step, const StructuredPointLocator& locator,
+                                       const glm::dvec3& world) {
+    const auto computational = locator.locate(localPosition(step, world));
+    if (!computational) return std::nullopt;
+    return interpolateAtVoxel(step, step.dims(), *computational);
+}
+
+}  // namespace
+
+std::optional<double> sampleDensity(const TimeStep& step, const glm::dvec3& world) {
+    if (step.density.size() != gridVoxelCount(step.grid) || step.density.empty()) return std::nullopt;
+    if (const StructuredGrid* structured = step.structured()) {
+        // Exact point location (no inverse map): a locator per call is fine for a pick.
+        return sampleStructured(step, StructuredPointLocator(*structured), world);
+    }
+    const RectilinearGrid& grid = step.rectilinear();
+    glm::dvec3 voxel = localPosition(step, world) / grid.spacing;
+    const glm::dvec3 last = glm::dvec3(grid.dims - 1);
+    for (int axis = 0; axis < 3; ++axis) {
+        if (voxel[axis] < -kBoundaryTolerance || voxel[axis] > last[axis] + kBoundaryTolerance) return std::nullopt;
+        voxel[axis] = std::clamp(voxel[axis], 0.0, last[axis]);
+    }
+    return interpolateAtVoxel(step, grid.dims, voxel);
+}
+
 std::vector<std::optional<double>> temporalProfile(const Series& series, const glm::dvec3& world) {
     std::vector<std::optional<double>> profile;
     profile.reserve(series.size());
-    for (const TimeStep& step : series.steps) profile.push_back(sampleDensity(step, world));
+    // One locator per structured grid, however many time-steps share it.
+    std::vector<std::unique_ptr<StructuredPointLocator>> locators;
+    for (const TimeStep& step : series.steps) {
+        const StructuredGrid* structured = step.structured();
+        if (!structured || step.density.size() != structured->voxelCount()) {
+            profile.push_back(sampleDensity(step, world));
+            continue;
+        }
+        auto known = std::find_if(locators.begin(), locators.end(), [structured](const auto& locator) {
+            return locator->grid().nodes == structured->nodes;
+        });
+        if (known == locators.end()) {
+            locators.push_back(std::make_unique<StructuredPointLocator>(*structured));
+            known = locators.end() - 1;
+        }
+        profile.push_back(sampleStructured(step, **known, world));
+    }
     return profile;
 }
 

@@ -13,6 +13,7 @@
 
 #include "manifest_field.h"
 #include "raw_values.h"
+#include "structured_grid_files.h"
 #include "tstyles/core/errors.h"
 
 namespace tstyles {
@@ -74,12 +75,8 @@ std::filesystem::path resolveBeside(const std::filesystem::path& manifest, const
     return file.is_absolute() ? file : manifest.parent_path() / file;
 }
 
-RectilinearGrid readGrid(const ManifestField& field) {
+RectilinearGrid readRectilinearGrid(const ManifestField& field) {
     field.allowOnlyKeys({"type", "dims", "spacing"});
-    const ManifestField type = field.member("type");
-    if (type.string() != "rectilinear") {
-        type.fail("unknown grid type '" + type.string() + "' (known: rectilinear)");
-    }
     RectilinearGrid grid;
     const ManifestField dims = field.member("dims");
     const ManifestField spacing = field.member("spacing");
@@ -103,6 +100,13 @@ RectilinearGrid readGrid(const ManifestField& field) {
     return grid;
 }
 
+Grid readGrid(const ManifestField& field, std::size_t stepIndex, StructuredGridFiles& structuredGrids) {
+    const ManifestField type = field.member("type");
+    if (type.string() == "rectilinear") return readRectilinearGrid(field);
+    if (type.string() == "structured") return structuredGrids.read(field, stepIndex);
+    type.fail("unknown grid type '" + type.string() + "' (known: rectilinear, structured)");
+}
+
 Placement readPlacement(const std::optional<ManifestField>& field) {
     Placement placement;
     if (!field) return placement;
@@ -120,11 +124,11 @@ Placement readPlacement(const std::optional<ManifestField>& field) {
     return placement;
 }
 
-StepEntry readStepEntry(const ManifestField& field) {
+StepEntry readStepEntry(const ManifestField& field, std::size_t stepIndex, StructuredGridFiles& structuredGrids) {
     field.allowOnlyKeys({"time", "grid", "placement", "values", "mask"});
     StepEntry entry;
     entry.step.time = field.member("time").finiteNumber();
-    entry.step.grid = readGrid(field.member("grid"));
+    entry.step.grid = readGrid(field.member("grid"), stepIndex, structuredGrids);
     entry.step.placement = readPlacement(field.optionalMember("placement"));
 
     const ManifestField values = field.member("values");
@@ -151,9 +155,10 @@ std::vector<StepEntry> readStepEntries(const ManifestField& field) {
     if (count == 0) field.fail("must list at least one time-step");
     std::vector<StepEntry> entries;
     entries.reserve(count);
+    StructuredGridFiles structuredGrids;
     for (std::size_t index = 0; index < count; ++index) {
         const ManifestField stepField = field.element(index);
-        entries.push_back(readStepEntry(stepField));
+        entries.push_back(readStepEntry(stepField, index, structuredGrids));
         // Time orders the series everywhere (TSTF axes, playback), so ties are as wrong as reversals.
         if (index > 0 && !(entries[index].step.time > entries[index - 1].step.time)) {
             stepField.member("time").fail(
@@ -177,12 +182,14 @@ std::optional<std::array<double, 2>> readValueRange(const std::optional<Manifest
 
 void readStepFiles(const std::filesystem::path& manifest, std::size_t index, StepEntry& entry) {
     TimeStep& step = entry.step;
-    RawValues raw = readRawValues({manifest, entry.valuesField, index, step.valuesFile}, step.rectilinear(),
-                                  step.sourceType);
+    // The raw files hold one value per node whatever the grid kind: only the dims matter here.
+    RectilinearGrid shape;
+    shape.dims = step.dims();
+    RawValues raw = readRawValues({manifest, entry.valuesField, index, step.valuesFile}, shape, step.sourceType);
     step.density = std::move(raw.values);  // still raw: normalised once the value range is known
     step.rawRange = raw.range;
     if (!entry.maskField.empty()) {
-        step.mask = readMask({manifest, entry.maskField, index, step.maskFile}, step.rectilinear());
+        step.mask = readMask({manifest, entry.maskField, index, step.maskFile}, shape);
     }
 }
 

@@ -1,6 +1,8 @@
 // Writing a series to disk: one raw file per time-step (and mask), then the manifest last, so a
 // folder with a series.json always has every file that manifest names.
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <cstddef>
 #include <span>
@@ -19,6 +21,10 @@ namespace {
 
 using OrderedJson = nlohmann::ordered_json;
 
+glm::ivec3 dimsOf(const RawTimeStep& step) {
+    return step.structured ? step.structured->dims : step.grid.dims;
+}
+
 // A RawSeries that loadSeries would reject is a bug in the caller (a generator), not bad user input.
 void checkWritable(const RawSeries& series) {
     const auto fail = [](const std::string& problem) {
@@ -32,8 +38,8 @@ void checkWritable(const RawSeries& series) {
     for (std::size_t index = 0; index < series.steps.size(); ++index) {
         const RawTimeStep& step = series.steps[index];
         const std::string where = "time-step " + std::to_string(index) + ": ";
-        if (glm::any(glm::lessThan(step.grid.dims, glm::ivec3(2)))) fail(where + "dims must be at least 2");
-        const std::size_t voxels = step.grid.voxelCount();
+        if (glm::any(glm::lessThan(dimsOf(step), glm::ivec3(2)))) fail(where + "dims must be at least 2");
+        const std::size_t voxels = step.structured ? step.structured->voxelCount() : step.grid.voxelCount();
         if (step.bytes.size() != voxels * bytesPerValue(step.type)) {
             fail(where + "has " + std::to_string(step.bytes.size()) + " value bytes, expected " +
                  std::to_string(voxels * bytesPerValue(step.type)));
@@ -57,13 +63,20 @@ OrderedJson vec3Json(const glm::dvec3& v) {
     return OrderedJson::array({v.x, v.y, v.z});
 }
 
-OrderedJson stepJson(const RawTimeStep& step, const std::string& stem) {
+OrderedJson stepJson(const RawTimeStep& step, const std::string& stem, const std::string& coordinatesFile) {
     const AxisAngle rotation = toAxisAngle(step.placement.rotation);
     OrderedJson json;
     json["time"] = step.time;
-    json["grid"] = {{"type", "rectilinear"},
-                    {"dims", OrderedJson::array({step.grid.dims.x, step.grid.dims.y, step.grid.dims.z})},
-                    {"spacing", vec3Json(step.grid.spacing)}};
+    const glm::ivec3 dims = dimsOf(step);
+    if (step.structured) {
+        json["grid"] = {{"type", "structured"},
+                        {"dims", OrderedJson::array({dims.x, dims.y, dims.z})},
+                        {"coordinates", {{"file", coordinatesFile}}}};
+    } else {
+        json["grid"] = {{"type", "rectilinear"},
+                        {"dims", OrderedJson::array({dims.x, dims.y, dims.z})},
+                        {"spacing", vec3Json(step.grid.spacing)}};
+    }
     json["placement"] = {{"origin", vec3Json(step.placement.origin)},
                          {"rotation", {{"axis", vec3Json(rotation.axis)}, {"angle_deg", rotation.angleDeg}}}};
     json["values"] = {{"file", stem + ".raw"}, {"type", toString(step.type)}};
@@ -104,6 +117,33 @@ void writeBytes(const std::filesystem::path& target, const std::vector<std::uint
     writeFileAtomically(target, std::as_bytes(std::span(bytes)));
 }
 
+// float32 x, y, z per node, little-endian.
+void writeCoordinates(const std::filesystem::path& target, const StructuredGrid& grid) {
+    std::vector<std::uint8_t> bytes;
+    bytes.reserve(grid.nodes->size() * 12);
+    for (const glm::vec3& node : *grid.nodes)
+        for (int axis = 0; axis < 3; ++axis) {
+            const auto bits = std::bit_cast<std::uint32_t>(node[axis]);
+            for (int shift = 0; shift < 32; shift += 8) bytes.push_back(std::uint8_t(bits >> shift));
+        }
+    writeBytes(target, bytes);
+}
+
+// The coordinates file of a structured time-step: one per distinct node array, written once.
+std::string coordinatesFileOf(const RawTimeStep& step, const std::filesystem::path& directory,
+                              std::vector<const std::vector<glm::vec3>*>& written) {
+    if (!step.structured) return {};
+    const auto* nodes = step.structured->nodes.get();
+    auto known = std::find(written.begin(), written.end(), nodes);
+    const std::size_t index = std::size_t(known - written.begin());
+    const std::string name = "grid" + std::string(index < 10 ? "0" : "") + std::to_string(index) + ".xyz.f32";
+    if (known == written.end()) {
+        writeCoordinates(directory / name, *step.structured);
+        written.push_back(nodes);
+    }
+    return name;
+}
+
 }  // namespace
 
 void writeSeries(const RawSeries& series, const std::filesystem::path& directory) {
@@ -118,12 +158,14 @@ void writeSeries(const RawSeries& series, const std::filesystem::path& directory
     manifest["name"] = series.name;
     manifest["value_range"] = OrderedJson::array({series.valueRange[0], series.valueRange[1]});
     manifest["time_steps"] = OrderedJson::array();
+    std::vector<const std::vector<glm::vec3>*> writtenGrids;
     for (std::size_t index = 0; index < series.steps.size(); ++index) {
         const RawTimeStep& step = series.steps[index];
         const std::string stem = stepFileStem(index, series.steps.size());
         writeBytes(directory / (stem + ".raw"), step.bytes);
         if (step.mask) writeBytes(directory / (stem + "_mask.raw"), *step.mask);
-        manifest["time_steps"].push_back(stepJson(step, stem));
+        const std::string coordinatesFile = coordinatesFileOf(step, directory, writtenGrids);
+        manifest["time_steps"].push_back(stepJson(step, stem, coordinatesFile));
     }
     std::string text;
     appendReadable(text, manifest, 0);

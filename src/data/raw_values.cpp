@@ -101,6 +101,11 @@ std::vector<std::uint8_t> readMask(const RawFileSource& source, const Rectilinea
     return readExactly(source, "mask file", grid.voxelCount(), dimsText(grid) + " uint8 values");
 }
 
+std::vector<std::uint8_t> readExactBytes(const RawFileSource& source, const std::string& kind,
+                                         std::size_t expectedBytes, const std::string& layout) {
+    return readExactly(source, kind, expectedBytes, layout);
+}
+
 void normalizeToDensity(std::vector<float>& values, const std::array<double, 2>& valueRange) {
     const double low = valueRange[0];
     const double width = valueRange[1] - valueRange[0];

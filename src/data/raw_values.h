@@ -34,6 +34,11 @@ RawValues readRawValues(const RawFileSource& source, const RectilinearGrid& grid
 // Reads one uint8 per voxel.
 std::vector<std::uint8_t> readMask(const RawFileSource& source, const RectilinearGrid& grid);
 
+// Reads a whole file of exactly `expectedBytes` bytes (`kind` and `layout` word the size error:
+// "coordinates file", "17 x 9 x 5 nodes, 3 float32 each").
+std::vector<std::uint8_t> readExactBytes(const RawFileSource& source, const std::string& kind,
+                                         std::size_t expectedBytes, const std::string& layout);
+
 // Maps raw values in place to density: clamp((v - lo) / (hi - lo), 0, 1). Needs lo < hi.
 void normalizeToDensity(std::vector<float>& values, const std::array<double, 2>& valueRange);
 

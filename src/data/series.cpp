@@ -61,6 +61,18 @@ glm::dquat fromAxisAngle(const AxisAngle& rotation) {
     return glm::angleAxis(glm::radians(rotation.angleDeg), glm::normalize(rotation.axis));
 }
 
+glm::ivec3 gridDims(const Grid& grid) {
+    return std::visit([](const auto& kind) { return kind.dims; }, grid);
+}
+
+std::size_t gridVoxelCount(const Grid& grid) {
+    return std::visit([](const auto& kind) { return kind.voxelCount(); }, grid);
+}
+
+std::string gridTypeName(const Grid& grid) {
+    return std::holds_alternative<StructuredGrid>(grid) ? "structured" : "rectilinear";
+}
+
 bool Series::hasMasks() const {
     return std::any_of(steps.begin(), steps.end(),
                        [](const TimeStep& step) { return step.mask.has_value(); });
@@ -68,14 +80,22 @@ bool Series::hasMasks() const {
 
 Bounds Series::worldBounds(std::size_t step) const {
     const TimeStep& timeStep = steps.at(step);
-    const glm::dvec3 extent = timeStep.rectilinear().extent();
+    // Grid-local bounds: the lattice's box, or the box of a structured grid's nodes.
+    glm::dvec3 localLower(0.0);
+    glm::dvec3 extent(0.0);
+    if (const StructuredGrid* structured = timeStep.structured()) {
+        localLower = structured->localLower;
+        extent = structured->localUpper - structured->localLower;
+    } else {
+        extent = timeStep.rectilinear().extent();
+    }
     const glm::dmat4 toWorld = timeStep.placement.gridToWorld();
     Bounds bounds{glm::dvec3(std::numeric_limits<double>::infinity()),
                   glm::dvec3(-std::numeric_limits<double>::infinity())};
     // A rotated box's axis-aligned bounds are reached at its corners, so eight points suffice.
     for (int corner = 0; corner < 8; ++corner) {
-        const glm::dvec3 local((corner & 1) ? extent.x : 0.0, (corner & 2) ? extent.y : 0.0,
-                               (corner & 4) ? extent.z : 0.0);
+        const glm::dvec3 local = localLower + glm::dvec3((corner & 1) ? extent.x : 0.0, (corner & 2) ? extent.y : 0.0,
+                                                         (corner & 4) ? extent.z : 0.0);
         const glm::dvec3 world(toWorld * glm::dvec4(local, 1.0));
         bounds.lower = glm::min(bounds.lower, world);
         bounds.upper = glm::max(bounds.upper, world);
@@ -98,6 +118,10 @@ double Series::finestSpacing() const {
     if (steps.empty()) throw std::logic_error("Series::finestSpacing: the series has no time-steps");
     double finest = std::numeric_limits<double>::infinity();
     for (const TimeStep& step : steps) {
+        if (const StructuredGrid* structured = step.structured()) {
+            finest = std::min(finest, structured->finestEdge);
+            continue;
+        }
         const glm::dvec3 spacing = step.rectilinear().spacing;
         finest = std::min({finest, spacing.x, spacing.y, spacing.z});
     }

@@ -2,6 +2,8 @@
 // cost in memory.
 #include "tstyles/data/series_summary.h"
 
+#include "tstyles/data/inverse_map.h"
+
 #include <algorithm>
 #include <iomanip>
 #include <sstream>
@@ -66,12 +68,14 @@ void printTable(std::ostream& out, const std::vector<Row>& rows) {
 
 Row stepRow(const Series& series, std::size_t index) {
     const TimeStep& step = series.steps[index];
-    const RectilinearGrid& grid = step.rectilinear();
+    const glm::ivec3 dims = step.dims();
+    const StructuredGrid* structured = step.structured();
     return {std::to_string(index),
             number(step.time),
-            "rectilinear " + std::to_string(grid.dims.x) + "x" + std::to_string(grid.dims.y) + "x" +
-                std::to_string(grid.dims.z),
-            vec3Text(grid.spacing),
+            gridTypeName(step.grid) + " " + std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" +
+                std::to_string(dims.z),
+            structured ? "curvilinear, edges from " + number(structured->finestEdge)
+                       : vec3Text(step.rectilinear().spacing),
             vec3Text(step.placement.origin),
             rotationText(step.placement.rotation),
             number(step.rawRange[0]) + " .. " + number(step.rawRange[1]) + " " + toString(step.sourceType),
@@ -94,15 +98,55 @@ void printOverlaps(std::ostream& out, const Series& series) {
     printTable(out, rows);
 }
 
+std::string structuredGridsText(const Series& series) {
+    const std::vector<const StructuredGrid*> grids = distinctStructuredGrids(series);
+    if (grids.empty()) return {};
+    std::ostringstream out;
+    out << "Structured grids: " << grids.size() << " (node coordinates per node; samples are located through an "
+        << "inverse map of RGBA32F texels over each grid's bounds)\n";
+    for (const StructuredGrid* grid : grids) {
+        const glm::ivec3 map = inverseMapDims(*grid);
+        out << "  " << (grid->coordinatesFile.empty() ? std::string("(in memory)") : grid->coordinatesFile.string())
+            << ": " << grid->dims.x << "x" << grid->dims.y << "x" << grid->dims.z << " nodes, local bounds "
+            << vec3Text(grid->localLower) << " to " << vec3Text(grid->localUpper) << ", inverse map " << map.x << "x"
+            << map.y << "x" << map.z << " (" << mibText(std::size_t(map.x) * map.y * map.z * 16) << ")\n";
+    }
+    return out.str();
+}
+
 }  // namespace
+
+std::vector<const StructuredGrid*> distinctStructuredGrids(const Series& series) {
+    std::vector<const StructuredGrid*> grids;
+    for (const TimeStep& step : series.steps) {
+        const StructuredGrid* grid = step.structured();
+        if (!grid) continue;
+        const bool known = std::any_of(grids.begin(), grids.end(),
+                                       [grid](const StructuredGrid* other) { return other->nodes == grid->nodes; });
+        if (!known) grids.push_back(grid);
+    }
+    return grids;
+}
+
+std::size_t inverseMapBytes(const Series& series) {
+    std::size_t bytes = 0;
+    for (const StructuredGrid* grid : distinctStructuredGrids(series)) {
+        const glm::ivec3 map = inverseMapDims(*grid);
+        bytes += std::size_t(map.x) * std::size_t(map.y) * std::size_t(map.z) * sizeof(glm::vec4);
+    }
+    return bytes;
+}
 
 bool isFullyAligned(const Series& series) {
     if (series.steps.empty()) return true;
     const TimeStep& first = series.steps.front();
     return std::all_of(series.steps.begin(), series.steps.end(), [&first](const TimeStep& step) {
-        return step.grid.index() == first.grid.index() &&
-               step.rectilinear().dims == first.rectilinear().dims &&
-               step.rectilinear().spacing == first.rectilinear().spacing && step.placement == first.placement;
+        if (step.grid.index() != first.grid.index() || step.dims() != first.dims() ||
+            !(step.placement == first.placement))
+            return false;
+        if (const StructuredGrid* structured = step.structured())
+            return structured->nodes == first.structured()->nodes;
+        return step.rectilinear().spacing == first.rectilinear().spacing;
     });
 }
 
@@ -119,19 +163,20 @@ double overlapFraction(const Series& series, std::size_t a, std::size_t b) {
 std::size_t diskBytes(const Series& series) {
     std::size_t bytes = 0;
     for (const TimeStep& step : series.steps) {
-        const std::size_t voxels = step.rectilinear().voxelCount();
+        const std::size_t voxels = gridVoxelCount(step.grid);
         bytes += voxels * bytesPerValue(step.sourceType) + (step.mask ? voxels : 0);
     }
+    for (const StructuredGrid* grid : distinctStructuredGrids(series)) bytes += grid->voxelCount() * 12;
     return bytes;
 }
 
 std::size_t gpuBytes(const Series& series) {
     std::size_t bytes = 0;
     for (const TimeStep& step : series.steps) {
-        const std::size_t voxels = step.rectilinear().voxelCount();
+        const std::size_t voxels = gridVoxelCount(step.grid);
         bytes += voxels * kGpuBytesPerDensityVoxel + (step.mask ? voxels * kGpuBytesPerMaskVoxel : 0);
     }
-    return bytes;
+    return bytes + inverseMapBytes(series);
 }
 
 std::string describeSeries(const Series& series) {
@@ -158,8 +203,10 @@ std::string describeSeries(const Series& series) {
 
     printOverlaps(out, series);
     out << "\n";
+    out << structuredGridsText(series);
     out << "Memory: " << mibText(diskBytes(series)) << " on disk, " << mibText(gpuBytes(series))
-        << " on the GPU (16-bit density" << (series.hasMasks() ? " + 8-bit mask" : "") << " per voxel)\n";
+        << " on the GPU (16-bit density" << (series.hasMasks() ? " + 8-bit mask" : "") << " per voxel"
+        << (inverseMapBytes(series) > 0 ? ", inverse maps" : "") << ")\n";
     return out.str();
 }
 

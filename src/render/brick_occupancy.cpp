@@ -7,8 +7,8 @@
 namespace tstyles {
 
 BrickGrid computeBrickGrid(const TimeStep& step) {
-    const RectilinearGrid& grid = step.rectilinear();
-    const glm::ivec3 dims = grid.dims;
+    // Bricks are in computational (voxel) space, so every grid kind is bricked the same way.
+    const glm::ivec3 dims = step.dims();
     BrickGrid result;
     result.bricks = glm::max((dims - 1 + kBrickSize - 1) / kBrickSize, glm::ivec3(1));
     result.minMax.assign(std::size_t(result.bricks.x) * result.bricks.y * result.bricks.z, {1.0f, 0.0f});

@@ -12,6 +12,9 @@ EntryExitBuffers::EntryExitBuffers(const ShaderLibrary& shaders)
     : program_(Program::build(shaders, {{GL_VERTEX_SHADER, "entry_exit.vert"},
                                         {GL_GEOMETRY_SHADER, "entry_exit.geom"},
                                         {GL_FRAGMENT_SHADER, "entry_exit.frag"}})),
+      meshProgram_(Program::build(shaders, {{GL_VERTEX_SHADER, "entry_exit_mesh.vert"},
+                                            {GL_GEOMETRY_SHADER, "entry_exit.geom"},
+                                            {GL_FRAGMENT_SHADER, "entry_exit.frag"}})),
       emptyVertexArray_(VertexArray::create()) {}
 
 void EntryExitBuffers::resize(glm::ivec2 viewport, int layers) {
@@ -62,7 +65,15 @@ void EntryExitBuffers::render(const GpuSeries& series, const glm::mat4& viewProj
     program_.set("viewportSize", glm::vec2(viewport));
     program_.use();
     emptyVertexArray_.bind();
-    glDrawArraysInstanced(GL_TRIANGLES, 0, 36, GLsizei(series.proxyCount()));
+    glDrawArraysInstanced(GL_TRIANGLES, 0, 36, GLsizei(series.boxCount()));
+    // Structured grids: their boundary faces, pulled from the mesh buffer by gl_VertexID.
+    if (series.structuredGrids().boundaryVertexCount() > 0) {
+        meshProgram_.set("viewProjection", viewProjection);
+        meshProgram_.set("inverseViewProjection", inverseViewProjection);
+        meshProgram_.set("viewportSize", glm::vec2(viewport));
+        meshProgram_.use();
+        glDrawArrays(GL_TRIANGLES, 0, GLsizei(series.structuredGrids().boundaryVertexCount()));
+    }
 
     glDisablei(GL_BLEND, 0);
     glDisablei(GL_BLEND, 1);

@@ -49,12 +49,17 @@ Texture createAtlas(GLenum format, const glm::ivec3& size) {
     return texture;
 }
 
-// The proxy layer of every time-step; time-steps with the same grid extent and placement share one.
+// The proxy layer of every rectilinear time-step; time-steps with the same grid extent and
+// placement share one. Structured time-steps get theirs from GpuStructuredGrids (after the boxes).
 std::vector<int> assignProxyLayers(const Series& series, std::vector<ProxyBox>& boxes) {
     std::vector<int> layers;
     std::vector<std::size_t> firstStepOfLayer;
     for (std::size_t step = 0; step < series.size(); ++step) {
         const auto& timeStep = series.steps[step];
+        if (timeStep.structured()) {
+            layers.push_back(-1);
+            continue;
+        }
         int layer = -1;
         for (std::size_t candidate = 0; candidate < firstStepOfLayer.size(); ++candidate) {
             const auto& other = series.steps[firstStepOfLayer[candidate]];
@@ -90,11 +95,12 @@ GpuSeries::GpuSeries(const Series& series)
       occupancyAtlas_(Texture::create(GL_TEXTURE_3D)),
       timeStepTable_(Buffer::create()),
       proxyTable_(Buffer::create()) {
+    // Validation of structured grids happens on load; here they only need an inverse map and a mesh.
     timeStepCount_ = series.size();
     hasMasks_ = series.hasMasks();
     allAffine_ = std::all_of(series.steps.begin(), series.steps.end(), hasAffineWorldToVoxel);
     std::vector<glm::ivec3> dims;
-    for (const auto& step : series.steps) dims.push_back(step.rectilinear().dims);
+    for (const auto& step : series.steps) dims.push_back(step.dims());
     layout_ = planAtlas(dims, maxTextureSize3D());
 
     glGetError();  // start from a clean error state so that OUT_OF_MEMORY below is ours
@@ -107,7 +113,7 @@ GpuSeries::GpuSeries(const Series& series)
     std::vector<std::uint8_t> maskTexels;
     for (std::size_t index = 0; index < series.size(); ++index) {
         const auto& step = series.steps[index];
-        const glm::ivec3 size = step.rectilinear().dims;
+        const glm::ivec3 size = step.dims();
         const glm::ivec3 origin = layout_.brickOrigins[index];
         texels.resize(step.density.size());
         std::transform(step.density.begin(), step.density.end(), texels.begin(), [](float density) {
@@ -141,15 +147,20 @@ GpuSeries::GpuSeries(const Series& series)
     occupancyAtlas_.setClampToEdge();
 
     std::vector<ProxyBox> boxes;
-    const std::vector<int> layers = assignProxyLayers(series, boxes);
-    proxyCount_ = boxes.size();
+    std::vector<int> layers = assignProxyLayers(series, boxes);
+    boxCount_ = boxes.size();
+    structuredGrids_.emplace(series, int(boxCount_), layers, maxTextureSize3D());
+    requireNoOutOfMemory(series, "inverse maps of the structured grids");
+    proxyCount_ = boxCount_ + std::size_t(structuredGrids_->layerCount());
     std::vector<TimeStepInfo> table;
     for (std::size_t index = 0; index < series.size(); ++index) {
         const auto& step = series.steps[index];
+        const StructuredGrid* structured = step.structured();
         const glm::dmat4 voxelToWorld =
-            step.placement.gridToWorld() * glm::scale(glm::dmat4(1.0), step.rectilinear().spacing);
+            structured ? structuredBoxToWorld(*structured, step.placement)
+                       : step.placement.gridToWorld() * glm::scale(glm::dmat4(1.0), step.rectilinear().spacing);
         table.push_back({glm::mat4(glm::inverse(voxelToWorld)), glm::vec4(glm::vec3(layout_.brickOrigins[index]), 0.0f),
-                         glm::vec4(glm::vec3(step.rectilinear().dims), step.mask ? 1.0f : 0.0f),
+                         glm::vec4(glm::vec3(step.dims()), step.mask ? 1.0f : 0.0f),
                          glm::ivec4(layers[index], 0, 0, 0),
                          glm::vec4(glm::vec3(occupancyLayout_.brickOrigins[index]), 0.0f),
                          glm::ivec4(hasAffineWorldToVoxel(step) ? 1 : 0, 0, 0, 0)});
@@ -159,7 +170,8 @@ GpuSeries::GpuSeries(const Series& series)
 }
 
 std::size_t GpuSeries::textureBytes() const {
-    return layout_.texelCount() * 2 + (hasMasks_ ? layout_.texelCount() : 1) + occupancyLayout_.texelCount();
+    return layout_.texelCount() * 2 + (hasMasks_ ? layout_.texelCount() : 1) + occupancyLayout_.texelCount() +
+           structuredGrids_->gpuBytes();
 }
 
 void GpuSeries::updateOccupancy(const std::vector<glm::vec4>& stfTable) {
@@ -180,6 +192,7 @@ void GpuSeries::bind() const {
     occupancyAtlas_.bindToUnit(binding::kOccupancyUnit);
     timeStepTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kTimeStepBuffer);
     proxyTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kProxyBuffer);
+    structuredGrids_->bind();
 }
 
 }  // namespace tstyles

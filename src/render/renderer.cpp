@@ -62,6 +62,7 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     parameters.inverseViewProjection = inverseViewProjection;
     parameters.viewport = options.size;
     parameters.timeStepCount = int(gpuSeries_->timeStepCount());
+    parameters.structuredGrids = gpuSeries_->structuredGrids().layerCount() > 0;
     parameters.atlasSize = gpuSeries_->layout().size;
     parameters.stepLength = float(stepLengthFor(scene) * options.stepScale);
     parameters.referenceLength = float(finestSpacing_);

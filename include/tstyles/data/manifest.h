@@ -16,6 +16,9 @@ Series loadSeries(const std::filesystem::path& manifestPath);
 struct RawTimeStep {
     double time = 0.0;
     RectilinearGrid grid;
+    // When set, the time-step is on this structured grid instead (its dims count the values);
+    // time-steps sharing one node array share one coordinates file.
+    std::optional<StructuredGrid> structured;
     Placement placement;
     ValueType type = ValueType::Float32;
     std::vector<std::uint8_t> bytes;                  // little-endian values, x fastest

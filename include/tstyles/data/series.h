@@ -14,6 +14,8 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "tstyles/data/structured_grid.h"
+
 namespace tstyles {
 
 // A voxel without data (a fill value, land under a weather model's atmosphere): neither a density
@@ -52,8 +54,14 @@ struct RectilinearGrid {
     }
 };
 
-// Grid kinds grow here (curvilinear sonar and structured grids come later).
-using Grid = std::variant<RectilinearGrid>;
+// Grid kinds grow here (curvilinear sonar grids come later).
+using Grid = std::variant<RectilinearGrid, StructuredGrid>;
+
+// Samples along each axis and in all, whatever the grid kind.
+glm::ivec3 gridDims(const Grid& grid);
+std::size_t gridVoxelCount(const Grid& grid);
+// The grid kind as manifests and `tstyles info` name it ("rectilinear", "structured").
+std::string gridTypeName(const Grid& grid);
 
 // Where a time-step's grid sits in the world: grid-local position p maps to origin + rotation * p.
 struct Placement {
@@ -94,6 +102,9 @@ struct TimeStep {
     std::filesystem::path maskFile;
 
     const RectilinearGrid& rectilinear() const { return std::get<RectilinearGrid>(grid); }
+    // The structured grid, or null for other grid kinds.
+    const StructuredGrid* structured() const { return std::get_if<StructuredGrid>(&grid); }
+    glm::ivec3 dims() const { return gridDims(grid); }
 };
 
 // World-space axis-aligned box.

@@ -26,6 +26,7 @@ private:
     void resize(glm::ivec2 viewport, int layers);
 
     Program program_;
+    Program meshProgram_;  // boundary faces of structured grids
     VertexArray emptyVertexArray_;
     glm::ivec2 size_{0};
     int layers_ = 0;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -11,6 +12,7 @@
 #include "tstyles/gl/objects.h"
 #include "tstyles/render/atlas_layout.h"
 #include "tstyles/render/brick_occupancy.h"
+#include "tstyles/render/gpu_structured_grids.h"
 
 namespace tstyles {
 
@@ -21,7 +23,11 @@ public:
     explicit GpuSeries(const Series& series);
 
     std::size_t timeStepCount() const { return timeStepCount_; }
+    // Entry/exit layers: the proxy boxes of rectilinear time-steps first, then the boundary meshes
+    // of structured grids.
     std::size_t proxyCount() const { return proxyCount_; }
+    std::size_t boxCount() const { return boxCount_; }
+    const GpuStructuredGrids& structuredGrids() const { return *structuredGrids_; }
     const AtlasLayout& layout() const { return layout_; }
     bool hasMasks() const { return hasMasks_; }
     // Whether every time-step's world -> voxel map is affine (TimeStepInfo.flags.x).
@@ -39,6 +45,7 @@ public:
 private:
     std::size_t timeStepCount_ = 0;
     std::size_t proxyCount_ = 0;
+    std::size_t boxCount_ = 0;
     bool hasMasks_ = false;
     bool allAffine_ = true;
     AtlasLayout layout_;
@@ -49,6 +56,7 @@ private:
     Texture occupancyAtlas_;
     Buffer timeStepTable_;
     Buffer proxyTable_;
+    std::optional<GpuStructuredGrids> structuredGrids_;
 };
 
 }  // namespace tstyles

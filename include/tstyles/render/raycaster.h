@@ -32,6 +32,7 @@ struct RaycastParameters {
     bool naive = false;     // the benchmark's baseline raycaster
     bool masks = false;     // whether any time-step has a segmentation mask
     bool allAffine = false; // whether every time-step's world -> voxel map is affine
+    bool structuredGrids = false;  // the series has structured time-steps (inverse-map lookups compiled in)
     // Lit-sphere styles: whether any track is styled, each track's node range, the view rotation
     // and the style-image footprint of a pixel.
     bool styled = false;
@@ -61,9 +62,8 @@ private:
 
     const ShaderLibrary& shaders_;
     // Keyed by compositor, statistics on/off, styled or not, naive or not, masks or not, all
-    // affine or not and the time-step capacity of the
-    // shader's arrays.
-    std::map<std::tuple<int, bool, bool, bool, bool, bool, int>, Program> programs_;
+    // affine or not, structured grids or not and the time-step capacity of the shader's arrays.
+    std::map<std::tuple<int, bool, bool, bool, bool, bool, bool, int>, Program> programs_;
     VertexArray emptyVertexArray_;
     Buffer statistics_;
 };
