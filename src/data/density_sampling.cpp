@@ -4,16 +4,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tstyles/data/grid_axes.h"
+
 namespace tstyles {
 namespace {
 
 constexpr double kBoundaryTolerance = 1e-3;  // in voxels
-
-double valueAt(const TimeStep& step, const glm::ivec3& dims, int x, int y, int z) {
-    const std::size_t index =
-        (std::size_t(z) * std::size_t(dims.y) + std::size_t(y)) * std::size_t(dims.x) + std::size_t(x);
-    return double(step.density[index]);
-}
 
 }  // namespace
 
@@ -22,21 +18,33 @@ std::optional<double> sampleDensity(const TimeStep& step, const glm::dvec3& worl
     if (step.density.size() != grid.voxelCount() || grid.voxelCount() == 0) return std::nullopt;
     // Grid-local position: undo the placement (origin, then rotation), then count voxels.
     const glm::dvec3 local = glm::conjugate(step.placement.rotation) * (world - step.placement.origin);
-    glm::dvec3 voxel = local / grid.spacing;
+    glm::dvec3 voxel = localToVoxel(grid, local);
     const glm::dvec3 last = glm::dvec3(grid.dims - 1);
     for (int axis = 0; axis < 3; ++axis) {
         if (voxel[axis] < -kBoundaryTolerance || voxel[axis] > last[axis] + kBoundaryTolerance) return std::nullopt;
         voxel[axis] = std::clamp(voxel[axis], 0.0, last[axis]);
     }
     const glm::ivec3 lower = glm::min(glm::ivec3(glm::floor(voxel)), glm::max(grid.dims - 2, 0));
-    const glm::ivec3 upper = glm::min(lower + 1, grid.dims - 1);
     const glm::dvec3 t = voxel - glm::dvec3(lower);
-    auto along = [&](int y, int z) {
-        return glm::mix(valueAt(step, grid.dims, lower.x, y, z), valueAt(step, grid.dims, upper.x, y, z), t.x);
-    };
-    const double front = glm::mix(along(lower.y, lower.z), along(upper.y, lower.z), t.y);
-    const double back = glm::mix(along(lower.y, upper.z), along(upper.y, upper.z), t.y);
-    return glm::mix(front, back, t.z);
+    // Like the renderer: the trilinear mix of the corners that have data, divided by their weight;
+    // no data where the corners with data weigh less than half.
+    double weightedDensity = 0.0;
+    double validWeight = 0.0;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::ivec3 offset((corner & 1) ? 1 : 0, (corner & 2) ? 1 : 0, (corner & 4) ? 1 : 0);
+        const glm::ivec3 node = glm::min(lower + offset, grid.dims - 1);
+        const glm::dvec3 weights = glm::mix(1.0 - t, t, glm::dvec3(offset));
+        const double weight = weights.x * weights.y * weights.z;
+        const std::size_t index =
+            (std::size_t(node.z) * std::size_t(grid.dims.y) + std::size_t(node.y)) * std::size_t(grid.dims.x) +
+            std::size_t(node.x);
+        const float density = step.density[index];
+        if (isMissing(density)) continue;
+        weightedDensity += weight * double(density);
+        validWeight += weight;
+    }
+    if (validWeight < 0.5) return double(missingDensity());
+    return weightedDensity / validWeight;
 }
 
 std::vector<std::optional<double>> temporalProfile(const Series& series, const glm::dvec3& world) {

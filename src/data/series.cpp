@@ -2,6 +2,8 @@
 // renderer sizes its rays by.
 #include "tstyles/data/series.h"
 
+#include "tstyles/data/grid_axes.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -98,8 +100,7 @@ double Series::finestSpacing() const {
     if (steps.empty()) throw std::logic_error("Series::finestSpacing: the series has no time-steps");
     double finest = std::numeric_limits<double>::infinity();
     for (const TimeStep& step : steps) {
-        const glm::dvec3 spacing = step.rectilinear().spacing;
-        finest = std::min({finest, spacing.x, spacing.y, spacing.z});
+        finest = std::min(finest, tstyles::finestSpacing(step.rectilinear()));
     }
     return finest;
 }

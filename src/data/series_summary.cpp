@@ -3,6 +3,7 @@
 #include "tstyles/data/series_summary.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 #include <vector>
@@ -64,6 +65,18 @@ void printTable(std::ostream& out, const std::vector<Row>& rows) {
     }
 }
 
+// Per axis the spacing, or "uneven" where the axis lists its node positions.
+std::string spacingText(const RectilinearGrid& grid) {
+    std::string text = "(";
+    for (int axis = 0; axis < 3; ++axis)
+        text += (axis > 0 ? ", " : "") + (grid.isUneven(axis) ? std::string("uneven") : number(grid.spacing[axis]));
+    return text + ")";
+}
+
+std::size_t missingVoxels(const TimeStep& step) {
+    return std::size_t(std::count_if(step.density.begin(), step.density.end(), [](float d) { return isMissing(d); }));
+}
+
 Row stepRow(const Series& series, std::size_t index) {
     const TimeStep& step = series.steps[index];
     const RectilinearGrid& grid = step.rectilinear();
@@ -71,10 +84,12 @@ Row stepRow(const Series& series, std::size_t index) {
             number(step.time),
             "rectilinear " + std::to_string(grid.dims.x) + "x" + std::to_string(grid.dims.y) + "x" +
                 std::to_string(grid.dims.z),
-            vec3Text(grid.spacing),
+            spacingText(grid),
             vec3Text(step.placement.origin),
             rotationText(step.placement.rotation),
-            number(step.rawRange[0]) + " .. " + number(step.rawRange[1]) + " " + toString(step.sourceType),
+            (std::isnan(step.rawRange[0]) ? std::string("no data")
+                                          : number(step.rawRange[0]) + " .. " + number(step.rawRange[1])) +
+                " " + toString(step.sourceType),
             step.mask ? "yes" : "no"};
 }
 
@@ -102,7 +117,9 @@ bool isFullyAligned(const Series& series) {
     return std::all_of(series.steps.begin(), series.steps.end(), [&first](const TimeStep& step) {
         return step.grid.index() == first.grid.index() &&
                step.rectilinear().dims == first.rectilinear().dims &&
-               step.rectilinear().spacing == first.rectilinear().spacing && step.placement == first.placement;
+               step.rectilinear().spacing == first.rectilinear().spacing &&
+               step.rectilinear().axisPositions == first.rectilinear().axisPositions &&
+               step.placement == first.placement;
     });
 }
 
@@ -141,6 +158,17 @@ std::string describeSeries(const Series& series) {
     out << "Time-steps: " << series.size() << "\n";
     out << "Value range: [" << number(series.valueRange[0]) << ", " << number(series.valueRange[1])
         << "] maps to density [0, 1]\n";
+    std::size_t missing = 0;
+    std::size_t voxels = 0;
+    for (const TimeStep& step : series.steps) {
+        missing += missingVoxels(step);
+        voxels += step.density.size();
+    }
+    if (missing > 0) {
+        std::ostringstream share;
+        share << std::fixed << std::setprecision(1) << 100.0 * double(missing) / double(voxels);
+        out << "Missing values: " << missing << " voxels without data (" << share.str() << " %)\n";
+    }
     out << "Alignment: "
         << (isFullyAligned(series) ? "fully aligned: one common grid"
                                    : "partial overlap: time-steps differ in grid or placement")
