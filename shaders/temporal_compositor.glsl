@@ -37,7 +37,7 @@ struct TemporalSample {
         if (soloTimeStep >= 0 && step != soloTimeStep) continue;                                 \
         vec3 rawVoxel = (timeSteps.steps[step].worldToVoxel * vec4(position, 1.0)).xyz;          \
         if (any(lessThan(rawVoxel, vec3(0.0))) ||                                                \
-            any(greaterThan(rawVoxel, timeSteps.steps[step].dims.xyz - 1.0)))                    \
+            any(greaterThan(rawVoxel, gridCoordinateLimit(step))))                              \
             continue;
 #else
 #define FOR_EACH_TIME_STEP_AT_SAMPLE                                                             \
@@ -99,15 +99,19 @@ TemporalSample compositeTemporal(vec3 position, float t, vec3 direction) {
     vec4 strongestStf = vec4(0.0);
     int strongestStep = -1;
     bool anyInMask = false;
+    int withData = 0;  // time-steps with data at the sample: a change needs two
 #endif
 
     FOR_EACH_TIME_STEP_AT_SAMPLE
         vec3 atlasPosition = atlasCoordinate(step, position);
         float density = sampleDensity(atlasPosition);
+        result.contributing += 1;
+        result.fetches += 1;
+        // No data here: transparent, and left out of the temporal characteristic.
+        if (isMissingDensity(density)) continue;
         bool inMask = insideMask(step, atlasPosition);
         vec4 stf = classifyStf(density);
-        result.contributing += 1;
-        result.fetches += timeSteps.steps[step].dims.w > 0.5 ? 2 : 1;
+        result.fetches += timeSteps.steps[step].dims.w > 0.5 ? 1 : 0;
 #if TEMPORAL_COMPOSITOR == TC_MAX_INTENSITY_PROJECTION
         if (stf.a >= winnerStf.a && stf.a > 0.0) {
             vec4 tstf = classifyIndexTstf(step);
@@ -134,6 +138,7 @@ TemporalSample compositeTemporal(vec3 position, float t, vec3 direction) {
         minimumDensity = min(minimumDensity, density);
         maximumDensity = max(maximumDensity, density);
         anyInMask = anyInMask || inMask;
+        withData += 1;
         if (stf.a > strongestStf.a || strongestStep < 0) {
             strongestStf = stf;
             strongestStep = step;
@@ -156,10 +161,10 @@ TemporalSample compositeTemporal(vec3 position, float t, vec3 direction) {
         result.colorOpacity = vec4(premultipliedSum.rgb / premultipliedSum.a,
                                    premultipliedSum.a / float(nonTransparent));
 #else
-    if (strongestStf.a > 0.0 && result.contributing >= 1) {
+    if (strongestStf.a > 0.0 && withData >= 1) {
         SphereCoordinate sphere = styleCoordinate(strongestStep, position, result.fetches);
         vec4 stf = applyStyle(STF_TRACK, strongestDensity, strongestStf, sphere);
-        if (result.contributing >= 2) {
+        if (withData >= 2) {
             float change = (maximumDensity - minimumDensity - changeRange.x) / (changeRange.y - changeRange.x);
             vec4 tstf = applyStyle(GRADIENT_TSTF_TRACK, clamp(change, 0.0, 1.0), classifyGradientTstf(change), sphere);
             result.colorOpacity = finalProcessing(stf, tstf, anyInMask);

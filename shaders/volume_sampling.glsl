@@ -5,9 +5,9 @@ uniform vec3 inverseAtlasSize;
 
 // Voxel coordinates of a world position in a time-step's grid, clamped to the grid: samples sit
 // on texel centres, and clamping to [0, dims - 1] keeps trilinear filtering inside the time-step's
-// own brick, so bricks need no border between them.
+// own brick, so bricks need no border between them. Uneven axes go through their node lists.
 vec3 voxelCoordinate(int step, vec3 worldPosition) {
-    vec3 voxel = (timeSteps.steps[step].worldToVoxel * vec4(worldPosition, 1.0)).xyz;
+    vec3 voxel = applyUnevenAxes(step, (timeSteps.steps[step].worldToVoxel * vec4(worldPosition, 1.0)).xyz);
     return clamp(voxel, vec3(0.0), timeSteps.steps[step].dims.xyz - 1.0);
 }
 
@@ -19,8 +19,19 @@ vec3 atlasCoordinate(int step, vec3 worldPosition) {
     return atlasCoordinateOfVoxel(step, voxelCoordinate(step, worldPosition));
 }
 
+// Missing values: a series with voxels without data stores (density * validity, validity) with
+// validity in alpha (a swizzle), one fetch filtering both with the same weights; other series have
+// alpha 1. The density is the filtered density of the valid neighbours over their filtered weight,
+// and where that weight is below one half the sample has no data.
+const float MISSING_DENSITY = -1.0;
+
+bool isMissingDensity(float density) {
+    return density < 0.0;
+}
+
 float sampleDensity(vec3 atlasPosition) {
-    return texture(densityAtlas, atlasPosition).r;
+    vec4 texel = texture(densityAtlas, atlasPosition);
+    return texel.a < 0.5 ? MISSING_DENSITY : texel.r / texel.a;
 }
 
 // Time-steps without a mask are region of interest everywhere.
@@ -48,12 +59,15 @@ bool brickVisible(int step, vec3 voxel) {
 }
 
 // The ray parameter at which a ray at `t`, at `voxel` in the time-step's grid and heading along
-// `worldDirection`, leaves the brick it is in. Voxel coordinates are an affine function of world
-// position, so t carries over unchanged.
+// `worldDirection`, leaves the brick it is in. worldToVoxel's coordinates (voxels, grid-local
+// along uneven axes) are an affine function of world position, so t carries over unchanged; the
+// brick's faces are taken there too (node index to position is monotonic).
 float brickExit(int step, vec3 voxel, float t, vec3 worldDirection) {
     vec3 direction = mat3(timeSteps.steps[step].worldToVoxel) * worldDirection;
-    vec3 lower = brickOf(step, voxel) * BRICK_SIZE;
-    vec3 upper = min(lower + BRICK_SIZE, timeSteps.steps[step].dims.xyz - 1.0);
+    vec3 lowerVoxel = brickOf(step, voxel) * BRICK_SIZE;
+    vec3 lower = unapplyUnevenAxes(step, lowerVoxel);
+    vec3 upper = unapplyUnevenAxes(step, min(lowerVoxel + BRICK_SIZE, timeSteps.steps[step].dims.xyz - 1.0));
+    voxel = unapplyUnevenAxes(step, voxel);
     float exit = 1.0e30;
     for (int axis = 0; axis < 3; ++axis) {
         if (abs(direction[axis]) < 1.0e-12) continue;

@@ -24,6 +24,8 @@ public:
     std::size_t proxyCount() const { return proxyCount_; }
     const AtlasLayout& layout() const { return layout_; }
     bool hasMasks() const { return hasMasks_; }
+    // True when the density atlas holds (density * validity, validity) pairs.
+    bool hasMissingValues() const { return hasMissingValues_; }
     // Bytes of texture memory: the density atlas, the mask atlas.
     std::size_t textureBytes() const;
 
@@ -38,6 +40,7 @@ private:
     std::size_t timeStepCount_ = 0;
     std::size_t proxyCount_ = 0;
     bool hasMasks_ = false;
+    bool hasMissingValues_ = false;
     AtlasLayout layout_;
     Texture densityAtlas_;
     Texture maskAtlas_;
@@ -46,6 +49,8 @@ private:
     Texture occupancyAtlas_;
     Buffer timeStepTable_;
     Buffer proxyTable_;
+    Buffer unevenAxisTable_;  // shaders/uneven_axes.glsl
+    Buffer axisNodeTable_;
 };
 
 }  // namespace tstyles
