@@ -5,6 +5,7 @@
 #include "bindings.glsl"
 #include "ray.glsl"
 #include "time_steps.glsl"
+#include "uneven_axes.glsl"
 #include "volume_sampling.glsl"
 #include "gradient.glsl"
 #include "transfer_functions.glsl"

@@ -37,7 +37,7 @@ struct TemporalSample {
         if (soloTimeStep >= 0 && step != soloTimeStep) continue;                                 \
         vec3 rawVoxel = (timeSteps.steps[step].worldToVoxel * vec4(position, 1.0)).xyz;          \
         if (any(lessThan(rawVoxel, vec3(0.0))) ||                                                \
-            any(greaterThan(rawVoxel, timeSteps.steps[step].dims.xyz - 1.0)))                    \
+            any(greaterThan(rawVoxel, gridCoordinateLimit(step))))                              \
             continue;
 #else
 #define FOR_EACH_TIME_STEP_AT_SAMPLE                                                             \
@@ -66,7 +66,7 @@ float emptySpaceUntil(vec3 position, float t) {
 #if ALL_AFFINE
         emptyUntil = min(emptyUntil, brickExit(step, voxel, t, activeVoxelDirection[i]));
 #else
-        emptyUntil = min(emptyUntil, activeAffine[i] ? brickExit(step, voxel, t, activeVoxelDirection[i]) : t);
+        emptyUntil = min(emptyUntil, hasStraightGridRays(step) ? brickExit(step, voxel, t, activeVoxelDirection[i]) : t);
 #endif
         anyStep = true;
     }
@@ -114,16 +114,20 @@ TemporalSample compositeTemporal(vec3 position, float t) {
     vec4 strongestStf = vec4(0.0);
     int strongestStep = -1;
     bool anyInMask = false;
+    int withData = 0;  // time-steps with data at the sample: a change needs two
 #endif
 
     FOR_EACH_TIME_STEP_AT_SAMPLE
         if (!insideGrid(step, position)) continue;
         vec3 atlasPosition = atlasCoordinateOfVoxel(step, VOXEL_AT_SAMPLE);
         float density = sampleDensity(atlasPosition);
+        result.contributing += 1;
+        result.fetches += 1;
+        // No data here: transparent, and left out of the temporal characteristic.
+        if (isMissingDensity(density)) continue;
         bool inMask = insideMask(step, atlasPosition);
         vec4 stf = classifyStf(density);
-        result.contributing += 1;
-        result.fetches += timeSteps.steps[step].dims.w > 0.5 ? 2 : 1;
+        result.fetches += timeSteps.steps[step].dims.w > 0.5 ? 1 : 0;
 #if TEMPORAL_COMPOSITOR == TC_MAX_INTENSITY_PROJECTION
         if (stf.a >= winnerStf.a && stf.a > 0.0) {
             vec4 tstf = classifyIndexTstf(step);
@@ -150,6 +154,7 @@ TemporalSample compositeTemporal(vec3 position, float t) {
         minimumDensity = min(minimumDensity, density);
         maximumDensity = max(maximumDensity, density);
         anyInMask = anyInMask || inMask;
+        withData += 1;
         if (stf.a > strongestStf.a || strongestStep < 0) {
             strongestStf = stf;
             strongestStep = step;
@@ -172,10 +177,10 @@ TemporalSample compositeTemporal(vec3 position, float t) {
         result.colorOpacity = vec4(premultipliedSum.rgb / premultipliedSum.a,
                                    premultipliedSum.a / float(nonTransparent));
 #else
-    if (strongestStf.a > 0.0 && result.contributing >= 1) {
+    if (strongestStf.a > 0.0 && withData >= 1) {
         SphereCoordinate sphere = styleCoordinate(strongestStep, position, result.fetches);
         vec4 stf = applyStyle(STF_TRACK, strongestDensity, strongestStf, sphere);
-        if (result.contributing >= 2) {
+        if (withData >= 2) {
             float change = (maximumDensity - minimumDensity - changeRange.x) / (changeRange.y - changeRange.x);
             vec4 tstf = applyStyle(GRADIENT_TSTF_TRACK, clamp(change, 0.0, 1.0), classifyGradientTstf(change), sphere);
             result.colorOpacity = finalProcessing(stf, tstf, anyInMask);

@@ -5,12 +5,19 @@ uniform vec3 inverseAtlasSize;
 
 #include "structured_grid.glsl"
 
+// 1 when every time-step of the series has an affine world -> voxel map (TimeStepInfo.flags.x):
+// the general paths (uneven axes, other grid kinds) are left out of the program, since llvmpipe
+// would run them, masked, for every sample otherwise.
+#ifndef ALL_AFFINE
+#define ALL_AFFINE 0
+#endif
+
 // Voxel coordinates of a world position in a time-step's grid, clamped to the grid: samples sit
 // on texel centres, and clamping to [0, dims - 1] keeps trilinear filtering inside the time-step's
-// own brick, so bricks need no border between them.
+// own brick, so bricks need no border between them. Uneven axes go through their node lists.
 vec3 voxelCoordinate(int step, vec3 worldPosition) {
     if (isStructured(step)) return structuredVoxelCoordinate(step, worldPosition);
-    vec3 voxel = (timeSteps.steps[step].worldToVoxel * vec4(worldPosition, 1.0)).xyz;
+    vec3 voxel = applyUnevenAxes(step, (timeSteps.steps[step].worldToVoxel * vec4(worldPosition, 1.0)).xyz);
     return clamp(voxel, vec3(0.0), timeSteps.steps[step].dims.xyz - 1.0);
 }
 
@@ -22,8 +29,19 @@ vec3 atlasCoordinate(int step, vec3 worldPosition) {
     return atlasCoordinateOfVoxel(step, voxelCoordinate(step, worldPosition));
 }
 
+// Missing values: a series with voxels without data stores (density * validity, validity) with
+// validity in alpha (a swizzle), one fetch filtering both with the same weights; other series have
+// alpha 1. The density is the filtered density of the valid neighbours over their filtered weight,
+// and where that weight is below one half the sample has no data.
+const float MISSING_DENSITY = -1.0;
+
+bool isMissingDensity(float density) {
+    return density < 0.0;
+}
+
 float sampleDensity(vec3 atlasPosition) {
-    return texture(densityAtlas, atlasPosition).r;
+    vec4 texel = texture(densityAtlas, atlasPosition);
+    return texel.a < 0.5 ? MISSING_DENSITY : texel.r / texel.a;
 }
 
 // 1 when any time-step of the series has a mask. A compile-time switch, not a run-time test:
@@ -60,12 +78,27 @@ bool brickVisible(int step, vec3 voxel) {
     return texelFetch(occupancyAtlas, texel, 0).r > 0.5;
 }
 
+// Whether a ray is a straight line, with the ray's own parameter, in the space worldToVoxel maps
+// into (voxels, grid-local along uneven axes): rectilinear grids, even or uneven.
+bool hasStraightGridRays(int step) {
+    return !isStructured(step);
+}
+
 // The ray parameter at which a ray at `t`, at `voxel` in the time-step's grid and moving by
-// `direction` voxels per unit of t, leaves the brick it is in. Only for time-steps whose voxel
-// coordinates are an affine function of world position (TimeStepInfo.flags.x).
+// `direction` per unit of t in worldToVoxel's space, leaves the brick it is in. Only for
+// time-steps with hasStraightGridRays; the brick's faces are taken in that space too (node index
+// to position is monotonic along uneven axes).
 float brickExit(int step, vec3 voxel, float t, vec3 direction) {
-    vec3 lower = brickOf(step, voxel) * BRICK_SIZE;
-    vec3 upper = min(lower + BRICK_SIZE, timeSteps.steps[step].dims.xyz - 1.0);
+    vec3 lowerVoxel = brickOf(step, voxel) * BRICK_SIZE;
+    vec3 upperVoxel = min(lowerVoxel + BRICK_SIZE, timeSteps.steps[step].dims.xyz - 1.0);
+#if ALL_AFFINE
+    vec3 lower = lowerVoxel;
+    vec3 upper = upperVoxel;
+#else
+    vec3 lower = unapplyUnevenAxes(step, lowerVoxel);
+    vec3 upper = unapplyUnevenAxes(step, upperVoxel);
+    voxel = unapplyUnevenAxes(step, voxel);
+#endif
     float exit = 1.0e30;
     for (int axis = 0; axis < 3; ++axis) {
         if (abs(direction[axis]) < 1.0e-12) continue;

@@ -21,11 +21,7 @@ void prepareVoxelRays(Ray ray) {
 
 // voxelCoordinate(step, position) for the sample at ray parameter t, `slot` being the time-step's
 // place in the ray's list.
-// ALL_AFFINE (every time-step of the series affine) leaves the general path out of the program:
-// llvmpipe would run it, masked, for every sample otherwise.
-#ifndef ALL_AFFINE
-#define ALL_AFFINE 0
-#endif
+// ALL_AFFINE (volume_sampling.glsl) leaves the general path out of the program.
 
 vec3 voxelAtSample(int slot, int step, vec3 position, float t) {
 #if !ALL_AFFINE

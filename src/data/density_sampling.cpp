@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 
+#include "tstyles/data/grid_axes.h"
 #include "tstyles/data/structured_point_location.h"
 
 namespace tstyles {
@@ -12,23 +13,28 @@ namespace {
 
 constexpr double kBoundaryTolerance = 1e-3;  // in voxels
 
-double valueAt(const TimeStep& step, const glm::ivec3& dims, int x, int y, int z) {
-    const std::size_t index =
-        (std::size_t(z) * std::size_t(dims.y) + std::size_t(y)) * std::size_t(dims.x) + std::size_t(x);
-    return double(step.density[index]);
-}
-
-// Trilinear between the samples around `voxel` (inside [0, dims - 1]).
+// Trilinear at `voxel` (inside [0, dims - 1]), like the renderer: the mix of the corners that have
+// data, divided by their weight; no data where the corners with data weigh less than half.
 double interpolateAtVoxel(const TimeStep& step, const glm::ivec3& dims, glm::dvec3 voxel) {
     const glm::ivec3 lower = glm::min(glm::ivec3(glm::floor(voxel)), glm::max(dims - 2, 0));
-    const glm::ivec3 upper = glm::min(lower + 1, dims - 1);
     const glm::dvec3 t = voxel - glm::dvec3(lower);
-    auto along = [&](int y, int z) {
-        return glm::mix(valueAt(step, dims, lower.x, y, z), valueAt(step, dims, upper.x, y, z), t.x);
-    };
-    const double front = glm::mix(along(lower.y, lower.z), along(upper.y, lower.z), t.y);
-    const double back = glm::mix(along(lower.y, upper.z), along(upper.y, upper.z), t.y);
-    return glm::mix(front, back, t.z);
+    double weightedDensity = 0.0;
+    double validWeight = 0.0;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::ivec3 offset((corner & 1) ? 1 : 0, (corner & 2) ? 1 : 0, (corner & 4) ? 1 : 0);
+        const glm::ivec3 node = glm::min(lower + offset, dims - 1);
+        const glm::dvec3 weights = glm::mix(1.0 - t, t, glm::dvec3(offset));
+        const double weight = weights.x * weights.y * weights.z;
+        const std::size_t index =
+            (std::size_t(node.z) * std::size_t(dims.y) + std::size_t(node.y)) * std::size_t(dims.x) +
+            std::size_t(node.x);
+        const float density = step.density[index];
+        if (isMissing(density)) continue;
+        weightedDensity += weight * double(density);
+        validWeight += weight;
+    }
+    if (validWeight < 0.5) return double(missingDensity());
+    return weightedDensity / validWeight;
 }
 
 glm::dvec3 localPosition(const TimeStep& step, const glm::dvec3& world) {
@@ -52,7 +58,7 @@ std::optional<double> sampleDensity(const TimeStep& step, const glm::dvec3& worl
         return sampleStructured(step, StructuredPointLocator(*structured), world);
     }
     const RectilinearGrid& grid = step.rectilinear();
-    glm::dvec3 voxel = localPosition(step, world) / grid.spacing;
+    glm::dvec3 voxel = localToVoxel(grid, localPosition(step, world));
     const glm::dvec3 last = glm::dvec3(grid.dims - 1);
     for (int axis = 0; axis < 3; ++axis) {
         if (voxel[axis] < -kBoundaryTolerance || voxel[axis] > last[axis] + kBoundaryTolerance) return std::nullopt;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -49,6 +50,15 @@ void checkWritable(const RawSeries& series) {
                  std::to_string(voxels));
         }
         if (index > 0 && !(step.time > series.steps[index - 1].time)) fail(where + "times must increase");
+        for (int axis = 0; axis < 3; ++axis) {
+            const std::vector<double>& nodes = step.grid.axisPositions[std::size_t(axis)];
+            if (nodes.empty()) continue;
+            if (nodes.size() != std::size_t(step.grid.dims[axis]) || nodes.front() != 0.0 ||
+                !std::is_sorted(nodes.begin(), nodes.end(), std::less_equal<>()) ||
+                std::adjacent_find(nodes.begin(), nodes.end()) != nodes.end()) {
+                fail(where + "axis positions must be dims[axis] strictly increasing values from 0");
+            }
+        }
     }
 }
 
@@ -76,6 +86,13 @@ OrderedJson stepJson(const RawTimeStep& step, const std::string& stem, const std
         json["grid"] = {{"type", "rectilinear"},
                         {"dims", OrderedJson::array({dims.x, dims.y, dims.z})},
                         {"spacing", vec3Json(step.grid.spacing)}};
+        // An uneven axis: its nodes under "positions" and null for its spacing.
+        for (int axis = 0; axis < 3; ++axis) {
+            if (!step.grid.isUneven(axis)) continue;
+            const std::string name(1, "xyz"[axis]);
+            json["grid"]["spacing"][std::size_t(axis)] = nullptr;
+            json["grid"]["positions"][name] = step.grid.axisPositions[std::size_t(axis)];
+        }
     }
     json["placement"] = {{"origin", vec3Json(step.placement.origin)},
                          {"rotation", {{"axis", vec3Json(rotation.axis)}, {"angle_deg", rotation.angleDeg}}}};
@@ -157,6 +174,11 @@ void writeSeries(const RawSeries& series, const std::filesystem::path& directory
     manifest["version"] = 1;
     manifest["name"] = series.name;
     manifest["value_range"] = OrderedJson::array({series.valueRange[0], series.valueRange[1]});
+    if (series.missingValue) {
+        // JSON has no NaN: the manifest spells that marker as a string.
+        if (std::isnan(*series.missingValue)) manifest["missing_value"] = "NaN";
+        else manifest["missing_value"] = *series.missingValue;
+    }
     manifest["time_steps"] = OrderedJson::array();
     std::vector<const std::vector<glm::vec3>*> writtenGrids;
     for (std::size_t index = 0; index < series.steps.size(); ++index) {

@@ -72,11 +72,16 @@ std::string voxelText(std::size_t index, const RectilinearGrid& grid) {
 
 }  // namespace
 
-RawValues readRawValues(const RawFileSource& source, const RectilinearGrid& grid, ValueType type) {
+RawValues readRawValues(const RawFileSource& source, const RectilinearGrid& grid, ValueType type,
+                        std::optional<double> missingMarker) {
     const std::size_t stride = bytesPerValue(type);
     const std::size_t count = grid.voxelCount();
     const std::vector<std::uint8_t> bytes =
         readExactly(source, "value file", count * stride, dimsText(grid) + " " + toString(type) + " values");
+    // Compared in the file's own precision: a float32 file stores the marker 1e35 as float(1e35).
+    const bool nanIsMissing = missingMarker && std::isnan(*missingMarker);
+    const float marker = missingMarker && !nanIsMissing ? float(*missingMarker) : 0.0f;
+    const bool markerIsSet = missingMarker && !nanIsMissing;
 
     RawValues raw;
     raw.values.resize(count);
@@ -84,16 +89,23 @@ RawValues readRawValues(const RawFileSource& source, const RectilinearGrid& grid
     float highest = -std::numeric_limits<float>::infinity();
     for (std::size_t index = 0; index < count; ++index) {
         const float value = decodeValue(bytes.data() + index * stride, type);
+        if ((markerIsSet && value == marker) || (nanIsMissing && std::isnan(value))) {
+            raw.values[index] = missingDensity();
+            continue;
+        }
         if (!std::isfinite(value)) {
             failFile(source, "value file",
                      std::string("holds a non-finite value (") + (std::isnan(value) ? "NaN" : "Inf") +
-                         ") at voxel (x, y, z) = " + voxelText(index, grid));
+                         ") at voxel (x, y, z) = " + voxelText(index, grid) +
+                         (std::isnan(value) ? " (declare \"missing_value\": \"NaN\" if NaN marks missing data)" : ""));
         }
         raw.values[index] = value;
         lowest = std::min(lowest, value);
         highest = std::max(highest, value);
     }
-    raw.range = {double(lowest), double(highest)};
+    const double none = std::numeric_limits<double>::quiet_NaN();
+    raw.range = lowest <= highest ? std::array<double, 2>{double(lowest), double(highest)}
+                                  : std::array<double, 2>{none, none};
     return raw;
 }
 
@@ -110,6 +122,7 @@ void normalizeToDensity(std::vector<float>& values, const std::array<double, 2>&
     const double low = valueRange[0];
     const double width = valueRange[1] - valueRange[0];
     for (float& value : values) {
+        if (isMissing(value)) continue;
         value = float(std::clamp((double(value) - low) / width, 0.0, 1.0));
     }
 }

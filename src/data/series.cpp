@@ -2,6 +2,8 @@
 // renderer sizes its rays by.
 #include "tstyles/data/series.h"
 
+#include "tstyles/data/grid_axes.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -122,8 +124,7 @@ double Series::finestSpacing() const {
             finest = std::min(finest, structured->finestEdge);
             continue;
         }
-        const glm::dvec3 spacing = step.rectilinear().spacing;
-        finest = std::min({finest, spacing.x, spacing.y, spacing.z});
+        finest = std::min(finest, tstyles::finestSpacing(step.rectilinear()));
     }
     return finest;
 }

@@ -5,6 +5,7 @@
 #include "tstyles/data/inverse_map.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 #include <vector>
@@ -66,6 +67,18 @@ void printTable(std::ostream& out, const std::vector<Row>& rows) {
     }
 }
 
+// Per axis the spacing, or "uneven" where the axis lists its node positions.
+std::string spacingText(const RectilinearGrid& grid) {
+    std::string text = "(";
+    for (int axis = 0; axis < 3; ++axis)
+        text += (axis > 0 ? ", " : "") + (grid.isUneven(axis) ? std::string("uneven") : number(grid.spacing[axis]));
+    return text + ")";
+}
+
+std::size_t missingVoxels(const TimeStep& step) {
+    return std::size_t(std::count_if(step.density.begin(), step.density.end(), [](float d) { return isMissing(d); }));
+}
+
 Row stepRow(const Series& series, std::size_t index) {
     const TimeStep& step = series.steps[index];
     const glm::ivec3 dims = step.dims();
@@ -75,10 +88,12 @@ Row stepRow(const Series& series, std::size_t index) {
             gridTypeName(step.grid) + " " + std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" +
                 std::to_string(dims.z),
             structured ? "curvilinear, edges from " + number(structured->finestEdge)
-                       : vec3Text(step.rectilinear().spacing),
+                       : spacingText(step.rectilinear()),
             vec3Text(step.placement.origin),
             rotationText(step.placement.rotation),
-            number(step.rawRange[0]) + " .. " + number(step.rawRange[1]) + " " + toString(step.sourceType),
+            (std::isnan(step.rawRange[0]) ? std::string("no data")
+                                          : number(step.rawRange[0]) + " .. " + number(step.rawRange[1])) +
+                " " + toString(step.sourceType),
             step.mask ? "yes" : "no"};
 }
 
@@ -146,7 +161,8 @@ bool isFullyAligned(const Series& series) {
             return false;
         if (const StructuredGrid* structured = step.structured())
             return structured->nodes == first.structured()->nodes;
-        return step.rectilinear().spacing == first.rectilinear().spacing;
+        return step.rectilinear().spacing == first.rectilinear().spacing &&
+               step.rectilinear().axisPositions == first.rectilinear().axisPositions;
     });
 }
 
@@ -186,6 +202,17 @@ std::string describeSeries(const Series& series) {
     out << "Time-steps: " << series.size() << "\n";
     out << "Value range: [" << number(series.valueRange[0]) << ", " << number(series.valueRange[1])
         << "] maps to density [0, 1]\n";
+    std::size_t missing = 0;
+    std::size_t voxels = 0;
+    for (const TimeStep& step : series.steps) {
+        missing += missingVoxels(step);
+        voxels += step.density.size();
+    }
+    if (missing > 0) {
+        std::ostringstream share;
+        share << std::fixed << std::setprecision(1) << 100.0 * double(missing) / double(voxels);
+        out << "Missing values: " << missing << " voxels without data (" << share.str() << " %)\n";
+    }
     out << "Alignment: "
         << (isFullyAligned(series) ? "fully aligned: one common grid"
                                    : "partial overlap: time-steps differ in grid or placement")

@@ -10,6 +10,8 @@
 
 #include "tstyles/core/errors.h"
 #include "tstyles/render/bindings.h"
+#include "tstyles/render/density_texels.h"
+#include "tstyles/render/uneven_axis_table.h"
 
 namespace tstyles {
 namespace {
@@ -94,7 +96,9 @@ GpuSeries::GpuSeries(const Series& series)
       maskAtlas_(Texture::create(GL_TEXTURE_3D)),
       occupancyAtlas_(Texture::create(GL_TEXTURE_3D)),
       timeStepTable_(Buffer::create()),
-      proxyTable_(Buffer::create()) {
+      proxyTable_(Buffer::create()),
+      unevenAxisTable_(Buffer::create()),
+      axisNodeTable_(Buffer::create()) {
     // Validation of structured grids happens on load; here they only need an inverse map and a mesh.
     timeStepCount_ = series.size();
     hasMasks_ = series.hasMasks();
@@ -104,23 +108,22 @@ GpuSeries::GpuSeries(const Series& series)
     layout_ = planAtlas(dims, maxTextureSize3D());
 
     glGetError();  // start from a clean error state so that OUT_OF_MEMORY below is ours
-    densityAtlas_ = createAtlas(GL_R16, layout_.size);
+    hasMissingValues_ = tstyles::hasMissingValues(series);
+    densityAtlas_ = createAtlas(hasMissingValues_ ? GL_RG16 : GL_R16, layout_.size);
+    // Validity reads as alpha; without missing values alpha is 1 everywhere (R16's default).
+    if (hasMissingValues_) glTextureParameteri(densityAtlas_.id(), GL_TEXTURE_SWIZZLE_A, GL_GREEN);
     maskAtlas_ = createAtlas(GL_R8, hasMasks_ ? layout_.size : glm::ivec3(1));
     requireNoOutOfMemory(series, "volume atlas");
 
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    std::vector<std::uint16_t> texels;
     std::vector<std::uint8_t> maskTexels;
     for (std::size_t index = 0; index < series.size(); ++index) {
         const auto& step = series.steps[index];
         const glm::ivec3 size = step.dims();
         const glm::ivec3 origin = layout_.brickOrigins[index];
-        texels.resize(step.density.size());
-        std::transform(step.density.begin(), step.density.end(), texels.begin(), [](float density) {
-            return std::uint16_t(std::lround(std::clamp(density, 0.0f, 1.0f) * 65535.0f));
-        });
+        const std::vector<std::uint16_t> texels = densityTexels(step, hasMissingValues_);
         glTextureSubImage3D(densityAtlas_.id(), 0, origin.x, origin.y, origin.z, size.x, size.y, size.z,
-                            GL_RED, GL_UNSIGNED_SHORT, texels.data());
+                            hasMissingValues_ ? GL_RG : GL_RED, GL_UNSIGNED_SHORT, texels.data());
         if (step.mask) {
             // Upload masks as 0 / 255 so that trilinear filtering gives a smooth boundary at 0.5.
             maskTexels.resize(step.mask->size());
@@ -158,7 +161,7 @@ GpuSeries::GpuSeries(const Series& series)
         const StructuredGrid* structured = step.structured();
         const glm::dmat4 voxelToWorld =
             structured ? structuredBoxToWorld(*structured, step.placement)
-                       : step.placement.gridToWorld() * glm::scale(glm::dmat4(1.0), step.rectilinear().spacing);
+                       : step.placement.gridToWorld() * glm::scale(glm::dmat4(1.0), voxelScale(step.rectilinear()));
         table.push_back({glm::mat4(glm::inverse(voxelToWorld)), glm::vec4(glm::vec3(layout_.brickOrigins[index]), 0.0f),
                          glm::vec4(glm::vec3(step.dims()), step.mask ? 1.0f : 0.0f),
                          glm::ivec4(layers[index], 0, 0, 0),
@@ -167,11 +170,14 @@ GpuSeries::GpuSeries(const Series& series)
     }
     timeStepTable_.setData(std::as_bytes(std::span(table)), GL_STATIC_DRAW);
     proxyTable_.setData(std::as_bytes(std::span(boxes)), GL_STATIC_DRAW);
+    const UnevenAxisTable uneven = buildUnevenAxisTable(series);
+    unevenAxisTable_.setData(std::as_bytes(std::span(uneven.firstNode)), GL_STATIC_DRAW);
+    axisNodeTable_.setData(std::as_bytes(std::span(uneven.positions)), GL_STATIC_DRAW);
 }
 
 std::size_t GpuSeries::textureBytes() const {
-    return layout_.texelCount() * 2 + (hasMasks_ ? layout_.texelCount() : 1) + occupancyLayout_.texelCount() +
-           structuredGrids_->gpuBytes();
+    return layout_.texelCount() * (hasMissingValues_ ? 4 : 2) + (hasMasks_ ? layout_.texelCount() : 1) +
+           occupancyLayout_.texelCount() + structuredGrids_->gpuBytes();
 }
 
 void GpuSeries::updateOccupancy(const std::vector<glm::vec4>& stfTable) {
@@ -193,6 +199,8 @@ void GpuSeries::bind() const {
     timeStepTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kTimeStepBuffer);
     proxyTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kProxyBuffer);
     structuredGrids_->bind();
+    unevenAxisTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kUnevenAxisBuffer);
+    axisNodeTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kAxisNodeBuffer);
 }
 
 }  // namespace tstyles

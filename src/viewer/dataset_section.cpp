@@ -27,7 +27,8 @@ bool sameGrid(const Series& series) {
     if (first.structured()) return false;
     return std::all_of(series.steps.begin(), series.steps.end(), [&](const TimeStep& step) {
         return !step.structured() && step.dims() == first.dims() &&
-               step.rectilinear().spacing == first.rectilinear().spacing;
+               step.rectilinear().spacing == first.rectilinear().spacing &&
+               step.rectilinear().axisPositions == first.rectilinear().axisPositions;
     });
 }
 

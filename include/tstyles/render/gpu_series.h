@@ -32,6 +32,8 @@ public:
     bool hasMasks() const { return hasMasks_; }
     // Whether every time-step's world -> voxel map is affine (TimeStepInfo.flags.x).
     bool allAffine() const { return allAffine_; }
+    // True when the density atlas holds (density * validity, validity) pairs.
+    bool hasMissingValues() const { return hasMissingValues_; }
     // Bytes of texture memory: the density atlas, the mask atlas.
     std::size_t textureBytes() const;
 
@@ -48,6 +50,7 @@ private:
     std::size_t boxCount_ = 0;
     bool hasMasks_ = false;
     bool allAffine_ = true;
+    bool hasMissingValues_ = false;
     AtlasLayout layout_;
     Texture densityAtlas_;
     Texture maskAtlas_;
@@ -57,6 +60,8 @@ private:
     Buffer timeStepTable_;
     Buffer proxyTable_;
     std::optional<GpuStructuredGrids> structuredGrids_;
+    Buffer unevenAxisTable_;  // shaders/uneven_axes.glsl
+    Buffer axisNodeTable_;
 };
 
 }  // namespace tstyles
