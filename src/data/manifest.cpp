@@ -174,7 +174,7 @@ StepEntry readStepEntry(const ManifestField& field, std::size_t stepIndex, Struc
     entry.valuesField = valuesFile.path();
     const ManifestField type = values.member("type");
     const auto valueType = valueTypeFromString(type.string());
-    if (!valueType) type.fail("unknown value type '" + type.string() + "' (known: uint8, uint16, float32)");
+    if (!valueType) type.fail("unknown value type '" + type.string() + "' (known: uint8, uint16, float32, int8, int16, int32, float64)");
     entry.step.sourceType = *valueType;
 
     if (const auto mask = field.optionalMember("mask")) {

@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "tstyles/core/errors.h"
+#include "value_decoding.h"
 
 namespace tstyles {
 namespace {
@@ -47,22 +48,6 @@ std::vector<std::uint8_t> readExactly(const RawFileSource& source, const std::st
     return bytes;
 }
 
-// Decoding byte by byte keeps the files little-endian whatever the host's byte order.
-float decodeValue(const std::uint8_t* bytes, ValueType type) {
-    switch (type) {
-        case ValueType::UInt8:
-            return float(bytes[0]);
-        case ValueType::UInt16:
-            return float(std::uint16_t(bytes[0] | (bytes[1] << 8)));
-        case ValueType::Float32: {
-            const std::uint32_t bits = std::uint32_t(bytes[0]) | (std::uint32_t(bytes[1]) << 8) |
-                                       (std::uint32_t(bytes[2]) << 16) | (std::uint32_t(bytes[3]) << 24);
-            return std::bit_cast<float>(bits);
-        }
-    }
-    return 0.0f;
-}
-
 std::string voxelText(std::size_t index, const RectilinearGrid& grid) {
     const std::size_t nx = std::size_t(grid.dims.x);
     const std::size_t ny = std::size_t(grid.dims.y);
@@ -88,7 +73,7 @@ RawValues readRawValues(const RawFileSource& source, const RectilinearGrid& grid
     float lowest = std::numeric_limits<float>::infinity();
     float highest = -std::numeric_limits<float>::infinity();
     for (std::size_t index = 0; index < count; ++index) {
-        const float value = decodeValue(bytes.data() + index * stride, type);
+        const float value = float(decodeValue(bytes.data() + index * stride, type, ByteOrder::Little));
         if ((markerIsSet && value == marker) || (nanIsMissing && std::isnan(value))) {
             raw.values[index] = missingDensity();
             continue;

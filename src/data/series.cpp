@@ -21,12 +21,21 @@ std::string toString(ValueType type) {
             return "uint16";
         case ValueType::Float32:
             return "float32";
+        case ValueType::Int8:
+            return "int8";
+        case ValueType::Int16:
+            return "int16";
+        case ValueType::Int32:
+            return "int32";
+        case ValueType::Float64:
+            return "float64";
     }
     throw std::logic_error("toString: ValueType out of range");
 }
 
 std::optional<ValueType> valueTypeFromString(const std::string& name) {
-    for (ValueType type : {ValueType::UInt8, ValueType::UInt16, ValueType::Float32}) {
+    for (ValueType type : {ValueType::UInt8, ValueType::UInt16, ValueType::Float32, ValueType::Int8,
+                           ValueType::Int16, ValueType::Int32, ValueType::Float64}) {
         if (toString(type) == name) return type;
     }
     return std::nullopt;
@@ -35,11 +44,16 @@ std::optional<ValueType> valueTypeFromString(const std::string& name) {
 std::size_t bytesPerValue(ValueType type) {
     switch (type) {
         case ValueType::UInt8:
+        case ValueType::Int8:
             return 1;
         case ValueType::UInt16:
+        case ValueType::Int16:
             return 2;
         case ValueType::Float32:
+        case ValueType::Int32:
             return 4;
+        case ValueType::Float64:
+            return 8;
     }
     throw std::logic_error("bytesPerValue: ValueType out of range");
 }

@@ -25,8 +25,9 @@ namespace tstyles {
 inline float missingDensity() { return std::nanf(""); }
 inline bool isMissing(float density) { return std::isnan(density); }
 
-// How the values of a time-step are stored in its raw file (little-endian).
-enum class ValueType { UInt8, UInt16, Float32 };
+// How the values of a time-step are stored in its raw file (little-endian), or in the file a
+// reader took them from.
+enum class ValueType { UInt8, UInt16, Float32, Int8, Int16, Int32, Float64 };
 
 std::string toString(ValueType type);
 std::optional<ValueType> valueTypeFromString(const std::string& name);
@@ -115,12 +116,20 @@ struct Bounds {
     glm::dvec3 size() const { return upper - lower; }
 };
 
+// Bits per density sample on the GPU: R8, R16 or R32F textures.
+enum class DensityPrecision { Bits8, Bits16, Bits32 };
+
 struct Series {
     std::string name;
     std::filesystem::path manifestPath;
     // The raw values mapped to density 0 and 1.
     std::array<double, 2> valueRange{0.0, 1.0};
     std::vector<TimeStep> steps;
+    // The GPU precision the reader's memory check assumed (ReadOptions::precision); the renderer
+    // does not read it yet and stores R16.
+    DensityPrecision precision = DensityPrecision::Bits16;
+    // The file format it was read from ("tstyles manifest", "NetCDF-4", "NRRD", ...).
+    std::string sourceFormat = "tstyles manifest";
 
     std::size_t size() const { return steps.size(); }
     bool hasMasks() const;
