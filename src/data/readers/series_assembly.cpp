@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <variant>
 
 #include "../raw_values.h"
 #include "resampling.h"
@@ -52,9 +53,18 @@ Plan initialPlan(const SourceSeries& source, const ReadOptions& options) {
                         "selects no time-step: the file holds " + std::to_string(source.steps.size()) +
                             " (indices 0 to " + std::to_string(source.steps.size() - 1) + ")");
     }
-    for (std::size_t index : plan.steps)
-        plan.dims.push_back(options.resampleTo.value_or(source.steps[index].grid.dims));
+    for (std::size_t index : plan.steps) {
+        if (options.resampleTo && std::holds_alternative<StructuredGrid>(source.steps[index].grid))
+            throwInputError(source.file, "--resample",
+                            "applies to rectilinear grids; a structured (Plot3D) grid is read at its own nodes");
+        plan.dims.push_back(options.resampleTo.value_or(gridDims(source.steps[index].grid)));
+    }
     return plan;
+}
+
+bool anyStructured(const SourceSeries& source) {
+    return std::any_of(source.steps.begin(), source.steps.end(),
+                       [](const SourceStep& step) { return std::holds_alternative<StructuredGrid>(step.grid); });
 }
 
 [[noreturn]] void refuse(const SourceSeries& source, const Plan& plan, const ReadOptions& options,
@@ -89,6 +99,9 @@ void fitBySteps(const SourceSeries& source, Plan& plan, const ReadOptions& optio
 
 // Every time-step shrunk by one factor until the series fits.
 void fitByResolution(const SourceSeries& source, Plan& plan, const ReadOptions& options) {
+    if (anyStructured(source))
+        refuse(source, plan, options, "a structured (Plot3D) grid cannot be read at a lower resolution; allow more, "
+                                      "or add --fit steps");
     const double allowed = double(*options.maxMemoryBytes);
     double scale = std::cbrt(planBytes(plan, options) / allowed);
     const std::vector<glm::ivec3> original = plan.dims;
@@ -155,11 +168,12 @@ Series assembleRawSeries(const SourceSeries& source, const ReadOptions& options)
         step.sourceType = from.type;
         step.valuesFile = from.file;
         std::vector<float> values = source.readStep(plan.steps[kept]);
-        if (plan.dims[kept] == from.grid.dims) {
+        if (plan.dims[kept] == gridDims(from.grid)) {
             step.grid = from.grid;
         } else {
-            step.grid = resampledGrid(from.grid, plan.dims[kept]);
-            values = resampleValues(values, from.grid, plan.dims[kept]);
+            const auto& grid = std::get<RectilinearGrid>(from.grid);  // structured grids are never resampled
+            step.grid = resampledGrid(grid, plan.dims[kept]);
+            values = resampleValues(values, grid, plan.dims[kept]);
         }
         step.rawRange = rangeOf(values);
         step.density = std::move(values);
