@@ -110,6 +110,27 @@ case_info_plot3d() {
     run_tstyles -- info "$SCRATCH/plot3d/grid.xyz" --solution "$SCRATCH/plot3d/flow00.q" --resample 8x8x8
     expect_exit 2
     expect_error_line "$SCRATCH/plot3d/grid.xyz" "--resample" "structured"
+    run_tstyles -- info "$SCRATCH/plot3d/grid.xyz" --solution "$SCRATCH/plot3d/flow00.q" --block 1
+    expect_exit 2
+    expect_error_line "$SCRATCH/plot3d/grid.xyz" "" "block 1 was asked for"
+    # gamma scales pressure, (gamma - 1) (E - |m|^2 / 2 rho): 2.2 gives 3 times the range of 1.4.
+    local low high
+    run_tstyles -- info "$SCRATCH/plot3d/grid.xyz" --solution "$SCRATCH/plot3d/flow00.q" --var pressure
+    expect_exit 0
+    low=$(sed -n 's/^Value range: \[\(.*\), \(.*\)\] .*/\1 \2/p' "$OUT_FILE")
+    run_tstyles -- info "$SCRATCH/plot3d/grid.xyz" --solution "$SCRATCH/plot3d/flow00.q" --var pressure --gamma 2.2
+    expect_exit 0
+    high=$(sed -n 's/^Value range: \[\(.*\), \(.*\)\] .*/\1 \2/p' "$OUT_FILE")
+    awk -v a="$low" -v b="$high" 'BEGIN { split(a, x, " "); split(b, y, " ");
+        exit !(x[2] != 0 && (y[2] / x[2] - 3) ^ 2 < 1e-8 && (y[1] - 3 * x[1]) ^ 2 < 1e-8 * (1 + x[1] ^ 2)) }' ||
+        fail "pressure ranges with gamma 1.4 [$low] and 2.2 [$high] are not 3 times apart"
+}
+
+case_index_axes() {
+    samples
+    run_tstyles -- info "$S/ocean.nc" --var temp --index-axes
+    expect_exit 0
+    expect_stdout_contains "(1, 1, 1)"
 }
 
 case_precision_in_info() {
@@ -154,7 +175,8 @@ case_over_max_memory() {
     samples
     run_tstyles -- info "$S/ocean.nc" --var temp --max-memory 800
     expect_exit 2
-    expect_error_line "$S/ocean.nc" "--max-memory" "needs"
+    expect_error_line "$S/ocean.nc" "--max-memory" "needs 1080 bytes"
+    expect_stderr_contains "more than the 800 bytes allowed"
     write_scene "$SCRATCH/scene.json" "$S/ocean.nc" "$STF"
     run_tstyles -- render "$SCRATCH/scene.json" -o "$SCRATCH/out.png" --backend osmesa --var temp --max-memory 800
     expect_exit 2
@@ -258,7 +280,7 @@ case_truncated_netcdf() {
     truncate -s 600 "$S/ocean.nc"
     run_tstyles -- info "$S/ocean.nc" --var temp
     expect_exit 2
-    expect_error_line "$S/ocean.nc"
+    expect_error_line "$S/ocean.nc" "" "truncated or damaged? 600 bytes"
 }
 
 case_truncated_nrrd() {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 #include <variant>
@@ -14,10 +15,14 @@
 namespace tstyles {
 namespace {
 
+// Bytes, KiB, MiB or GiB, whichever says it best (a figure of "0.0 MiB" says nothing).
 std::string mebibytes(double bytes) {
     std::ostringstream text;
     text.precision(1);
-    text << std::fixed << bytes / (1024.0 * 1024.0) << " MiB";
+    if (bytes < 10240.0) text << std::fixed << std::setprecision(0) << bytes << " bytes";
+    else if (bytes < 1024.0 * 1024.0) text << std::fixed << bytes / 1024.0 << " KiB";
+    else if (bytes < 1024.0 * 1024.0 * 1024.0) text << std::fixed << bytes / (1024.0 * 1024.0) << " MiB";
+    else text << std::fixed << bytes / (1024.0 * 1024.0 * 1024.0) << " GiB";
     return text.str();
 }
 

@@ -51,9 +51,9 @@ const SeriesFormat& formatOf(const std::filesystem::path& input, const ReadOptio
     if (byExtension) return *byExtension;
     for (const SeriesFormat& format : seriesFormats())
         if (format.sniff && format.sniff(input)) return format;
-    std::string known;
+    std::string known = "tstyles manifest (.json, or its folder)";
     for (const SeriesFormat& format : seriesFormats()) known += "; " + format.name + " (" + format.spelling + ")";
-    throwInputError(input, "", "unknown format: neither its name nor its first bytes match a series manifest (.json or folder)" + known);
+    throwInputError(input, "", "unknown format: its name and first bytes match none of " + known);
 }
 
 // A manifest is already prepared: the reading options have nothing to choose in it.
