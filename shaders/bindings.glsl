@@ -13,6 +13,8 @@ const int OCCUPANCY_UNIT = 7;
 #define INDEX_TSTF_BUFFER 2
 #define STATISTICS_BUFFER 3
 #define STYLE_NODE_BUFFER 4
+#define BEAM_ANGLE_BUFFER 5
+#define PROXY_MESH_BUFFER 6
 
 // Entry buffers are cleared to NO_ENTRY and exit buffers to NO_EXIT; a pixel whose ray misses a
 // proxy keeps them.

@@ -35,10 +35,7 @@ struct TemporalSample {
 #define FOR_EACH_TIME_STEP_AT_SAMPLE                                                             \
     for (int step = 0; step < timeStepCount; ++step) {                                           \
         if (soloTimeStep >= 0 && step != soloTimeStep) continue;                                 \
-        vec3 rawVoxel = (timeSteps.steps[step].worldToVoxel * vec4(position, 1.0)).xyz;          \
-        if (any(lessThan(rawVoxel, vec3(0.0))) ||                                                \
-            any(greaterThan(rawVoxel, timeSteps.steps[step].dims.xyz - 1.0)))                    \
-            continue;
+        if (!insideGrid(step, position)) continue;
 #else
 #define FOR_EACH_TIME_STEP_AT_SAMPLE                                                             \
     for (int i = 0; i < activeCount; ++i) {                                                      \
@@ -51,10 +48,15 @@ float emptySpaceUntil(vec3 position, float t, vec3 direction) {
     float emptyUntil = 1.0e30;
     bool anyStep = false;
     FOR_EACH_TIME_STEP_AT_SAMPLE
+        anyStep = true;
+        // Outside a beam fan but inside its proxy: nothing here, and no jump past this sample.
+        if (!insideGridShape(step, position)) {
+            emptyUntil = min(emptyUntil, t);
+            continue;
+        }
         vec3 voxel = voxelCoordinate(step, position);
         if (brickVisible(step, voxel)) return -1.0;
-        emptyUntil = min(emptyUntil, brickExit(step, voxel, t, direction));
-        anyStep = true;
+        emptyUntil = min(emptyUntil, brickExit(step, voxel, t, position, direction));
     }
     return anyStep ? emptyUntil : -1.0;
 }
@@ -102,6 +104,7 @@ TemporalSample compositeTemporal(vec3 position, float t, vec3 direction) {
 #endif
 
     FOR_EACH_TIME_STEP_AT_SAMPLE
+        if (!insideGridShape(step, position)) continue;
         vec3 atlasPosition = atlasCoordinate(step, position);
         float density = sampleDensity(atlasPosition);
         bool inMask = insideMask(step, atlasPosition);

@@ -1,4 +1,6 @@
 // Density and mask lookups in the volume atlas, where all time-steps are packed into one 3D texture.
+#include "beam_grid.glsl"
+
 layout(binding = ATLAS_UNIT) uniform sampler3D densityAtlas;
 layout(binding = MASK_ATLAS_UNIT) uniform sampler3D maskAtlas;
 uniform vec3 inverseAtlasSize;
@@ -8,7 +10,24 @@ uniform vec3 inverseAtlasSize;
 // own brick, so bricks need no border between them.
 vec3 voxelCoordinate(int step, vec3 worldPosition) {
     vec3 voxel = (timeSteps.steps[step].worldToVoxel * vec4(worldPosition, 1.0)).xyz;
+    if (isBeamGrid(step)) voxel = beamVoxel(step, voxel).xyz;
     return clamp(voxel, vec3(0.0), timeSteps.steps[step].dims.xyz - 1.0);
+}
+
+// Whether a sample within the time-step's entry/exit interval lies in its grid: always for boxes,
+// whose proxy is exact; a beam fan's proxy encloses it only conservatively, and outside the fan the
+// time-step contributes nothing.
+bool insideGridShape(int step, vec3 worldPosition) {
+    if (!isBeamGrid(step)) return true;
+    return beamVoxel(step, (timeSteps.steps[step].worldToVoxel * vec4(worldPosition, 1.0)).xyz).w > 0.5;
+}
+
+// Whether a sample lies in the time-step's grid at all (for the naive raycaster, which has no
+// entry/exit intervals).
+bool insideGrid(int step, vec3 worldPosition) {
+    if (isBeamGrid(step)) return insideGridShape(step, worldPosition);
+    vec3 voxel = (timeSteps.steps[step].worldToVoxel * vec4(worldPosition, 1.0)).xyz;
+    return all(greaterThanEqual(voxel, vec3(0.0))) && all(lessThanEqual(voxel, timeSteps.steps[step].dims.xyz - 1.0));
 }
 
 vec3 atlasCoordinateOfVoxel(int step, vec3 voxel) {
@@ -50,7 +69,14 @@ bool brickVisible(int step, vec3 voxel) {
 // The ray parameter at which a ray at `t`, at `voxel` in the time-step's grid and heading along
 // `worldDirection`, leaves the brick it is in. Voxel coordinates are an affine function of world
 // position, so t carries over unchanged.
-float brickExit(int step, vec3 voxel, float t, vec3 worldDirection) {
+float brickExit(int step, vec3 voxel, float t, vec3 worldPosition, vec3 worldDirection) {
+    // A beam grid's voxels are not affine in world position: a conservative step instead.
+    if (isBeamGrid(step)) {
+        vec3 brickLower = brickOf(step, voxel) * BRICK_SIZE;
+        vec3 brickUpper = min(brickLower + BRICK_SIZE, timeSteps.steps[step].dims.xyz - 1.0);
+        vec3 local = (timeSteps.steps[step].worldToVoxel * vec4(worldPosition, 1.0)).xyz;
+        return beamBrickExit(step, brickLower, brickUpper, local, t);
+    }
     vec3 direction = mat3(timeSteps.steps[step].worldToVoxel) * worldDirection;
     vec3 lower = brickOf(step, voxel) * BRICK_SIZE;
     vec3 upper = min(lower + BRICK_SIZE, timeSteps.steps[step].dims.xyz - 1.0);

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "beam_grid_field.h"
 #include "manifest_field.h"
 #include "raw_values.h"
 #include "tstyles/core/errors.h"
@@ -74,12 +75,8 @@ std::filesystem::path resolveBeside(const std::filesystem::path& manifest, const
     return file.is_absolute() ? file : manifest.parent_path() / file;
 }
 
-RectilinearGrid readGrid(const ManifestField& field) {
+RectilinearGrid readRectilinearGrid(const ManifestField& field) {
     field.allowOnlyKeys({"type", "dims", "spacing"});
-    const ManifestField type = field.member("type");
-    if (type.string() != "rectilinear") {
-        type.fail("unknown grid type '" + type.string() + "' (known: rectilinear)");
-    }
     RectilinearGrid grid;
     const ManifestField dims = field.member("dims");
     const ManifestField spacing = field.member("spacing");
@@ -101,6 +98,13 @@ RectilinearGrid readGrid(const ManifestField& field) {
             distance.fail("must be positive, found " + numberText(grid.spacing[axis]));
     }
     return grid;
+}
+
+Grid readGrid(const ManifestField& field) {
+    const ManifestField type = field.member("type");
+    if (type.string() == "rectilinear") return readRectilinearGrid(field);
+    if (type.string() == "beam") return readBeamGrid(field);
+    type.fail("unknown grid type '" + type.string() + "' (known: rectilinear, beam)");
 }
 
 Placement readPlacement(const std::optional<ManifestField>& field) {
@@ -177,12 +181,12 @@ std::optional<std::array<double, 2>> readValueRange(const std::optional<Manifest
 
 void readStepFiles(const std::filesystem::path& manifest, std::size_t index, StepEntry& entry) {
     TimeStep& step = entry.step;
-    RawValues raw = readRawValues({manifest, entry.valuesField, index, step.valuesFile}, step.rectilinear(),
+    RawValues raw = readRawValues({manifest, entry.valuesField, index, step.valuesFile}, gridDims(step.grid),
                                   step.sourceType);
     step.density = std::move(raw.values);  // still raw: normalised once the value range is known
     step.rawRange = raw.range;
     if (!entry.maskField.empty()) {
-        step.mask = readMask({manifest, entry.maskField, index, step.maskFile}, step.rectilinear());
+        step.mask = readMask({manifest, entry.maskField, index, step.maskFile}, gridDims(step.grid));
     }
 }
 

@@ -12,12 +12,28 @@
 
 #include "tstyles/core/atomic_file.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/data/beam_geometry.h"
 #include "tstyles/data/manifest.h"
 
 namespace tstyles {
 namespace {
 
 using OrderedJson = nlohmann::ordered_json;
+
+void checkWritableBeamGrid(const BeamGrid& grid, const std::string& where) {
+    const auto increasing = [](const std::vector<double>& angles, int count) {
+        if (angles.size() != std::size_t(count)) return false;
+        for (std::size_t index = 0; index < angles.size(); ++index) {
+            if (!(angles[index] > -80.0 && angles[index] < 80.0)) return false;
+            if (index > 0 && !(angles[index] > angles[index - 1])) return false;
+        }
+        return true;
+    };
+    if (!increasing(grid.azimuthDeg, grid.dims.x) || !increasing(grid.elevationDeg, grid.dims.y))
+        throw std::invalid_argument("writeSeries: " + where + "beam angles must be one per beam, increasing, in (-80, 80)");
+    if (!(grid.minRange >= 0.0 && grid.minRange < grid.maxRange && std::isfinite(grid.maxRange)))
+        throw std::invalid_argument("writeSeries: " + where + "beam range must satisfy 0 <= min < max");
+}
 
 // A RawSeries that loadSeries would reject is a bug in the caller (a generator), not bad user input.
 void checkWritable(const RawSeries& series) {
@@ -32,8 +48,10 @@ void checkWritable(const RawSeries& series) {
     for (std::size_t index = 0; index < series.steps.size(); ++index) {
         const RawTimeStep& step = series.steps[index];
         const std::string where = "time-step " + std::to_string(index) + ": ";
-        if (glm::any(glm::lessThan(step.grid.dims, glm::ivec3(2)))) fail(where + "dims must be at least 2");
-        const std::size_t voxels = step.grid.voxelCount();
+        const glm::ivec3 dims = step.beamGrid ? step.beamGrid->dims : step.grid.dims;
+        if (glm::any(glm::lessThan(dims, glm::ivec3(2)))) fail(where + "dims must be at least 2");
+        if (step.beamGrid) checkWritableBeamGrid(*step.beamGrid, where);
+        const std::size_t voxels = step.beamGrid ? step.beamGrid->voxelCount() : step.grid.voxelCount();
         if (step.bytes.size() != voxels * bytesPerValue(step.type)) {
             fail(where + "has " + std::to_string(step.bytes.size()) + " value bytes, expected " +
                  std::to_string(voxels * bytesPerValue(step.type)));
@@ -57,13 +75,33 @@ OrderedJson vec3Json(const glm::dvec3& v) {
     return OrderedJson::array({v.x, v.y, v.z});
 }
 
+// Evenly spread beams are written as their extent, others angle by angle.
+OrderedJson beamGridJson(const BeamGrid& grid) {
+    OrderedJson json;
+    json["type"] = "beam";
+    json["dims"] = OrderedJson::array({grid.dims.x, grid.dims.y, grid.dims.z});
+    const auto angles = [&](const char* name, const std::vector<double>& values) {
+        if (areEvenBeamAngles(values))
+            json[std::string(name) + "_deg"] = OrderedJson::array({values.front(), values.back()});
+        else
+            json[std::string(name) + "_angles_deg"] = values;
+    };
+    angles("azimuth", grid.azimuthDeg);
+    angles("elevation", grid.elevationDeg);
+    json["range"] = OrderedJson::array({grid.minRange, grid.maxRange});
+    return json;
+}
+
 OrderedJson stepJson(const RawTimeStep& step, const std::string& stem) {
     const AxisAngle rotation = toAxisAngle(step.placement.rotation);
     OrderedJson json;
     json["time"] = step.time;
-    json["grid"] = {{"type", "rectilinear"},
-                    {"dims", OrderedJson::array({step.grid.dims.x, step.grid.dims.y, step.grid.dims.z})},
-                    {"spacing", vec3Json(step.grid.spacing)}};
+    if (step.beamGrid)
+        json["grid"] = beamGridJson(*step.beamGrid);
+    else
+        json["grid"] = {{"type", "rectilinear"},
+                        {"dims", OrderedJson::array({step.grid.dims.x, step.grid.dims.y, step.grid.dims.z})},
+                        {"spacing", vec3Json(step.grid.spacing)}};
     json["placement"] = {{"origin", vec3Json(step.placement.origin)},
                          {"rotation", {{"axis", vec3Json(rotation.axis)}, {"angle_deg", rotation.angleDeg}}}};
     json["values"] = {{"file", stem + ".raw"}, {"type", toString(step.type)}};

@@ -13,9 +13,8 @@
 namespace tstyles {
 namespace {
 
-std::string dimsText(const RectilinearGrid& grid) {
-    return std::to_string(grid.dims.x) + " x " + std::to_string(grid.dims.y) + " x " +
-           std::to_string(grid.dims.z);
+std::string dimsText(const glm::ivec3& dims) {
+    return std::to_string(dims.x) + " x " + std::to_string(dims.y) + " x " + std::to_string(dims.z);
 }
 
 [[noreturn]] void failFile(const RawFileSource& source, const std::string& kind, const std::string& problem) {
@@ -63,20 +62,20 @@ float decodeValue(const std::uint8_t* bytes, ValueType type) {
     return 0.0f;
 }
 
-std::string voxelText(std::size_t index, const RectilinearGrid& grid) {
-    const std::size_t nx = std::size_t(grid.dims.x);
-    const std::size_t ny = std::size_t(grid.dims.y);
+std::string voxelText(std::size_t index, const glm::ivec3& dims) {
+    const std::size_t nx = std::size_t(dims.x);
+    const std::size_t ny = std::size_t(dims.y);
     return std::string("(") + std::to_string(index % nx) + ", " + std::to_string((index / nx) % ny) + ", " +
            std::to_string(index / (nx * ny)) + ")";
 }
 
 }  // namespace
 
-RawValues readRawValues(const RawFileSource& source, const RectilinearGrid& grid, ValueType type) {
+RawValues readRawValues(const RawFileSource& source, const glm::ivec3& dims, ValueType type) {
     const std::size_t stride = bytesPerValue(type);
-    const std::size_t count = grid.voxelCount();
+    const std::size_t count = std::size_t(dims.x) * std::size_t(dims.y) * std::size_t(dims.z);
     const std::vector<std::uint8_t> bytes =
-        readExactly(source, "value file", count * stride, dimsText(grid) + " " + toString(type) + " values");
+        readExactly(source, "value file", count * stride, dimsText(dims) + " " + toString(type) + " values");
 
     RawValues raw;
     raw.values.resize(count);
@@ -87,7 +86,7 @@ RawValues readRawValues(const RawFileSource& source, const RectilinearGrid& grid
         if (!std::isfinite(value)) {
             failFile(source, "value file",
                      std::string("holds a non-finite value (") + (std::isnan(value) ? "NaN" : "Inf") +
-                         ") at voxel (x, y, z) = " + voxelText(index, grid));
+                         ") at voxel (x, y, z) = " + voxelText(index, dims));
         }
         raw.values[index] = value;
         lowest = std::min(lowest, value);
@@ -97,8 +96,9 @@ RawValues readRawValues(const RawFileSource& source, const RectilinearGrid& grid
     return raw;
 }
 
-std::vector<std::uint8_t> readMask(const RawFileSource& source, const RectilinearGrid& grid) {
-    return readExactly(source, "mask file", grid.voxelCount(), dimsText(grid) + " uint8 values");
+std::vector<std::uint8_t> readMask(const RawFileSource& source, const glm::ivec3& dims) {
+    return readExactly(source, "mask file", std::size_t(dims.x) * std::size_t(dims.y) * std::size_t(dims.z),
+                       dimsText(dims) + " uint8 values");
 }
 
 void normalizeToDensity(std::vector<float>& values, const std::array<double, 2>& valueRange) {

@@ -27,12 +27,12 @@ struct RawValues {
     std::array<double, 2> range{0.0, 0.0};  // min, max
 };
 
-// Reads `grid.voxelCount()` little-endian values of `type`; the file size must match exactly and
+// Reads dims.x * dims.y * dims.z little-endian values of `type`; the file size must match exactly and
 // float32 values must be finite.
-RawValues readRawValues(const RawFileSource& source, const RectilinearGrid& grid, ValueType type);
+RawValues readRawValues(const RawFileSource& source, const glm::ivec3& dims, ValueType type);
 
 // Reads one uint8 per voxel.
-std::vector<std::uint8_t> readMask(const RawFileSource& source, const RectilinearGrid& grid);
+std::vector<std::uint8_t> readMask(const RawFileSource& source, const glm::ivec3& dims);
 
 // Maps raw values in place to density: clamp((v - lo) / (hi - lo), 0, 1). Needs lo < hi.
 void normalizeToDensity(std::vector<float>& values, const std::array<double, 2>& valueRange);

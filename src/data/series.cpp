@@ -9,6 +9,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "tstyles/data/beam_geometry.h"
+
 namespace tstyles {
 
 std::string toString(ValueType type) {
@@ -42,6 +44,18 @@ std::size_t bytesPerValue(ValueType type) {
     throw std::logic_error("bytesPerValue: ValueType out of range");
 }
 
+glm::ivec3 gridDims(const Grid& grid) {
+    return std::visit([](const auto& kind) { return kind.dims; }, grid);
+}
+
+std::size_t gridVoxelCount(const Grid& grid) {
+    return std::visit([](const auto& kind) { return kind.voxelCount(); }, grid);
+}
+
+std::string gridTypeName(const Grid& grid) {
+    return std::holds_alternative<BeamGrid>(grid) ? "beam" : "rectilinear";
+}
+
 glm::dmat4 Placement::gridToWorld() const {
     return glm::translate(glm::dmat4(1.0), origin) * glm::mat4_cast(rotation);
 }
@@ -68,17 +82,25 @@ bool Series::hasMasks() const {
 
 Bounds Series::worldBounds(std::size_t step) const {
     const TimeStep& timeStep = steps.at(step);
-    const glm::dvec3 extent = timeStep.rectilinear().extent();
     const glm::dmat4 toWorld = timeStep.placement.gridToWorld();
     Bounds bounds{glm::dvec3(std::numeric_limits<double>::infinity()),
                   glm::dvec3(-std::numeric_limits<double>::infinity())};
-    // A rotated box's axis-aligned bounds are reached at its corners, so eight points suffice.
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::dvec3 local((corner & 1) ? extent.x : 0.0, (corner & 2) ? extent.y : 0.0,
-                               (corner & 4) ? extent.z : 0.0);
+    auto include = [&](const glm::dvec3& local) {
         const glm::dvec3 world(toWorld * glm::dvec4(local, 1.0));
         bounds.lower = glm::min(bounds.lower, world);
         bounds.upper = glm::max(bounds.upper, world);
+    };
+    if (timeStep.isBeam()) {
+        // The fan's enclosing mesh: its far cap bulges past the corners, and lies just outside it.
+        for (const Triangle& triangle : beamFanBoundary(timeStep.beam()))
+            for (const glm::dvec3& corner : triangle) include(corner);
+        return bounds;
+    }
+    const glm::dvec3 extent = timeStep.rectilinear().extent();
+    // A rotated box's axis-aligned bounds are reached at its corners, so eight points suffice.
+    for (int corner = 0; corner < 8; ++corner) {
+        include(glm::dvec3((corner & 1) ? extent.x : 0.0, (corner & 2) ? extent.y : 0.0,
+                           (corner & 4) ? extent.z : 0.0));
     }
     return bounds;
 }
@@ -98,6 +120,10 @@ double Series::finestSpacing() const {
     if (steps.empty()) throw std::logic_error("Series::finestSpacing: the series has no time-steps");
     double finest = std::numeric_limits<double>::infinity();
     for (const TimeStep& step : steps) {
+        if (step.isBeam()) {
+            finest = std::min(finest, beamFinestSpacing(step.beam()));
+            continue;
+        }
         const glm::dvec3 spacing = step.rectilinear().spacing;
         finest = std::min({finest, spacing.x, spacing.y, spacing.z});
     }

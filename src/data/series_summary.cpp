@@ -2,7 +2,10 @@
 // cost in memory.
 #include "tstyles/data/series_summary.h"
 
+#include "tstyles/data/beam_geometry.h"
+
 #include <algorithm>
+#include <variant>
 #include <iomanip>
 #include <sstream>
 #include <vector>
@@ -64,14 +67,34 @@ void printTable(std::ostream& out, const std::vector<Row>& rows) {
     }
 }
 
+std::string dimsText(const glm::ivec3& dims) {
+    return std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" + std::to_string(dims.z);
+}
+
+std::string angleSpanText(const std::vector<double>& anglesDeg) {
+    return number(anglesDeg.front()) + ".." + number(anglesDeg.back()) +
+           (areEvenBeamAngles(anglesDeg) ? "" : " uneven");
+}
+
+// The grid's kind and size, and its spacing: a box's distances, or a fan's angles and ranges.
+std::array<std::string, 2> gridText(const TimeStep& step) {
+    if (step.isBeam()) {
+        const BeamGrid& grid = step.beam();
+        return {"beam " + dimsText(grid.dims),
+                "az " + angleSpanText(grid.azimuthDeg) + " el " + angleSpanText(grid.elevationDeg) +
+                    " deg, range " + number(grid.minRange) + ".." + number(grid.maxRange)};
+    }
+    const RectilinearGrid& grid = step.rectilinear();
+    return {"rectilinear " + dimsText(grid.dims), vec3Text(grid.spacing)};
+}
+
 Row stepRow(const Series& series, std::size_t index) {
     const TimeStep& step = series.steps[index];
-    const RectilinearGrid& grid = step.rectilinear();
+    const auto [grid, spacing] = gridText(step);
     return {std::to_string(index),
             number(step.time),
-            "rectilinear " + std::to_string(grid.dims.x) + "x" + std::to_string(grid.dims.y) + "x" +
-                std::to_string(grid.dims.z),
-            vec3Text(grid.spacing),
+            grid,
+            spacing,
             vec3Text(step.placement.origin),
             rotationText(step.placement.rotation),
             number(step.rawRange[0]) + " .. " + number(step.rawRange[1]) + " " + toString(step.sourceType),
@@ -94,15 +117,20 @@ void printOverlaps(std::ostream& out, const Series& series) {
     printTable(out, rows);
 }
 
+bool sameGrid(const TimeStep& a, const TimeStep& b) {
+    if (a.grid.index() != b.grid.index()) return false;
+    if (a.isBeam()) return a.beam() == b.beam();
+    return a.rectilinear().dims == b.rectilinear().dims && a.rectilinear().spacing == b.rectilinear().spacing &&
+           a.rectilinear().axisPositions == b.rectilinear().axisPositions;
+}
+
 }  // namespace
 
 bool isFullyAligned(const Series& series) {
     if (series.steps.empty()) return true;
     const TimeStep& first = series.steps.front();
     return std::all_of(series.steps.begin(), series.steps.end(), [&first](const TimeStep& step) {
-        return step.grid.index() == first.grid.index() &&
-               step.rectilinear().dims == first.rectilinear().dims &&
-               step.rectilinear().spacing == first.rectilinear().spacing && step.placement == first.placement;
+        return sameGrid(step, first) && step.placement == first.placement;
     });
 }
 
@@ -119,7 +147,7 @@ double overlapFraction(const Series& series, std::size_t a, std::size_t b) {
 std::size_t diskBytes(const Series& series) {
     std::size_t bytes = 0;
     for (const TimeStep& step : series.steps) {
-        const std::size_t voxels = step.rectilinear().voxelCount();
+        const std::size_t voxels = gridVoxelCount(step.grid);
         bytes += voxels * bytesPerValue(step.sourceType) + (step.mask ? voxels : 0);
     }
     return bytes;
@@ -128,7 +156,7 @@ std::size_t diskBytes(const Series& series) {
 std::size_t gpuBytes(const Series& series) {
     std::size_t bytes = 0;
     for (const TimeStep& step : series.steps) {
-        const std::size_t voxels = step.rectilinear().voxelCount();
+        const std::size_t voxels = gridVoxelCount(step.grid);
         bytes += voxels * kGpuBytesPerDensityVoxel + (step.mask ? voxels * kGpuBytesPerMaskVoxel : 0);
     }
     return bytes;

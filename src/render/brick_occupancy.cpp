@@ -7,8 +7,7 @@
 namespace tstyles {
 
 BrickGrid computeBrickGrid(const TimeStep& step) {
-    const RectilinearGrid& grid = step.rectilinear();
-    const glm::ivec3 dims = grid.dims;
+    const glm::ivec3 dims = gridDims(step.grid);
     BrickGrid result;
     result.bricks = glm::max((dims - 1 + kBrickSize - 1) / kBrickSize, glm::ivec3(1));
     result.minMax.assign(std::size_t(result.bricks.x) * result.bricks.y * result.bricks.z, {1.0f, 0.0f});

@@ -12,6 +12,9 @@ EntryExitBuffers::EntryExitBuffers(const ShaderLibrary& shaders)
     : program_(Program::build(shaders, {{GL_VERTEX_SHADER, "entry_exit.vert"},
                                         {GL_GEOMETRY_SHADER, "entry_exit.geom"},
                                         {GL_FRAGMENT_SHADER, "entry_exit.frag"}})),
+      meshProgram_(Program::build(shaders, {{GL_VERTEX_SHADER, "entry_exit_mesh.vert"},
+                                            {GL_GEOMETRY_SHADER, "entry_exit.geom"},
+                                            {GL_FRAGMENT_SHADER, "entry_exit.frag"}})),
       emptyVertexArray_(VertexArray::create()) {}
 
 void EntryExitBuffers::resize(glm::ivec2 viewport, int layers) {
@@ -57,12 +60,20 @@ void EntryExitBuffers::render(const GpuSeries& series, const glm::mat4& viewProj
     glBlendFunci(0, GL_ONE, GL_ONE);
     glBlendFunci(1, GL_ONE, GL_ONE);
 
-    program_.set("viewProjection", viewProjection);
-    program_.set("inverseViewProjection", inverseViewProjection);
-    program_.set("viewportSize", glm::vec2(viewport));
-    program_.use();
     emptyVertexArray_.bind();
-    glDrawArraysInstanced(GL_TRIANGLES, 0, 36, GLsizei(series.proxyCount()));
+    for (const Program* program : {&program_, &meshProgram_}) {
+        program->set("viewProjection", viewProjection);
+        program->set("inverseViewProjection", inverseViewProjection);
+        program->set("viewportSize", glm::vec2(viewport));
+    }
+    if (series.proxyBoxCount() > 0) {
+        program_.use();
+        glDrawArraysInstanced(GL_TRIANGLES, 0, 36, GLsizei(series.proxyBoxCount()));
+    }
+    if (series.proxyMeshVertexCount() > 0) {
+        meshProgram_.use();
+        glDrawArrays(GL_TRIANGLES, 0, GLsizei(series.proxyMeshVertexCount()));
+    }
 
     glDisablei(GL_BLEND, 0);
     glDisablei(GL_BLEND, 1);

@@ -9,6 +9,7 @@
 
 #include "tstyles/core/errors.h"
 #include "tstyles/render/bindings.h"
+#include "tstyles/render/proxy_mesh.h"
 
 namespace tstyles {
 namespace {
@@ -20,7 +21,12 @@ struct TimeStepInfo {
     glm::vec4 dims;
     glm::ivec4 layer;
     glm::vec4 occupancyOrigin;  // xyz: first texel of this time-step's bricks in the occupancy atlas
+    glm::ivec4 grid;            // x: grid kind; beam grids: y, z: first azimuth, elevation angle
+    glm::vec4 beamRange;        // beam grids: minimum, maximum range, gradient difference distance
 };
+
+constexpr int kGridRectilinear = 0;  // GRID_RECTILINEAR in shaders/beam_grid.glsl
+constexpr int kGridBeam = 1;         // GRID_BEAM
 
 // Mirrors ProxyBox in shaders/proxy_geometry.glsl (std430).
 struct ProxyBox {
@@ -47,17 +53,23 @@ Texture createAtlas(GLenum format, const glm::ivec3& size) {
     return texture;
 }
 
-// The proxy layer of every time-step; time-steps with the same grid extent and placement share one.
-std::vector<int> assignProxyLayers(const Series& series, std::vector<ProxyBox>& boxes) {
+bool shareProxy(const TimeStep& a, const TimeStep& b) {
+    if (!(a.placement == b.placement) || a.grid.index() != b.grid.index()) return false;
+    if (a.isBeam()) return a.beam() == b.beam();
+    return a.rectilinear().extent() == b.rectilinear().extent();
+}
+
+// The proxy layer of every time-step; time-steps with the same grid and placement share one. Boxes
+// get a proxy box, beam fans a proxy mesh.
+std::vector<int> assignProxyLayers(const Series& series, std::vector<ProxyBox>& boxes,
+                                   std::vector<ProxyMeshVertex>& mesh) {
     std::vector<int> layers;
     std::vector<std::size_t> firstStepOfLayer;
     for (std::size_t step = 0; step < series.size(); ++step) {
         const auto& timeStep = series.steps[step];
         int layer = -1;
         for (std::size_t candidate = 0; candidate < firstStepOfLayer.size(); ++candidate) {
-            const auto& other = series.steps[firstStepOfLayer[candidate]];
-            if (other.placement == timeStep.placement &&
-                other.rectilinear().extent() == timeStep.rectilinear().extent()) {
+            if (shareProxy(series.steps[firstStepOfLayer[candidate]], timeStep)) {
                 layer = int(candidate);
                 break;
             }
@@ -65,12 +77,40 @@ std::vector<int> assignProxyLayers(const Series& series, std::vector<ProxyBox>& 
         if (layer < 0) {
             layer = int(firstStepOfLayer.size());
             firstStepOfLayer.push_back(step);
-            boxes.push_back({glm::mat4(timeStep.placement.gridToWorld()),
-                             glm::vec4(glm::vec3(timeStep.rectilinear().extent()), 0.0f)});
+            if (timeStep.isBeam())
+                appendBeamProxyMesh(timeStep, layer, mesh);
+            else
+                boxes.push_back({glm::mat4(timeStep.placement.gridToWorld()),
+                                 glm::vec4(glm::vec3(timeStep.rectilinear().extent()), float(layer))});
         }
         layers.push_back(layer);
     }
     return layers;
+}
+
+// A time-step's row in the time-step table; beam grids also append their angles (radians).
+TimeStepInfo timeStepInfo(const TimeStep& step, const glm::ivec3& brickOrigin, int layer,
+                          const glm::ivec3& occupancyOrigin, std::vector<float>& beamAngles) {
+    TimeStepInfo info{};
+    const glm::ivec3 dims = gridDims(step.grid);
+    info.brickOrigin = glm::vec4(glm::vec3(brickOrigin), 0.0f);
+    info.dims = glm::vec4(glm::vec3(dims), step.mask ? 1.0f : 0.0f);
+    info.layer = glm::ivec4(layer, 0, 0, 0);
+    info.occupancyOrigin = glm::vec4(glm::vec3(occupancyOrigin), 0.0f);
+    if (step.isBeam()) {
+        const BeamGrid& grid = step.beam();
+        info.worldToVoxel = glm::mat4(glm::inverse(step.placement.gridToWorld()));
+        info.grid = glm::ivec4(kGridBeam, int(beamAngles.size()), int(beamAngles.size()) + dims.x, 0);
+        for (double angle : grid.azimuthDeg) beamAngles.push_back(float(glm::radians(angle)));
+        for (double angle : grid.elevationDeg) beamAngles.push_back(float(glm::radians(angle)));
+        info.beamRange = glm::vec4(float(grid.minRange), float(grid.maxRange), float(grid.rangeSpacing()), 0.0f);
+        return info;
+    }
+    const glm::dmat4 voxelToWorld =
+        step.placement.gridToWorld() * glm::scale(glm::dmat4(1.0), step.rectilinear().spacing);
+    info.worldToVoxel = glm::mat4(glm::inverse(voxelToWorld));
+    info.grid = glm::ivec4(kGridRectilinear, 0, 0, 0);
+    return info;
 }
 
 }  // namespace
@@ -80,11 +120,13 @@ GpuSeries::GpuSeries(const Series& series)
       maskAtlas_(Texture::create(GL_TEXTURE_3D)),
       occupancyAtlas_(Texture::create(GL_TEXTURE_3D)),
       timeStepTable_(Buffer::create()),
-      proxyTable_(Buffer::create()) {
+      proxyTable_(Buffer::create()),
+      beamAngleTable_(Buffer::create()),
+      proxyMeshTable_(Buffer::create()) {
     timeStepCount_ = series.size();
     hasMasks_ = series.hasMasks();
     std::vector<glm::ivec3> dims;
-    for (const auto& step : series.steps) dims.push_back(step.rectilinear().dims);
+    for (const auto& step : series.steps) dims.push_back(gridDims(step.grid));
     layout_ = planAtlas(dims, maxTextureSize3D());
 
     glGetError();  // start from a clean error state so that OUT_OF_MEMORY below is ours
@@ -97,7 +139,7 @@ GpuSeries::GpuSeries(const Series& series)
     std::vector<std::uint8_t> maskTexels;
     for (std::size_t index = 0; index < series.size(); ++index) {
         const auto& step = series.steps[index];
-        const glm::ivec3 size = step.rectilinear().dims;
+        const glm::ivec3 size = gridDims(step.grid);
         const glm::ivec3 origin = layout_.brickOrigins[index];
         texels.resize(step.density.size());
         std::transform(step.density.begin(), step.density.end(), texels.begin(), [](float density) {
@@ -131,19 +173,24 @@ GpuSeries::GpuSeries(const Series& series)
     occupancyAtlas_.setClampToEdge();
 
     std::vector<ProxyBox> boxes;
-    const std::vector<int> layers = assignProxyLayers(series, boxes);
-    proxyCount_ = boxes.size();
+    std::vector<ProxyMeshVertex> mesh;
+    const std::vector<int> layers = assignProxyLayers(series, boxes, mesh);
+    proxyCount_ = layers.empty() ? 0 : std::size_t(*std::max_element(layers.begin(), layers.end()) + 1);
+    proxyBoxCount_ = boxes.size();
+    proxyMeshVertexCount_ = mesh.size();
     std::vector<TimeStepInfo> table;
+    std::vector<float> beamAngles;
     for (std::size_t index = 0; index < series.size(); ++index) {
-        const auto& step = series.steps[index];
-        const glm::dmat4 voxelToWorld =
-            step.placement.gridToWorld() * glm::scale(glm::dmat4(1.0), step.rectilinear().spacing);
-        table.push_back({glm::mat4(glm::inverse(voxelToWorld)), glm::vec4(glm::vec3(layout_.brickOrigins[index]), 0.0f),
-                         glm::vec4(glm::vec3(step.rectilinear().dims), step.mask ? 1.0f : 0.0f),
-                         glm::ivec4(layers[index], 0, 0, 0),
-                         glm::vec4(glm::vec3(occupancyLayout_.brickOrigins[index]), 0.0f)});
+        table.push_back(timeStepInfo(series.steps[index], layout_.brickOrigins[index], layers[index],
+                                     occupancyLayout_.brickOrigins[index], beamAngles));
     }
+    // Buffers bound to a binding point must not be empty, even where no shader reads them.
+    if (boxes.empty()) boxes.push_back({});
+    if (mesh.empty()) mesh.push_back({});
+    if (beamAngles.empty()) beamAngles.push_back(0.0f);
     timeStepTable_.setData(std::as_bytes(std::span(table)), GL_STATIC_DRAW);
+    beamAngleTable_.setData(std::as_bytes(std::span(beamAngles)), GL_STATIC_DRAW);
+    proxyMeshTable_.setData(std::as_bytes(std::span(mesh)), GL_STATIC_DRAW);
     proxyTable_.setData(std::as_bytes(std::span(boxes)), GL_STATIC_DRAW);
 }
 
@@ -169,6 +216,8 @@ void GpuSeries::bind() const {
     occupancyAtlas_.bindToUnit(binding::kOccupancyUnit);
     timeStepTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kTimeStepBuffer);
     proxyTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kProxyBuffer);
+    beamAngleTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kBeamAngleBuffer);
+    proxyMeshTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kProxyMeshBuffer);
 }
 
 }  // namespace tstyles

@@ -23,9 +23,14 @@ std::string bytesText(std::size_t bytes) {
 }
 
 bool sameGrid(const Series& series) {
-    const RectilinearGrid& first = series.steps.front().rectilinear();
+    const TimeStep& first = series.steps.front();
+    if (first.isBeam()) {
+        return std::all_of(series.steps.begin(), series.steps.end(),
+                           [&](const TimeStep& step) { return step.isBeam() && step.beam() == first.beam(); });
+    }
     return std::all_of(series.steps.begin(), series.steps.end(), [&](const TimeStep& step) {
-        return step.rectilinear().dims == first.dims && step.rectilinear().spacing == first.spacing;
+        return !step.isBeam() && step.rectilinear().dims == first.rectilinear().dims &&
+               step.rectilinear().spacing == first.rectilinear().spacing;
     });
 }
 
@@ -39,7 +44,7 @@ void drawStepTable(const Series& series) {
     ImGui::TableHeadersRow();
     for (std::size_t i = 0; i < series.size(); ++i) {
         const TimeStep& step = series.steps[i];
-        const RectilinearGrid& grid = step.rectilinear();
+        const glm::ivec3 dims = gridDims(step.grid);
         const AxisAngle rotation = toAxisAngle(step.placement.rotation);
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
@@ -47,7 +52,7 @@ void drawStepTable(const Series& series) {
         ImGui::TableNextColumn();
         ImGui::Text("%.3g", step.time);
         ImGui::TableNextColumn();
-        ImGui::Text("%dx%dx%d", grid.dims.x, grid.dims.y, grid.dims.z);
+        ImGui::Text("%s%dx%dx%d", step.isBeam() ? "beam " : "", dims.x, dims.y, dims.z);
         ImGui::TableNextColumn();
         ImGui::Text("%.2f %.2f %.2f", step.placement.origin.x, step.placement.origin.y, step.placement.origin.z);
         ImGui::TableNextColumn();
@@ -67,11 +72,14 @@ void drawDatasetSection(SidePanelState& state, UiAnchors&) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", series.manifestPath.string().c_str());
     const TimeStep& first = series.steps.front();
     ImGui::Text("%zu time-steps, t = %.3g .. %.3g", series.size(), first.time, series.steps.back().time);
-    const RectilinearGrid& grid = first.rectilinear();
-    if (sameGrid(series))
-        ImGui::Text("grid %dx%dx%d, spacing %.3g", grid.dims.x, grid.dims.y, grid.dims.z, grid.spacing.x);
+    const glm::ivec3 dims = gridDims(first.grid);
+    if (sameGrid(series) && first.isBeam())
+        ImGui::Text("beam grid %dx%dx%d, range %.3g .. %.3g", dims.x, dims.y, dims.z, first.beam().minRange,
+                    first.beam().maxRange);
+    else if (sameGrid(series))
+        ImGui::Text("grid %dx%dx%d, spacing %.3g", dims.x, dims.y, dims.z, first.rectilinear().spacing.x);
     else
-        ImGui::Text("rectilinear grids of different sizes");
+        ImGui::Text("grids of different kinds or sizes");
     ImGui::Text("placement: %s", isFullyAligned(series) ? "aligned" : "moving (partial overlap)");
     ImGui::Text("values %.4g .. %.4g = density 0 .. 1", series.valueRange[0], series.valueRange[1]);
     ImGui::Text("disk %s, GPU %s", bytesText(diskBytes(series)).c_str(),

@@ -16,6 +16,8 @@ Series loadSeries(const std::filesystem::path& manifestPath);
 struct RawTimeStep {
     double time = 0.0;
     RectilinearGrid grid;
+    // When set, the time-step lies on this beam (sonar) grid instead, and `grid` is not written.
+    std::optional<BeamGrid> beamGrid;
     Placement placement;
     ValueType type = ValueType::Float32;
     std::vector<std::uint8_t> bytes;                  // little-endian values, x fastest

@@ -17,6 +17,8 @@ inline constexpr unsigned kProxyBuffer = 1;
 inline constexpr unsigned kIndexTstfBuffer = 2;
 inline constexpr unsigned kStatisticsBuffer = 3;
 inline constexpr unsigned kStyleNodeBuffer = 4;
+inline constexpr unsigned kBeamAngleBuffer = 5;
+inline constexpr unsigned kProxyMeshBuffer = 6;
 
 inline constexpr float kNoEntry = 1.0e30f;
 inline constexpr float kNoExit = -1.0e30f;

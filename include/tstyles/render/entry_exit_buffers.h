@@ -25,7 +25,8 @@ public:
 private:
     void resize(glm::ivec2 viewport, int layers);
 
-    Program program_;
+    Program program_;      // instanced proxy boxes
+    Program meshProgram_;  // proxy meshes (beam fans)
     VertexArray emptyVertexArray_;
     glm::ivec2 size_{0};
     int layers_ = 0;

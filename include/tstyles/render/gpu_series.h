@@ -1,5 +1,6 @@
 // A series as the GPU holds it: all densities in one 3D atlas texture (masks in a second one), a
-// table describing each time-step, and one proxy box per distinct placement. Built once per series.
+// table describing each time-step, and one proxy (a box, or a beam fan's mesh) per distinct grid
+// and placement. Built once per series.
 #pragma once
 
 #include <cstddef>
@@ -21,7 +22,11 @@ public:
     explicit GpuSeries(const Series& series);
 
     std::size_t timeStepCount() const { return timeStepCount_; }
+    // Layers of the entry/exit buffers: one per distinct grid and placement.
     std::size_t proxyCount() const { return proxyCount_; }
+    // Of those, the layers drawn as instanced boxes, and the vertices of the beam fans' mesh.
+    std::size_t proxyBoxCount() const { return proxyBoxCount_; }
+    std::size_t proxyMeshVertexCount() const { return proxyMeshVertexCount_; }
     const AtlasLayout& layout() const { return layout_; }
     bool hasMasks() const { return hasMasks_; }
     // Bytes of texture memory: the density atlas, the mask atlas.
@@ -37,6 +42,8 @@ public:
 private:
     std::size_t timeStepCount_ = 0;
     std::size_t proxyCount_ = 0;
+    std::size_t proxyBoxCount_ = 0;
+    std::size_t proxyMeshVertexCount_ = 0;
     bool hasMasks_ = false;
     AtlasLayout layout_;
     Texture densityAtlas_;
@@ -46,6 +53,8 @@ private:
     Texture occupancyAtlas_;
     Buffer timeStepTable_;
     Buffer proxyTable_;
+    Buffer beamAngleTable_;
+    Buffer proxyMeshTable_;
 };
 
 }  // namespace tstyles
