@@ -35,7 +35,12 @@ glm::dvec3 beamDirection(double azimuthRad, double elevationRad) {
 }
 
 std::optional<double> fractionalBeamIndex(const std::vector<double>& anglesDeg, double angleDeg) {
-    if (anglesDeg.size() < 2 || angleDeg < anglesDeg.front() || angleDeg > anglesDeg.back()) return std::nullopt;
+    // Samples on the outermost beams must count as inside despite rounding in atan2.
+    constexpr double kToleranceDeg = 1e-9;
+    if (anglesDeg.size() < 2 || angleDeg < anglesDeg.front() - kToleranceDeg ||
+        angleDeg > anglesDeg.back() + kToleranceDeg)
+        return std::nullopt;
+    angleDeg = std::clamp(angleDeg, anglesDeg.front(), anglesDeg.back());
     const auto upper = std::upper_bound(anglesDeg.begin(), anglesDeg.end(), angleDeg);
     const std::size_t next = std::min(std::size_t(upper - anglesDeg.begin()), anglesDeg.size() - 1);
     const std::size_t previous = next - 1;
@@ -46,7 +51,8 @@ std::optional<double> fractionalBeamIndex(const std::vector<double>& anglesDeg, 
 std::optional<glm::dvec3> beamVoxel(const BeamGrid& grid, const glm::dvec3& local) {
     if (!(local.z > 0.0)) return std::nullopt;
     const double range = glm::length(local);
-    if (range < grid.minRange || range > grid.maxRange) return std::nullopt;
+    const double tolerance = 1e-12 * grid.maxRange;  // samples on the near and far caps are inside
+    if (range < grid.minRange - tolerance || range > grid.maxRange + tolerance) return std::nullopt;
     const auto across = fractionalBeamIndex(grid.azimuthDeg, glm::degrees(std::atan2(local.x, local.z)));
     const auto along = fractionalBeamIndex(grid.elevationDeg, glm::degrees(std::atan2(local.y, local.z)));
     if (!across || !along) return std::nullopt;
