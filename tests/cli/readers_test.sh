@@ -346,6 +346,16 @@ case_solution_on_netcdf() {
     expect_error_line "$S/ocean.nc" "--solution" "Plot3D"
 }
 
+case_option_for_another_format() {
+    samples
+    run_tstyles -- info "$S/volume.nrrd" --var temp
+    expect_exit 2
+    expect_error_line "$S/volume.nrrd" "--var" "does not apply to NRRD files (only to NetCDF and Plot3D)"
+    run_tstyles -- info "$S/ocean.nc" --var temp --dims 6x5x4
+    expect_exit 2
+    expect_error_line "$S/ocean.nc" "--dims" "only to Hurricane Isabel raw"
+}
+
 case_unknown_format() {
     mkdir -p "$SCRATCH/files"
     echo "just some text" >"$SCRATCH/files/notes.txt"

@@ -26,21 +26,23 @@ bool startsWithNrrdMagic(const std::filesystem::path& file) {
 
 const std::vector<SeriesFormat>& seriesFormats() {
     static const std::vector<SeriesFormat> formats = {
-        {"NetCDF", {".nc", ".nc4", ".cdf", ".netcdf"}, ".nc .nc4 .cdf .netcdf", hasNetcdfSignature,
+        {"NetCDF", {".nc", ".nc4", ".cdf", ".netcdf"}, ".nc .nc4 .cdf .netcdf",
+         {"--var", "--time-dim", "--index-axes"}, hasNetcdfSignature,
          stackedFiles([](const std::filesystem::path& file, const ReadOptions& options) {
              return openNetcdf(file, options);
          })},
-        {"NIfTI", {".nii", ".nii.gz"}, ".nii .nii.gz", hasNiftiSignature,
+        {"NIfTI", {".nii", ".nii.gz"}, ".nii .nii.gz", {}, hasNiftiSignature,
          stackedFiles([](const std::filesystem::path& file, const ReadOptions&) { return openNifti(file); })},
-        {"NRRD", {".nrrd", ".nhdr"}, ".nrrd .nhdr", startsWithNrrdMagic,
+        {"NRRD", {".nrrd", ".nhdr"}, ".nrrd .nhdr", {}, startsWithNrrdMagic,
          stackedFiles([](const std::filesystem::path& file, const ReadOptions&) { return openNrrd(file); })},
         // By name only: ".bin" alone says too little.
-        {"Hurricane Isabel raw", {}, "VARIABLEfHH.bin or .bin.gz", isIsabelFileName,
+        {"Hurricane Isabel raw", {}, "VARIABLEfHH.bin or .bin.gz", {"--dims"}, isIsabelFileName,
          [](const std::vector<std::filesystem::path>& files, const ReadOptions& options) {
              return openIsabel(files, options.rawDims);
          }},
         // Last: its content sniff reads the whole file to find a layout that fits.
-        {kPlot3DFormatName, {".xyz", ".x", ".g", ".grd"}, ".xyz .x .g .grd, with --solution", looksLikePlot3DGrid,
+        {kPlot3DFormatName, {".xyz", ".x", ".g", ".grd"}, ".xyz .x .g .grd, with --solution",
+         {"--var", "--solution", "--block", "--gamma"}, looksLikePlot3DGrid,
          [](const std::vector<std::filesystem::path>& files, const ReadOptions& options) {
              if (files.size() > 1)
                  throwInputError(files[1], "", "a Plot3D series is one grid file; give its solution files with --solution");

@@ -76,8 +76,34 @@ void rejectReadingOptions(const std::filesystem::path& manifest, const ReadOptio
     reject(options.gamma != ReadOptions{}.gamma, "--gamma");
 }
 
+// The options that only some formats take, as the command line spells them, where given.
+std::vector<std::string> formatOnlyOptionsGiven(const ReadOptions& options) {
+    std::vector<std::string> given;
+    if (!options.variable.empty()) given.push_back("--var");
+    if (!options.timeDimension.empty()) given.push_back("--time-dim");
+    if (options.indexAxes) given.push_back("--index-axes");
+    if (options.rawDims) given.push_back("--dims");
+    if (!options.solutionFiles.empty()) given.push_back("--solution");
+    if (options.block != 0) given.push_back("--block");
+    if (options.gamma != ReadOptions{}.gamma) given.push_back("--gamma");
+    return given;
+}
+
+// An option the format has no use for is an error, not silently ignored.
+void rejectForeignOptions(const std::filesystem::path& input, const SeriesFormat& format, const ReadOptions& options) {
+    for (const std::string& option : formatOnlyOptionsGiven(options))
+        if (std::find(format.options.begin(), format.options.end(), option) == format.options.end()) {
+            std::string takers;
+            for (const SeriesFormat& other : seriesFormats())
+                if (std::find(other.options.begin(), other.options.end(), option) != other.options.end())
+                    takers += (takers.empty() ? "" : " and ") + other.name;
+            throwInputError(input, option, "does not apply to " + format.name + " files (only to " + takers + ")");
+        }
+}
+
 SourceSeries openSource(const std::vector<std::filesystem::path>& inputs, const ReadOptions& options) {
     const SeriesFormat& format = formatOf(inputs.front(), options);
+    rejectForeignOptions(inputs.front(), format, options);
     for (const auto& input : inputs)
         if (&formatOf(input, options) != &format)
             throwInputError(input, "", "is not " + format.name + " like " + inputs.front().string() +
