@@ -1,6 +1,7 @@
 #version 450 core
-// Entry/exit buffer generation, step 1 for proxy meshes (beam fans): vertex gl_VertexID of the
-// mesh of every such grid, drawn in one call; the geometry and fragment stages are the boxes'.
+// Entry/exit buffer generation, step 1 for proxy meshes (beam fans, the boundary faces of
+// structured grids): vertex gl_VertexID of the mesh of every such grid, drawn in one call; the
+// geometry and fragment stages are the boxes'.
 #include "bindings.glsl"
 #include "proxy_mesh.glsl"
 

@@ -1,24 +1,52 @@
 // Density gradients for lit-sphere shading: central differences one voxel apart in the time-step's
 // own grid (one-sided at its faces), turned into world space through the grid's placement and
-// spacing, so anisotropic and rotated grids shade correctly.
+// spacing, so anisotropic, uneven and rotated grids shade correctly; structured and beam grids
+// have their own (structured_gradient.glsl, beamWorldGradient below).
+#include "structured_gradient.glsl"
+
 vec3 beamWorldGradient(int step, vec3 worldPosition);
 
 vec3 worldGradient(int step, vec3 worldPosition) {
+#if !ALL_AFFINE
+    if (isStructured(step)) return structuredWorldGradient(step, worldPosition);
     if (isBeamGrid(step)) return beamWorldGradient(step, worldPosition);
+#endif
     vec3 voxel = voxelCoordinate(step, worldPosition);
     vec3 upperLimit = timeSteps.steps[step].dims.xyz - 1.0;
+    float centre = MISSING_DENSITY;  // read only when a neighbour has no data
     vec3 gradient;
     for (int axis = 0; axis < 3; ++axis) {
         vec3 offset = vec3(0.0);
         offset[axis] = 1.0;
         vec3 upper = min(voxel + offset, upperLimit);
         vec3 lower = max(voxel - offset, vec3(0.0));
+        float upperDensity = sampleDensity(atlasCoordinateOfVoxel(step, upper));
+        float lowerDensity = sampleDensity(atlasCoordinateOfVoxel(step, lower));
+        // Beside missing data the difference is one-sided, towards the side that has data.
+        if (isMissingDensity(upperDensity) || isMissingDensity(lowerDensity)) {
+            if (isMissingDensity(centre)) centre = sampleDensity(atlasCoordinateOfVoxel(step, voxel));
+            if (isMissingDensity(upperDensity)) {
+                upperDensity = centre;
+                upper = voxel;
+            }
+            if (isMissingDensity(lowerDensity)) {
+                lowerDensity = centre;
+                lower = voxel;
+            }
+        }
+        // The span in worldToVoxel's coordinates: voxels, or grid-local units along an uneven axis.
+#if ALL_AFFINE
         float span = upper[axis] - lower[axis];
-        float difference = sampleDensity(atlasCoordinateOfVoxel(step, upper)) -
-                           sampleDensity(atlasCoordinateOfVoxel(step, lower));
-        gradient[axis] = span > 0.0 ? difference / span : 0.0;
+#else
+        float span = isUnevenAxis(step, axis)
+                         ? nodePositionOf(step, axis, upper[axis]) - nodePositionOf(step, axis, lower[axis])
+                         : upper[axis] - lower[axis];
+#endif
+        float difference = upperDensity - lowerDensity;
+        bool bothHaveData = !isMissingDensity(upperDensity) && !isMissingDensity(lowerDensity);
+        gradient[axis] = span > 0.0 && bothHaveData ? difference / span : 0.0;
     }
-    // voxel = M * world, so d(density)/d(world) = transpose(M) * d(density)/d(voxel).
+    // worldToVoxel's coordinates = M * world, so d(density)/d(world) = transpose(M) * their gradient.
     return transpose(mat3(timeSteps.steps[step].worldToVoxel)) * gradient;
 }
 

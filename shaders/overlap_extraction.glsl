@@ -45,11 +45,21 @@ vec2 extractVolumeOverlap(ivec2 pixel) {
     return rayDepth;
 }
 
-// The first entry depth after t among the active time-steps, or `limit` if there is none: where
-// the next time-step begins when the ray is in empty space between boxes.
+// The slots of the list that can contain the current sample: [liveBegin, liveEnd). Slots before
+// liveBegin were left behind, slots from liveEnd on are not reached yet; the ray's samples move
+// forward only, so both ends only grow. Per sample this costs a step or two instead of a pass over
+// the whole list (which llvmpipe pays for the longest list of 8 pixels at a time).
+int liveBegin = 0;
+int liveEnd = 0;
+
+void advanceLiveWindow(float t) {
+    while (liveEnd < activeCount && activeIntervals[liveEnd].x <= t) ++liveEnd;
+    while (liveBegin < liveEnd && activeIntervals[liveBegin].y < t) ++liveBegin;
+}
+
+// The first entry depth after t (the last position given to advanceLiveWindow) among the active
+// time-steps, or `limit` if there is none: where the next time-step begins when the ray is in empty
+// space between boxes. The list is in entry order, so that is the first slot not reached yet.
 float nextEntryAfter(float t, float limit) {
-    float next = limit;
-    for (int i = 0; i < activeCount; ++i)
-        if (activeIntervals[i].x > t) next = min(next, activeIntervals[i].x);
-    return next;
+    return liveEnd < activeCount ? min(activeIntervals[liveEnd].x, limit) : limit;
 }

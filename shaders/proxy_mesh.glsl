@@ -1,4 +1,5 @@
-// Proxy meshes for the entry/exit buffers of grids that are not boxes (beam fans): world-space
+// Proxy meshes for the entry/exit buffers of grids that are not boxes (beam fans, structured
+// grids' boundary faces): world-space
 // triangles, three vertices each, with the triangle's outward normal and its layer.
 struct ProxyVertex {
     vec4 position;  // xyz: world position; w: layer in the entry/exit buffers

@@ -5,12 +5,14 @@
 #include "bindings.glsl"
 #include "ray.glsl"
 #include "time_steps.glsl"
+#include "uneven_axes.glsl"
 #include "volume_sampling.glsl"
 #include "gradient.glsl"
 #include "transfer_functions.glsl"
 #include "final_processing.glsl"
 #include "styles.glsl"
 #include "overlap_extraction.glsl"
+#include "voxel_rays.glsl"
 #include "temporal_compositor.glsl"
 
 uniform float stepLength;       // world units between samples
@@ -42,6 +44,9 @@ layout(location = 0) out vec4 fragmentColor;  // premultiplied by alpha
 void main() {
     Ray ray = rayForPixel(gl_FragCoord.xy);
     vec2 rayDepth = extractVolumeOverlap(ivec2(gl_FragCoord.xy));
+#if !NAIVE_RAYCASTER
+    prepareVoxelRays(ray);
+#endif
 
     vec4 accumulated = vec4(0.0);  // premultiplied colour, opacity
     int samples = 0;
@@ -52,7 +57,10 @@ void main() {
         // exactly at the exit, so a slab of thickness D gets exactly D worth of opacity.
         float segmentEnd = min(t + stepLength, rayDepth.y);
         float middle = 0.5 * (t + segmentEnd);
-        TemporalSample styled = compositeTemporal(ray.origin + ray.direction * middle, middle, ray.direction);
+#if !NAIVE_RAYCASTER
+        advanceLiveWindow(middle);
+#endif
+        TemporalSample styled = compositeTemporal(ray.origin + ray.direction * middle, middle);
         samples += 1;
         fetches += styled.fetches;
 #if !NAIVE_RAYCASTER

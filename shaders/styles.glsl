@@ -76,6 +76,13 @@ bool trackStyled(int track) {
 
 // A classification (colour, opacity) with its track's style applied, if the track has styles.
 vec4 applyStyle(int track, float x, vec4 classification, SphereCoordinate sphere) {
+#ifndef STYLED
+#define STYLED 1
+#endif
+#if !STYLED
+    // Flat scenes: no style code in the program at all (llvmpipe would run it, masked, anyway).
+    return classification;
+#endif
     if (!trackStyled(track)) return classification;
     vec4 styled = trackStyle(track, x, sphere);
     return vec4(styled.rgb, classification.a * styled.a);

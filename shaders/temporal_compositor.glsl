@@ -38,28 +38,38 @@ struct TemporalSample {
         if (!insideGrid(step, position)) continue;
 #else
 #define FOR_EACH_TIME_STEP_AT_SAMPLE                                                             \
-    for (int i = 0; i < activeCount; ++i) {                                                      \
+    for (int i = liveBegin; i < liveEnd; ++i) {                                                  \
         if (t < activeIntervals[i].x || t > activeIntervals[i].y) continue;                      \
         int step = activeSteps[i];
 #endif
 
+// The time-step's voxel position at the sample, inside FOR_EACH_TIME_STEP_AT_SAMPLE.
+#if NAIVE_RAYCASTER
+#define VOXEL_AT_SAMPLE voxelCoordinate(step, position)
+#else
+#define VOXEL_AT_SAMPLE voxelAtSample(i, step, position, t)
+#endif
+
+#if !NAIVE_RAYCASTER
 // Whether all time-steps at the sample lie in empty bricks; if so, where the first brick ends.
-float emptySpaceUntil(vec3 position, float t, vec3 direction) {
+float emptySpaceUntil(vec3 position, float t) {
     float emptyUntil = 1.0e30;
     bool anyStep = false;
     FOR_EACH_TIME_STEP_AT_SAMPLE
         anyStep = true;
-        // Outside a beam fan but inside its proxy: nothing here, and no jump past this sample.
+        // Outside a beam fan or a structured grid but inside its proxy: nothing here, and no jump
+        // past this sample.
         if (!insideGridShape(step, position)) {
             emptyUntil = min(emptyUntil, t);
             continue;
         }
-        vec3 voxel = voxelCoordinate(step, position);
+        vec3 voxel = VOXEL_AT_SAMPLE;
         if (brickVisible(step, voxel)) return -1.0;
-        emptyUntil = min(emptyUntil, brickExit(step, voxel, t, position, direction));
+        emptyUntil = min(emptyUntil, emptyBrickEnd(step, voxel, t, position, activeVoxelDirection[i]));
     }
     return anyStep ? emptyUntil : -1.0;
 }
+#endif
 
 // Where the time-step's style is read at this sample (6 fetches when styled).
 SphereCoordinate styleCoordinate(int step, vec3 position, inout int fetches) {
@@ -71,12 +81,12 @@ SphereCoordinate styleCoordinate(int step, vec3 position, inout int fetches) {
 #endif
 }
 
-TemporalSample compositeTemporal(vec3 position, float t, vec3 direction) {
+TemporalSample compositeTemporal(vec3 position, float t) {
     TemporalSample result = TemporalSample(vec4(0.0), 0, 0, -1.0);
 #if !NAIVE_RAYCASTER
     // Skip transparent regions of all time-steps at once. The max density change needs every
     // density once any time-step is visible, so the test comes before the real work.
-    result.emptyUntil = emptySpaceUntil(position, t, direction);
+    result.emptyUntil = emptySpaceUntil(position, t);
     if (result.emptyUntil > 0.0) {
         result.contributing = 1;
         return result;
@@ -101,16 +111,20 @@ TemporalSample compositeTemporal(vec3 position, float t, vec3 direction) {
     vec4 strongestStf = vec4(0.0);
     int strongestStep = -1;
     bool anyInMask = false;
+    int withData = 0;  // time-steps with data at the sample: a change needs two
 #endif
 
     FOR_EACH_TIME_STEP_AT_SAMPLE
         if (!insideGridShape(step, position)) continue;
-        vec3 atlasPosition = atlasCoordinate(step, position);
+        vec3 atlasPosition = atlasCoordinateOfVoxel(step, VOXEL_AT_SAMPLE);
         float density = sampleDensity(atlasPosition);
+        result.contributing += 1;
+        result.fetches += 1;
+        // No data here: transparent, and left out of the temporal characteristic.
+        if (isMissingDensity(density)) continue;
         bool inMask = insideMask(step, atlasPosition);
         vec4 stf = classifyStf(density);
-        result.contributing += 1;
-        result.fetches += timeSteps.steps[step].dims.w > 0.5 ? 2 : 1;
+        result.fetches += timeSteps.steps[step].dims.w > 0.5 ? 1 : 0;
 #if TEMPORAL_COMPOSITOR == TC_MAX_INTENSITY_PROJECTION
         if (stf.a >= winnerStf.a && stf.a > 0.0) {
             vec4 tstf = classifyIndexTstf(step);
@@ -137,6 +151,7 @@ TemporalSample compositeTemporal(vec3 position, float t, vec3 direction) {
         minimumDensity = min(minimumDensity, density);
         maximumDensity = max(maximumDensity, density);
         anyInMask = anyInMask || inMask;
+        withData += 1;
         if (stf.a > strongestStf.a || strongestStep < 0) {
             strongestStf = stf;
             strongestStep = step;
@@ -159,10 +174,10 @@ TemporalSample compositeTemporal(vec3 position, float t, vec3 direction) {
         result.colorOpacity = vec4(premultipliedSum.rgb / premultipliedSum.a,
                                    premultipliedSum.a / float(nonTransparent));
 #else
-    if (strongestStf.a > 0.0 && result.contributing >= 1) {
+    if (strongestStf.a > 0.0 && withData >= 1) {
         SphereCoordinate sphere = styleCoordinate(strongestStep, position, result.fetches);
         vec4 stf = applyStyle(STF_TRACK, strongestDensity, strongestStf, sphere);
-        if (result.contributing >= 2) {
+        if (withData >= 2) {
             float change = (maximumDensity - minimumDensity - changeRange.x) / (changeRange.y - changeRange.x);
             vec4 tstf = applyStyle(GRADIENT_TSTF_TRACK, clamp(change, 0.0, 1.0), classifyGradientTstf(change), sphere);
             result.colorOpacity = finalProcessing(stf, tstf, anyInMask);

@@ -1,33 +1,55 @@
 // Density and mask lookups in the volume atlas, where all time-steps are packed into one 3D texture.
-#include "beam_grid.glsl"
-
 layout(binding = ATLAS_UNIT) uniform sampler3D densityAtlas;
 layout(binding = MASK_ATLAS_UNIT) uniform sampler3D maskAtlas;
 uniform vec3 inverseAtlasSize;
 
+#include "structured_grid.glsl"
+#include "beam_grid.glsl"
+
+// 1 when every time-step of the series has an affine world -> voxel map (TimeStepInfo.flags.x):
+// the general paths (uneven axes, other grid kinds) are left out of the program, since llvmpipe
+// would run them, masked, for every sample otherwise.
+#ifndef ALL_AFFINE
+#define ALL_AFFINE 0
+#endif
+
 // Voxel coordinates of a world position in a time-step's grid, clamped to the grid: samples sit
 // on texel centres, and clamping to [0, dims - 1] keeps trilinear filtering inside the time-step's
-// own brick, so bricks need no border between them.
+// own brick, so bricks need no border between them. Uneven axes go through their node lists.
 vec3 voxelCoordinate(int step, vec3 worldPosition) {
     vec3 voxel = (timeSteps.steps[step].worldToVoxel * vec4(worldPosition, 1.0)).xyz;
-    if (isBeamGrid(step)) voxel = beamVoxel(step, voxel).xyz;
+#if !ALL_AFFINE
+    if (isStructured(step)) return structuredVoxelCoordinate(step, worldPosition);
+    if (isBeamGrid(step))
+        voxel = beamVoxel(step, voxel).xyz;
+    else
+        voxel = applyUnevenAxes(step, voxel);
+#endif
     return clamp(voxel, vec3(0.0), timeSteps.steps[step].dims.xyz - 1.0);
 }
 
 // Whether a sample within the time-step's entry/exit interval lies in its grid: always for boxes,
-// whose proxy is exact; a beam fan's proxy encloses it only conservatively, and outside the fan the
-// time-step contributes nothing.
+// whose proxy is exact; a beam fan's proxy encloses it only conservatively, and the interval of a
+// concave structured grid can span a gap. Outside, the time-step contributes nothing.
 bool insideGridShape(int step, vec3 worldPosition) {
+#if ALL_AFFINE
+    return true;
+#else
+    if (isStructured(step)) return insideStructuredGrid(step, worldPosition);
     if (!isBeamGrid(step)) return true;
     return beamVoxel(step, (timeSteps.steps[step].worldToVoxel * vec4(worldPosition, 1.0)).xyz).w > 0.5;
+#endif
 }
 
 // Whether a sample lies in the time-step's grid at all (for the naive raycaster, which has no
 // entry/exit intervals).
 bool insideGrid(int step, vec3 worldPosition) {
-    if (isBeamGrid(step)) return insideGridShape(step, worldPosition);
-    vec3 voxel = (timeSteps.steps[step].worldToVoxel * vec4(worldPosition, 1.0)).xyz;
-    return all(greaterThanEqual(voxel, vec3(0.0))) && all(lessThanEqual(voxel, timeSteps.steps[step].dims.xyz - 1.0));
+#if !ALL_AFFINE
+    if (isStructured(step) || isBeamGrid(step)) return insideGridShape(step, worldPosition);
+#endif
+    vec3 gridCoordinate = (timeSteps.steps[step].worldToVoxel * vec4(worldPosition, 1.0)).xyz;
+    return all(greaterThanEqual(gridCoordinate, vec3(0.0))) &&
+           all(lessThanEqual(gridCoordinate, gridCoordinateLimit(step)));
 }
 
 vec3 atlasCoordinateOfVoxel(int step, vec3 voxel) {
@@ -38,12 +60,33 @@ vec3 atlasCoordinate(int step, vec3 worldPosition) {
     return atlasCoordinateOfVoxel(step, voxelCoordinate(step, worldPosition));
 }
 
-float sampleDensity(vec3 atlasPosition) {
-    return texture(densityAtlas, atlasPosition).r;
+// Missing values: a series with voxels without data stores (density * validity, validity) with
+// validity in alpha (a swizzle), one fetch filtering both with the same weights; other series have
+// alpha 1. The density is the filtered density of the valid neighbours over their filtered weight,
+// and where that weight is below one half the sample has no data.
+const float MISSING_DENSITY = -1.0;
+
+bool isMissingDensity(float density) {
+    return density < 0.0;
 }
+
+float sampleDensity(vec3 atlasPosition) {
+    vec4 texel = texture(densityAtlas, atlasPosition);
+    return texel.a < 0.5 ? MISSING_DENSITY : texel.r / texel.a;
+}
+
+// 1 when any time-step of the series has a mask. A compile-time switch, not a run-time test:
+// llvmpipe executes both sides of a branch (masked per pixel), so only removing the mask lookup
+// from the program saves its cost.
+#ifndef HAS_MASKS
+#define HAS_MASKS 1
+#endif
 
 // Time-steps without a mask are region of interest everywhere.
 bool insideMask(int step, vec3 atlasPosition) {
+#if !HAS_MASKS
+    return true;
+#endif
     if (timeSteps.steps[step].dims.w < 0.5) return true;
     return texture(maskAtlas, atlasPosition).r >= 0.5;
 }
@@ -66,20 +109,22 @@ bool brickVisible(int step, vec3 voxel) {
     return texelFetch(occupancyAtlas, texel, 0).r > 0.5;
 }
 
-// The ray parameter at which a ray at `t`, at `voxel` in the time-step's grid and heading along
-// `worldDirection`, leaves the brick it is in. Voxel coordinates are an affine function of world
-// position, so t carries over unchanged.
-float brickExit(int step, vec3 voxel, float t, vec3 worldPosition, vec3 worldDirection) {
-    // A beam grid's voxels are not affine in world position: a conservative step instead.
-    if (isBeamGrid(step)) {
-        vec3 brickLower = brickOf(step, voxel) * BRICK_SIZE;
-        vec3 brickUpper = min(brickLower + BRICK_SIZE, timeSteps.steps[step].dims.xyz - 1.0);
-        vec3 local = (timeSteps.steps[step].worldToVoxel * vec4(worldPosition, 1.0)).xyz;
-        return beamBrickExit(step, brickLower, brickUpper, local, t);
-    }
-    vec3 direction = mat3(timeSteps.steps[step].worldToVoxel) * worldDirection;
-    vec3 lower = brickOf(step, voxel) * BRICK_SIZE;
-    vec3 upper = min(lower + BRICK_SIZE, timeSteps.steps[step].dims.xyz - 1.0);
+// The ray parameter at which a ray at `t`, at `voxel` in the time-step's grid and moving by
+// `direction` per unit of t in worldToVoxel's space, leaves the brick it is in. Only for
+// rectilinear grids, where a ray is a straight line in that space with the ray's own parameter;
+// the brick's faces are taken in that space too (node index to position is monotonic along uneven
+// axes).
+float brickExit(int step, vec3 voxel, float t, vec3 direction) {
+    vec3 lowerVoxel = brickOf(step, voxel) * BRICK_SIZE;
+    vec3 upperVoxel = min(lowerVoxel + BRICK_SIZE, timeSteps.steps[step].dims.xyz - 1.0);
+#if ALL_AFFINE
+    vec3 lower = lowerVoxel;
+    vec3 upper = upperVoxel;
+#else
+    vec3 lower = unapplyUnevenAxes(step, lowerVoxel);
+    vec3 upper = unapplyUnevenAxes(step, upperVoxel);
+    voxel = unapplyUnevenAxes(step, voxel);
+#endif
     float exit = 1.0e30;
     for (int axis = 0; axis < 3; ++axis) {
         if (abs(direction[axis]) < 1.0e-12) continue;
@@ -87,4 +132,20 @@ float brickExit(int step, vec3 voxel, float t, vec3 worldPosition, vec3 worldDir
         exit = min(exit, (bound - voxel[axis]) / direction[axis]);
     }
     return t + max(exit, 0.0);
+}
+
+// Where a ray may jump to from `t` when the time-step's brick there is empty: the brick's exit, or
+// for a beam grid a conservative step (the distance to the brick's nearest bounding plane or
+// sphere); structured grids get no jump. `direction` is the ray's direction in worldToVoxel's space.
+float emptyBrickEnd(int step, vec3 voxel, float t, vec3 worldPosition, vec3 direction) {
+#if !ALL_AFFINE
+    if (isStructured(step)) return t;
+    if (isBeamGrid(step)) {
+        vec3 brickLower = brickOf(step, voxel) * BRICK_SIZE;
+        vec3 brickUpper = min(brickLower + BRICK_SIZE, timeSteps.steps[step].dims.xyz - 1.0);
+        vec3 local = (timeSteps.steps[step].worldToVoxel * vec4(worldPosition, 1.0)).xyz;
+        return beamBrickExit(step, brickLower, brickUpper, local, t);
+    }
+#endif
+    return brickExit(step, voxel, t, direction);
 }

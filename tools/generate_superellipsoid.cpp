@@ -1,6 +1,6 @@
 // Build-time tool: writes the paper's bouncing super-ellipsoid, the bundled default dataset
 // (docs/superellipsoid-dataset.md). Usage:
-//   generate_superellipsoid --output DIR [--aligned] [--steps N] [--resolution R]
+//   generate_superellipsoid --output DIR [--aligned] [--steps N] [--resolution R] [--duration S]
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -22,6 +22,8 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 100000));
     app.add_option("--resolution", options.resolution, "Samples along each axis of a box")
         ->check(CLI::Range(8, 1024));
+    app.add_option("--duration", options.duration, "Simulated seconds the time-steps span")
+        ->check(CLI::Range(0.01, 1000.0));
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {

@@ -8,6 +8,7 @@ packages=(
   libegl-dev libegl1-mesa-dev libgl1-mesa-dri libosmesa6-dev
   libopenimageio-dev openimageio-tools glslang-tools
   libglfw3-dev libimgui-dev xvfb xauth
+  libnetcdf-dev libnifti2-dev zlib1g-dev
 )
 
 missing=()

@@ -8,7 +8,10 @@
 #include <sstream>
 
 #include <nlohmann/json.hpp>
+#include <sys/resource.h>
 
+#include "bench_datasets.h"
+#include "bench_scaling.h"
 #include "commands.h"
 #include "tstyles/core/atomic_file.h"
 #include "tstyles/data/manifest.h"
@@ -19,13 +22,21 @@
 namespace tstyles::cli {
 namespace {
 
+std::vector<std::string> defaultDatasets() {
+    std::vector<std::string> folders;
+    for (const auto& dataset : benchDatasets()) folders.push_back(dataset.folder);
+    return folders;
+}
+
 struct BenchOptions {
-    std::vector<int> sizes{512};
+    std::vector<int> sizes{512, 1024};
     int frames = 7;
     int warmup = 2;
     std::optional<std::filesystem::path> json;
-    std::vector<std::string> datasets{"superellipsoid", "superellipsoid-aligned"};
+    std::vector<std::string> datasets = defaultDatasets();
     bool baseline = false;
+    // The scaling run instead of the matrix: super-ellipsoid series of these lengths.
+    std::vector<int> scalingSteps;
     bool styled = false;
     GlOptions gl;
 };
@@ -42,29 +53,36 @@ struct BenchResult {
     std::size_t timeSteps = 0;
     double medianMs = 0.0;
     double maxMs = 0.0;
+    // CPU time of the whole process (llvmpipe's threads included) per frame: on a shared machine
+    // it moves far less with other work than the wall clock does.
+    double medianCpuMs = 0.0;
     std::optional<double> naiveMedianMs;  // with --baseline
     RaycastStatistics statistics;
     std::size_t seriesTextureBytes = 0;
     std::size_t frameTextureBytes = 0;
 };
 
-// Each compositor is measured with the Figure 4 scene made for it, flat or with lit-sphere styles
-// (styles add gradients: six more fetches per visible sample).
-std::string sceneFor(TemporalCompositor compositor, bool styled) {
-    const std::string prefix = styled ? "figure4-styled-" : "figure4-";
-    switch (compositor) {
-        case TemporalCompositor::MaxIntensityProjection: return prefix + "temporal-mip";
-        case TemporalCompositor::Average: return prefix + "temporal-average";
-        case TemporalCompositor::MaxDensityChange: return prefix + "max-density-change";
-    }
-    return prefix + "temporal-mip";
+// User and system time of every thread of this process so far.
+double processCpuMilliseconds() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    auto ms = [](const timeval& time) { return 1e3 * double(time.tv_sec) + 1e-3 * double(time.tv_usec); };
+    return ms(usage.ru_utime) + ms(usage.ru_stime);
 }
+
+struct FrameTimes {
+    std::vector<double> wallMs;
+    std::vector<double> cpuMs;
+};
 
 double median(std::vector<double> values) {
     std::sort(values.begin(), values.end());
     const std::size_t middle = values.size() / 2;
     return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
 }
+
+constexpr TemporalCompositor kCompositors[] = {TemporalCompositor::MaxIntensityProjection,
+                                              TemporalCompositor::Average, TemporalCompositor::MaxDensityChange};
 
 BenchResult runCase(Renderer& renderer, const Series& series, const BenchCase& benchCase,
                     const BenchOptions& options) {
@@ -81,24 +99,27 @@ BenchResult runCase(Renderer& renderer, const Series& series, const BenchCase& b
     auto timeFrames = [&](const FrameOptions& timed) {
         for (int i = 0; i < options.warmup; ++i) renderer.draw(scene, viewForFrame(i), timed);
         glFinish();
-        std::vector<double> milliseconds;
+        FrameTimes times;
         for (int i = 0; i < options.frames; ++i) {
             const View view = viewForFrame(i);
+            const double cpuStart = processCpuMilliseconds();
             const auto start = std::chrono::steady_clock::now();
             renderer.draw(scene, view, timed);
             glFinish();
-            milliseconds.push_back(
+            times.wallMs.push_back(
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+            times.cpuMs.push_back(processCpuMilliseconds() - cpuStart);
         }
-        return milliseconds;
+        return times;
     };
-    const std::vector<double> milliseconds = timeFrames(frame);
-    BenchResult result{benchCase, series.size(), median(milliseconds),
-                       *std::max_element(milliseconds.begin(), milliseconds.end()), std::nullopt, {}, 0, 0};
+    const FrameTimes times = timeFrames(frame);
+    BenchResult result{benchCase, series.size(), median(times.wallMs),
+                       *std::max_element(times.wallMs.begin(), times.wallMs.end()), median(times.cpuMs),
+                       std::nullopt, {}, 0, 0};
     if (options.baseline) {
         FrameOptions naive = frame;
         naive.naive = true;
-        result.naiveMedianMs = median(timeFrames(naive));
+        result.naiveMedianMs = median(timeFrames(naive).wallMs);
     }
     frame.collectStatistics = true;  // counted in an extra, untimed frame: atomics cost time
     renderer.draw(scene, viewForFrame(0), frame);
@@ -117,18 +138,18 @@ std::string mebibytes(std::size_t bytes) {
 void printTable(const std::vector<BenchResult>& results, const std::string& device) {
     std::cout << "device: " << device << "\n";
     const bool styled = results.front().benchCase.scene.find("styled") != std::string::npos;
-    std::cout << "scenes: data/scenes/figure4-" << (styled ? "styled-" : "") << "*.json\n";
-    std::cout << std::left << std::setw(24) << "dataset" << std::setw(21) << "compositor" << std::right
+    std::cout << "scenes: data/scenes/<dataset's prefix>" << (styled ? "styled-" : "") << "*.json\n";
+    std::cout << std::left << std::setw(28) << "dataset" << std::setw(21) << "compositor" << std::right
               << std::setw(6) << "n" << std::setw(7) << "size" << std::setw(11) << "median ms" << std::setw(9)
-              << "max ms" << std::setw(10) << "rays" << std::setw(13) << "samples" << std::setw(13)
+              << "max ms" << std::setw(9) << "cpu ms" << std::setw(10) << "rays" << std::setw(13) << "samples" << std::setw(13)
               << "fetches" << std::setw(11) << "tex MiB";
     if (results.front().naiveMedianMs) std::cout << std::setw(11) << "naive ms" << std::setw(10) << "speed-up";
     std::cout << "\n";
     for (const auto& r : results) {
-        std::cout << std::left << std::setw(24) << r.benchCase.dataset << std::setw(21)
+        std::cout << std::left << std::setw(28) << r.benchCase.dataset << std::setw(21)
                   << toString(r.benchCase.compositor) << std::right << std::setw(6) << r.timeSteps << std::setw(7)
                   << r.benchCase.size << std::setw(11) << std::fixed << std::setprecision(1) << r.medianMs
-                  << std::setw(9) << r.maxMs << std::setw(10) << r.statistics.rays << std::setw(13)
+                  << std::setw(9) << r.maxMs << std::setw(9) << r.medianCpuMs << std::setw(10) << r.statistics.rays << std::setw(13)
                   << r.statistics.samples << std::setw(13) << r.statistics.fetches << std::setw(11)
                   << mebibytes(r.seriesTextureBytes + r.frameTextureBytes);
         if (r.naiveMedianMs)
@@ -144,7 +165,7 @@ nlohmann::json toJson(const std::vector<BenchResult>& results, const std::string
         cases.push_back({{"dataset", r.benchCase.dataset}, {"scene", r.benchCase.scene},
                          {"compositor", toString(r.benchCase.compositor)}, {"time_steps", r.timeSteps},
                          {"width", r.benchCase.size}, {"height", r.benchCase.size},
-                         {"median_ms", r.medianMs}, {"max_ms", r.maxMs}, {"rays", r.statistics.rays},
+                         {"median_ms", r.medianMs}, {"max_ms", r.maxMs}, {"median_cpu_ms", r.medianCpuMs}, {"rays", r.statistics.rays},
                          {"samples", r.statistics.samples}, {"fetches", r.statistics.fetches},
                          {"series_texture_bytes", r.seriesTextureBytes},
                          {"frame_texture_bytes", r.frameTextureBytes},
@@ -153,21 +174,53 @@ nlohmann::json toJson(const std::vector<BenchResult>& results, const std::string
     return {{"device", device}, {"cases", cases}};
 }
 
+// Every compositor at every size on one series.
+void runSeries(Renderer& renderer, const Series& series, const BenchDataset& dataset, const BenchOptions& options,
+               std::vector<BenchResult>& results) {
+    renderer.setSeries(series);
+    for (auto compositor : kCompositors)
+        for (int size : options.sizes) {
+            results.push_back(runCase(renderer, series,
+                                      {dataset.folder, benchSceneFor(dataset, compositor, options.styled),
+                                       compositor, size},
+                                      options));
+            std::cerr << "." << std::flush;
+        }
+}
+
+void runMatrix(Renderer& renderer, const BenchOptions& options, std::vector<BenchResult>& results) {
+    for (const auto& folder : options.datasets) {
+        const std::filesystem::path manifest = bundledDataDirectory() / folder / "series.json";
+        if (!std::filesystem::exists(manifest)) {
+            std::cerr << "note: skipping dataset " << folder << ": " << manifest.string() << " does not exist\n";
+            continue;
+        }
+        runSeries(renderer, loadSeries(manifest), benchDatasetFor(folder), options, results);
+    }
+}
+
+// Partial and full overlap for each n; the series are generated on the fly (bench_scaling.h).
+void runScaling(Renderer& renderer, const BenchOptions& options, std::vector<BenchResult>& results) {
+    for (int steps : options.scalingSteps)
+        for (bool aligned : {false, true}) {
+            const BenchDataset dataset{scalingDatasetName(steps, aligned), "", "figure4-"};
+            runSeries(renderer, buildScalingSeries(steps, aligned), dataset, options, results);
+        }
+}
+
 int runBench(const BenchOptions& options) {
     const auto context = createHeadlessContext(parseBackend(options.gl.backend), false);
     Renderer renderer(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
     std::vector<BenchResult> results;
-    for (const auto& dataset : options.datasets) {
-        const Series series = loadSeries(bundledDataDirectory() / dataset / "series.json");
-        renderer.setSeries(series);
-        for (auto compositor : {TemporalCompositor::MaxIntensityProjection, TemporalCompositor::Average,
-                                TemporalCompositor::MaxDensityChange})
-            for (int size : options.sizes) {
-                results.push_back(runCase(renderer, series, {dataset, sceneFor(compositor, options.styled), compositor, size}, options));
-                std::cerr << "." << std::flush;
-            }
-    }
+    if (options.scalingSteps.empty())
+        runMatrix(renderer, options, results);
+    else
+        runScaling(renderer, options, results);
     std::cerr << "\n";
+    if (results.empty()) {
+        std::cerr << "tstyles bench: none of the datasets is there (generate them with the build)\n";
+        return kExitBadInput;
+    }
     printTable(results, context->description());
     if (options.json) writeFileAtomically(*options.json, toJson(results, context->description()).dump(2) + "\n");
     return kExitSuccess;
@@ -189,6 +242,10 @@ Command addBenchCommand(CLI::App& app) {
     command->add_flag("--baseline", options->baseline,
                       "Also time the naive raycaster (every time-step at every sample, no skipping) in the same run "
                       "and print the speed-up");
+    command->add_option("--scaling", options->scalingSteps,
+                        "Scaling run instead of the matrix: the super-ellipsoid simulated for longer with these "
+                        "numbers of time-steps, partial and full overlap (e.g. --scaling 10 20 40 80 160)")
+        ->check(CLI::Range(2, 1000));
     command->add_flag("--styled", options->styled, "Measure the Figure 4 scenes with lit-sphere styles");
     addGlOptions(*command, options->gl);
     return {command, [options] { return runBench(*options); }};

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "commands.h"
+#include "dataset_loading.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/data/manifest.h"
 #include "tstyles/image/image_io.h"
@@ -21,6 +22,7 @@ struct RenderOptions {
     std::optional<std::string> compositor;
     std::vector<std::string> styleOverrides;  // NAME=FILE
     GlOptions gl;
+    Plot3DCliOptions plot3d;  // when the scene's dataset is a Plot3D grid
 };
 
 // --style NAME=FILE: every colour node of the scene that uses style NAME reads FILE instead, so a
@@ -52,7 +54,7 @@ int runRender(const RenderOptions& options) {
         scene.compositor = *temporalCompositorFromString(*options.compositor);
     }
     overrideStyles(scene, options.styleOverrides);
-    const Series series = loadSeries(scene.dataset);
+    const Series series = loadDataset(scene.dataset, options.plot3d);
     const auto context = createHeadlessContext(parseBackend(options.gl.backend), glDebugOutputRequested());
     Renderer renderer(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
     renderer.setSeries(series);
@@ -84,6 +86,7 @@ Command addRenderCommand(CLI::App& app) {
     command->add_option("--style", options->styleOverrides,
                         "NAME=FILE: use this image (any format OpenImageIO reads) wherever the scene uses style NAME");
     addGlOptions(*command, options->gl);
+    addPlot3DOptions(*command, options->plot3d);
     return {command, [options] { return runRender(*options); }};
 }
 

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <fstream>
 #include <iterator>
+#include <limits>
+#include <cmath>
 #include <sstream>
 #include <system_error>
 
@@ -14,6 +16,7 @@
 #include "beam_grid_field.h"
 #include "manifest_field.h"
 #include "raw_values.h"
+#include "structured_grid_files.h"
 #include "tstyles/core/errors.h"
 
 namespace tstyles {
@@ -75,11 +78,33 @@ std::filesystem::path resolveBeside(const std::filesystem::path& manifest, const
     return file.is_absolute() ? file : manifest.parent_path() / file;
 }
 
+// An uneven axis: dims[axis] finite grid-local node positions, the first 0, strictly increasing.
+std::vector<double> readAxisPositions(const ManifestField& field, int count) {
+    if (field.arraySize() != std::size_t(count)) {
+        field.fail("expected " + std::to_string(count) + " node positions (one per sample along the axis), found " +
+                   std::to_string(field.arraySize()));
+    }
+    std::vector<double> positions;
+    for (std::size_t node = 0; node < std::size_t(count); ++node) {
+        const ManifestField element = field.element(node);
+        positions.push_back(element.finiteNumber());
+        if (node == 0 && positions[0] != 0.0)
+            element.fail("the first node must be at 0 (the placement origin), found " + numberText(positions[0]));
+        if (node > 0 && !(positions[node] > positions[node - 1])) {
+            element.fail("node positions must be strictly increasing: " + numberText(positions[node]) + " follows " +
+                         numberText(positions[node - 1]));
+        }
+    }
+    return positions;
+}
+
 RectilinearGrid readRectilinearGrid(const ManifestField& field) {
-    field.allowOnlyKeys({"type", "dims", "spacing"});
+    field.allowOnlyKeys({"type", "dims", "spacing", "positions"});
     RectilinearGrid grid;
     const ManifestField dims = field.member("dims");
     const ManifestField spacing = field.member("spacing");
+    const auto positions = field.optionalMember("positions");
+    if (positions) positions->allowOnlyKeys({"x", "y", "z"});
     if (dims.arraySize() != 3) dims.fail("expected 3 sample counts (x, y, z)");
     if (spacing.arraySize() != 3) spacing.fail("expected 3 distances (x, y, z)");
     std::uint64_t voxels = 1;
@@ -93,6 +118,18 @@ RectilinearGrid readRectilinearGrid(const ManifestField& field) {
         voxels *= std::uint64_t(grid.dims[axis]);  // each factor < 2^31 and the running product is checked
         if (voxels > kMaxVoxelsPerStep) dims.fail("too many voxels for one time-step");
         const ManifestField distance = spacing.element(std::size_t(axis));
+        const std::string axisName(1, "xyz"[axis]);
+        const auto axisPositions = positions ? positions->optionalMember(axisName) : std::nullopt;
+        // An uneven axis has its nodes in "positions" and null in "spacing", so that no number in the
+        // manifest goes unused.
+        if (axisPositions) {
+            if (!distance.isNull())
+                distance.fail("must be null: the nodes of axis " + axisName + " are given by grid.positions." + axisName);
+            grid.axisPositions[std::size_t(axis)] = readAxisPositions(*axisPositions, grid.dims[axis]);
+            grid.spacing[axis] = grid.axisPositions[std::size_t(axis)].back() / double(grid.dims[axis] - 1);
+            continue;
+        }
+        if (distance.isNull()) distance.fail("null needs the axis' node positions in grid.positions." + axisName);
         grid.spacing[axis] = distance.finiteNumber();
         if (grid.spacing[axis] <= 0.0)
             distance.fail("must be positive, found " + numberText(grid.spacing[axis]));
@@ -100,11 +137,12 @@ RectilinearGrid readRectilinearGrid(const ManifestField& field) {
     return grid;
 }
 
-Grid readGrid(const ManifestField& field) {
+Grid readGrid(const ManifestField& field, std::size_t stepIndex, StructuredGridFiles& structuredGrids) {
     const ManifestField type = field.member("type");
     if (type.string() == "rectilinear") return readRectilinearGrid(field);
+    if (type.string() == "structured") return structuredGrids.read(field, stepIndex);
     if (type.string() == "beam") return readBeamGrid(field);
-    type.fail("unknown grid type '" + type.string() + "' (known: rectilinear, beam)");
+    type.fail("unknown grid type '" + type.string() + "' (known: rectilinear, structured, beam)");
 }
 
 Placement readPlacement(const std::optional<ManifestField>& field) {
@@ -124,11 +162,11 @@ Placement readPlacement(const std::optional<ManifestField>& field) {
     return placement;
 }
 
-StepEntry readStepEntry(const ManifestField& field) {
+StepEntry readStepEntry(const ManifestField& field, std::size_t stepIndex, StructuredGridFiles& structuredGrids) {
     field.allowOnlyKeys({"time", "grid", "placement", "values", "mask"});
     StepEntry entry;
     entry.step.time = field.member("time").finiteNumber();
-    entry.step.grid = readGrid(field.member("grid"));
+    entry.step.grid = readGrid(field.member("grid"), stepIndex, structuredGrids);
     entry.step.placement = readPlacement(field.optionalMember("placement"));
 
     const ManifestField values = field.member("values");
@@ -138,7 +176,7 @@ StepEntry readStepEntry(const ManifestField& field) {
     entry.valuesField = valuesFile.path();
     const ManifestField type = values.member("type");
     const auto valueType = valueTypeFromString(type.string());
-    if (!valueType) type.fail("unknown value type '" + type.string() + "' (known: uint8, uint16, float32)");
+    if (!valueType) type.fail("unknown value type '" + type.string() + "' (known: uint8, uint16, float32, int8, int16, int32, float64)");
     entry.step.sourceType = *valueType;
 
     if (const auto mask = field.optionalMember("mask")) {
@@ -155,9 +193,10 @@ std::vector<StepEntry> readStepEntries(const ManifestField& field) {
     if (count == 0) field.fail("must list at least one time-step");
     std::vector<StepEntry> entries;
     entries.reserve(count);
+    StructuredGridFiles structuredGrids;
     for (std::size_t index = 0; index < count; ++index) {
         const ManifestField stepField = field.element(index);
-        entries.push_back(readStepEntry(stepField));
+        entries.push_back(readStepEntry(stepField, index, structuredGrids));
         // Time orders the series everywhere (TSTF axes, playback), so ties are as wrong as reversals.
         if (index > 0 && !(entries[index].step.time > entries[index - 1].step.time)) {
             stepField.member("time").fail(
@@ -179,23 +218,42 @@ std::optional<std::array<double, 2>> readValueRange(const std::optional<Manifest
     return range;
 }
 
-void readStepFiles(const std::filesystem::path& manifest, std::size_t index, StepEntry& entry) {
+// The raw value that marks a voxel without data: a number, or the string "NaN" (JSON has no NaN).
+std::optional<double> readMissingValue(const std::optional<ManifestField>& field) {
+    if (!field) return std::nullopt;
+    if (field->isString()) {
+        if (field->string() != "NaN") field->fail("expected a number or \"NaN\", found \"" + field->string() + "\"");
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+    return field->finiteNumber();
+}
+
+void readStepFiles(const std::filesystem::path& manifest, std::size_t index, StepEntry& entry,
+                   std::optional<double> missingMarker) {
     TimeStep& step = entry.step;
-    RawValues raw = readRawValues({manifest, entry.valuesField, index, step.valuesFile}, gridDims(step.grid),
-                                  step.sourceType);
+    // The raw files hold one value per node whatever the grid kind: only the dims matter here.
+    RawValues raw = readRawValues({manifest, entry.valuesField, index, step.valuesFile}, step.dims(),
+                                  step.sourceType, missingMarker);
     step.density = std::move(raw.values);  // still raw: normalised once the value range is known
     step.rawRange = raw.range;
     if (!entry.maskField.empty()) {
-        step.mask = readMask({manifest, entry.maskField, index, step.maskFile}, gridDims(step.grid));
+        step.mask = readMask({manifest, entry.maskField, index, step.maskFile}, step.dims());
     }
 }
 
 std::array<double, 2> valueRangeFromData(const std::filesystem::path& manifest,
                                          const std::vector<StepEntry>& entries) {
-    std::array<double, 2> range = entries.front().step.rawRange;
+    // Time-steps whose every value is missing have a NaN range and add nothing.
+    std::array<double, 2> range{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
     for (const StepEntry& entry : entries) {
+        if (std::isnan(entry.step.rawRange[0])) continue;
         range[0] = std::min(range[0], entry.step.rawRange[0]);
         range[1] = std::max(range[1], entry.step.rawRange[1]);
+    }
+    if (range[0] > range[1]) {
+        throwInputError(manifest, "value_range",
+                        "not given, and every value of every time-step is missing, so no range can be derived: "
+                        "give \"value_range\": [low, high]");
     }
     if (range[0] == range[1]) {
         throwInputError(manifest, "value_range",
@@ -228,17 +286,18 @@ Series loadSeries(const std::filesystem::path& manifestPath) {
         version.fail("unsupported version " + std::to_string(version.integer()) + " (this build reads " +
                      std::to_string(kManifestVersion) + ")");
     }
-    root.allowOnlyKeys({"format", "version", "name", "value_range", "time_steps"});
+    root.allowOnlyKeys({"format", "version", "name", "value_range", "missing_value", "time_steps"});
 
     Series series;
     series.manifestPath = manifest;
     const auto name = root.optionalMember("name");
     series.name = name ? name->string() : defaultName(manifest);
     const auto explicitRange = readValueRange(root.optionalMember("value_range"));
+    const std::optional<double> missingMarker = readMissingValue(root.optionalMember("missing_value"));
     std::vector<StepEntry> entries = readStepEntries(root.member("time_steps"));
 
     for (std::size_t index = 0; index < entries.size(); ++index) {
-        readStepFiles(manifest, index, entries[index]);
+        readStepFiles(manifest, index, entries[index], missingMarker);
     }
     series.valueRange = explicitRange ? *explicitRange : valueRangeFromData(manifest, entries);
 

@@ -32,6 +32,9 @@ public:
     std::size_t arraySize() const;
     ManifestField element(std::size_t index) const;
 
+    bool isNull() const { return value_->is_null(); }
+    bool isString() const { return value_->is_string(); }
+
     // Scalars. Numbers must be finite; integers may be written as 64 or 64.0.
     std::string string() const;
     double finiteNumber() const;

@@ -1,8 +1,11 @@
 // Writing a series to disk: one raw file per time-step (and mask), then the manifest last, so a
 // folder with a series.json always has every file that manifest names.
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -19,6 +22,17 @@ namespace tstyles {
 namespace {
 
 using OrderedJson = nlohmann::ordered_json;
+
+glm::ivec3 dimsOf(const RawTimeStep& step) {
+    if (step.structured) return step.structured->dims;
+    if (step.beamGrid) return step.beamGrid->dims;
+    return step.grid.dims;
+}
+
+std::size_t voxelCountOf(const RawTimeStep& step) {
+    const glm::ivec3 dims = dimsOf(step);
+    return std::size_t(dims.x) * std::size_t(dims.y) * std::size_t(dims.z);
+}
 
 void checkWritableBeamGrid(const BeamGrid& grid, const std::string& where) {
     const auto increasing = [](const std::vector<double>& angles, int count) {
@@ -48,10 +62,9 @@ void checkWritable(const RawSeries& series) {
     for (std::size_t index = 0; index < series.steps.size(); ++index) {
         const RawTimeStep& step = series.steps[index];
         const std::string where = "time-step " + std::to_string(index) + ": ";
-        const glm::ivec3 dims = step.beamGrid ? step.beamGrid->dims : step.grid.dims;
-        if (glm::any(glm::lessThan(dims, glm::ivec3(2)))) fail(where + "dims must be at least 2");
+        if (glm::any(glm::lessThan(dimsOf(step), glm::ivec3(2)))) fail(where + "dims must be at least 2");
         if (step.beamGrid) checkWritableBeamGrid(*step.beamGrid, where);
-        const std::size_t voxels = step.beamGrid ? step.beamGrid->voxelCount() : step.grid.voxelCount();
+        const std::size_t voxels = voxelCountOf(step);
         if (step.bytes.size() != voxels * bytesPerValue(step.type)) {
             fail(where + "has " + std::to_string(step.bytes.size()) + " value bytes, expected " +
                  std::to_string(voxels * bytesPerValue(step.type)));
@@ -61,6 +74,15 @@ void checkWritable(const RawSeries& series) {
                  std::to_string(voxels));
         }
         if (index > 0 && !(step.time > series.steps[index - 1].time)) fail(where + "times must increase");
+        for (int axis = 0; axis < 3; ++axis) {
+            const std::vector<double>& nodes = step.grid.axisPositions[std::size_t(axis)];
+            if (nodes.empty()) continue;
+            if (nodes.size() != std::size_t(step.grid.dims[axis]) || nodes.front() != 0.0 ||
+                !std::is_sorted(nodes.begin(), nodes.end(), std::less_equal<>()) ||
+                std::adjacent_find(nodes.begin(), nodes.end()) != nodes.end()) {
+                fail(where + "axis positions must be dims[axis] strictly increasing values from 0");
+            }
+        }
     }
 }
 
@@ -92,16 +114,29 @@ OrderedJson beamGridJson(const BeamGrid& grid) {
     return json;
 }
 
-OrderedJson stepJson(const RawTimeStep& step, const std::string& stem) {
+OrderedJson stepJson(const RawTimeStep& step, const std::string& stem, const std::string& coordinatesFile) {
     const AxisAngle rotation = toAxisAngle(step.placement.rotation);
     OrderedJson json;
     json["time"] = step.time;
-    if (step.beamGrid)
+    const glm::ivec3 dims = dimsOf(step);
+    if (step.beamGrid) {
         json["grid"] = beamGridJson(*step.beamGrid);
-    else
+    } else if (step.structured) {
+        json["grid"] = {{"type", "structured"},
+                        {"dims", OrderedJson::array({dims.x, dims.y, dims.z})},
+                        {"coordinates", {{"file", coordinatesFile}}}};
+    } else {
         json["grid"] = {{"type", "rectilinear"},
-                        {"dims", OrderedJson::array({step.grid.dims.x, step.grid.dims.y, step.grid.dims.z})},
+                        {"dims", OrderedJson::array({dims.x, dims.y, dims.z})},
                         {"spacing", vec3Json(step.grid.spacing)}};
+        // An uneven axis: its nodes under "positions" and null for its spacing.
+        for (int axis = 0; axis < 3; ++axis) {
+            if (!step.grid.isUneven(axis)) continue;
+            const std::string name(1, "xyz"[axis]);
+            json["grid"]["spacing"][std::size_t(axis)] = nullptr;
+            json["grid"]["positions"][name] = step.grid.axisPositions[std::size_t(axis)];
+        }
+    }
     json["placement"] = {{"origin", vec3Json(step.placement.origin)},
                          {"rotation", {{"axis", vec3Json(rotation.axis)}, {"angle_deg", rotation.angleDeg}}}};
     json["values"] = {{"file", stem + ".raw"}, {"type", toString(step.type)}};
@@ -142,6 +177,33 @@ void writeBytes(const std::filesystem::path& target, const std::vector<std::uint
     writeFileAtomically(target, std::as_bytes(std::span(bytes)));
 }
 
+// float32 x, y, z per node, little-endian.
+void writeCoordinates(const std::filesystem::path& target, const StructuredGrid& grid) {
+    std::vector<std::uint8_t> bytes;
+    bytes.reserve(grid.nodes->size() * 12);
+    for (const glm::vec3& node : *grid.nodes)
+        for (int axis = 0; axis < 3; ++axis) {
+            const auto bits = std::bit_cast<std::uint32_t>(node[axis]);
+            for (int shift = 0; shift < 32; shift += 8) bytes.push_back(std::uint8_t(bits >> shift));
+        }
+    writeBytes(target, bytes);
+}
+
+// The coordinates file of a structured time-step: one per distinct node array, written once.
+std::string coordinatesFileOf(const RawTimeStep& step, const std::filesystem::path& directory,
+                              std::vector<const std::vector<glm::vec3>*>& written) {
+    if (!step.structured) return {};
+    const auto* nodes = step.structured->nodes.get();
+    auto known = std::find(written.begin(), written.end(), nodes);
+    const std::size_t index = std::size_t(known - written.begin());
+    const std::string name = "grid" + std::string(index < 10 ? "0" : "") + std::to_string(index) + ".xyz.f32";
+    if (known == written.end()) {
+        writeCoordinates(directory / name, *step.structured);
+        written.push_back(nodes);
+    }
+    return name;
+}
+
 }  // namespace
 
 void writeSeries(const RawSeries& series, const std::filesystem::path& directory) {
@@ -155,13 +217,20 @@ void writeSeries(const RawSeries& series, const std::filesystem::path& directory
     manifest["version"] = 1;
     manifest["name"] = series.name;
     manifest["value_range"] = OrderedJson::array({series.valueRange[0], series.valueRange[1]});
+    if (series.missingValue) {
+        // JSON has no NaN: the manifest spells that marker as a string.
+        if (std::isnan(*series.missingValue)) manifest["missing_value"] = "NaN";
+        else manifest["missing_value"] = *series.missingValue;
+    }
     manifest["time_steps"] = OrderedJson::array();
+    std::vector<const std::vector<glm::vec3>*> writtenGrids;
     for (std::size_t index = 0; index < series.steps.size(); ++index) {
         const RawTimeStep& step = series.steps[index];
         const std::string stem = stepFileStem(index, series.steps.size());
         writeBytes(directory / (stem + ".raw"), step.bytes);
         if (step.mask) writeBytes(directory / (stem + "_mask.raw"), *step.mask);
-        manifest["time_steps"].push_back(stepJson(step, stem));
+        const std::string coordinatesFile = coordinatesFileOf(step, directory, writtenGrids);
+        manifest["time_steps"].push_back(stepJson(step, stem, coordinatesFile));
     }
     std::string text;
     appendReadable(text, manifest, 0);

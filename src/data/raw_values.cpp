@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "tstyles/core/errors.h"
+#include "value_decoding.h"
 
 namespace tstyles {
 namespace {
@@ -46,22 +47,6 @@ std::vector<std::uint8_t> readExactly(const RawFileSource& source, const std::st
     return bytes;
 }
 
-// Decoding byte by byte keeps the files little-endian whatever the host's byte order.
-float decodeValue(const std::uint8_t* bytes, ValueType type) {
-    switch (type) {
-        case ValueType::UInt8:
-            return float(bytes[0]);
-        case ValueType::UInt16:
-            return float(std::uint16_t(bytes[0] | (bytes[1] << 8)));
-        case ValueType::Float32: {
-            const std::uint32_t bits = std::uint32_t(bytes[0]) | (std::uint32_t(bytes[1]) << 8) |
-                                       (std::uint32_t(bytes[2]) << 16) | (std::uint32_t(bytes[3]) << 24);
-            return std::bit_cast<float>(bits);
-        }
-    }
-    return 0.0f;
-}
-
 std::string voxelText(std::size_t index, const glm::ivec3& dims) {
     const std::size_t nx = std::size_t(dims.x);
     const std::size_t ny = std::size_t(dims.y);
@@ -71,28 +56,40 @@ std::string voxelText(std::size_t index, const glm::ivec3& dims) {
 
 }  // namespace
 
-RawValues readRawValues(const RawFileSource& source, const glm::ivec3& dims, ValueType type) {
+RawValues readRawValues(const RawFileSource& source, const glm::ivec3& dims, ValueType type,
+                        std::optional<double> missingMarker) {
     const std::size_t stride = bytesPerValue(type);
     const std::size_t count = std::size_t(dims.x) * std::size_t(dims.y) * std::size_t(dims.z);
     const std::vector<std::uint8_t> bytes =
         readExactly(source, "value file", count * stride, dimsText(dims) + " " + toString(type) + " values");
+    // Compared in the file's own precision: a float32 file stores the marker 1e35 as float(1e35).
+    const bool nanIsMissing = missingMarker && std::isnan(*missingMarker);
+    const float marker = missingMarker && !nanIsMissing ? float(*missingMarker) : 0.0f;
+    const bool markerIsSet = missingMarker && !nanIsMissing;
 
     RawValues raw;
     raw.values.resize(count);
     float lowest = std::numeric_limits<float>::infinity();
     float highest = -std::numeric_limits<float>::infinity();
     for (std::size_t index = 0; index < count; ++index) {
-        const float value = decodeValue(bytes.data() + index * stride, type);
+        const float value = float(decodeValue(bytes.data() + index * stride, type, ByteOrder::Little));
+        if ((markerIsSet && value == marker) || (nanIsMissing && std::isnan(value))) {
+            raw.values[index] = missingDensity();
+            continue;
+        }
         if (!std::isfinite(value)) {
             failFile(source, "value file",
                      std::string("holds a non-finite value (") + (std::isnan(value) ? "NaN" : "Inf") +
-                         ") at voxel (x, y, z) = " + voxelText(index, dims));
+                         ") at voxel (x, y, z) = " + voxelText(index, dims) +
+                         (std::isnan(value) ? " (declare \"missing_value\": \"NaN\" if NaN marks missing data)" : ""));
         }
         raw.values[index] = value;
         lowest = std::min(lowest, value);
         highest = std::max(highest, value);
     }
-    raw.range = {double(lowest), double(highest)};
+    const double none = std::numeric_limits<double>::quiet_NaN();
+    raw.range = lowest <= highest ? std::array<double, 2>{double(lowest), double(highest)}
+                                  : std::array<double, 2>{none, none};
     return raw;
 }
 
@@ -101,10 +98,16 @@ std::vector<std::uint8_t> readMask(const RawFileSource& source, const glm::ivec3
                        dimsText(dims) + " uint8 values");
 }
 
+std::vector<std::uint8_t> readExactBytes(const RawFileSource& source, const std::string& kind,
+                                         std::size_t expectedBytes, const std::string& layout) {
+    return readExactly(source, kind, expectedBytes, layout);
+}
+
 void normalizeToDensity(std::vector<float>& values, const std::array<double, 2>& valueRange) {
     const double low = valueRange[0];
     const double width = valueRange[1] - valueRange[0];
     for (float& value : values) {
+        if (isMissing(value)) continue;
         value = float(std::clamp((double(value) - low) / width, 0.0, 1.0));
     }
 }

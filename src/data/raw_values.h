@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,18 +24,28 @@ struct RawFileSource {
 
 struct RawValues {
     // The raw values, x fastest; float holds every uint8, uint16 and float32 value exactly.
+    // Missing values are missingDensity() (NaN).
     std::vector<float> values;
-    std::array<double, 2> range{0.0, 0.0};  // min, max
+    // Min and max over the values that are not missing; NaN, NaN when every value is missing.
+    std::array<double, 2> range{0.0, 0.0};
 };
 
-// Reads dims.x * dims.y * dims.z little-endian values of `type`; the file size must match exactly and
-// float32 values must be finite.
-RawValues readRawValues(const RawFileSource& source, const glm::ivec3& dims, ValueType type);
+// Reads dims.x * dims.y * dims.z little-endian values of `type`; the file size must match exactly.
+// A value equal to `missingMarker` is missing (a NaN marker makes NaN values missing); any other
+// non-finite float32 value is an error.
+RawValues readRawValues(const RawFileSource& source, const glm::ivec3& dims, ValueType type,
+                        std::optional<double> missingMarker);
 
 // Reads one uint8 per voxel.
 std::vector<std::uint8_t> readMask(const RawFileSource& source, const glm::ivec3& dims);
 
-// Maps raw values in place to density: clamp((v - lo) / (hi - lo), 0, 1). Needs lo < hi.
+// Reads a whole file of exactly `expectedBytes` bytes (`kind` and `layout` word the size error:
+// "coordinates file", "17 x 9 x 5 nodes, 3 float32 each").
+std::vector<std::uint8_t> readExactBytes(const RawFileSource& source, const std::string& kind,
+                                         std::size_t expectedBytes, const std::string& layout);
+
+// Maps raw values in place to density: clamp((v - lo) / (hi - lo), 0, 1). Needs lo < hi. Missing
+// values stay missing.
 void normalizeToDensity(std::vector<float>& values, const std::array<double, 2>& valueRange);
 
 }  // namespace tstyles

@@ -2,6 +2,8 @@
 // renderer sizes its rays by.
 #include "tstyles/data/series.h"
 
+#include "tstyles/data/grid_axes.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -21,12 +23,21 @@ std::string toString(ValueType type) {
             return "uint16";
         case ValueType::Float32:
             return "float32";
+        case ValueType::Int8:
+            return "int8";
+        case ValueType::Int16:
+            return "int16";
+        case ValueType::Int32:
+            return "int32";
+        case ValueType::Float64:
+            return "float64";
     }
     throw std::logic_error("toString: ValueType out of range");
 }
 
 std::optional<ValueType> valueTypeFromString(const std::string& name) {
-    for (ValueType type : {ValueType::UInt8, ValueType::UInt16, ValueType::Float32}) {
+    for (ValueType type : {ValueType::UInt8, ValueType::UInt16, ValueType::Float32, ValueType::Int8,
+                           ValueType::Int16, ValueType::Int32, ValueType::Float64}) {
         if (toString(type) == name) return type;
     }
     return std::nullopt;
@@ -35,25 +46,18 @@ std::optional<ValueType> valueTypeFromString(const std::string& name) {
 std::size_t bytesPerValue(ValueType type) {
     switch (type) {
         case ValueType::UInt8:
+        case ValueType::Int8:
             return 1;
         case ValueType::UInt16:
+        case ValueType::Int16:
             return 2;
         case ValueType::Float32:
+        case ValueType::Int32:
             return 4;
+        case ValueType::Float64:
+            return 8;
     }
     throw std::logic_error("bytesPerValue: ValueType out of range");
-}
-
-glm::ivec3 gridDims(const Grid& grid) {
-    return std::visit([](const auto& kind) { return kind.dims; }, grid);
-}
-
-std::size_t gridVoxelCount(const Grid& grid) {
-    return std::visit([](const auto& kind) { return kind.voxelCount(); }, grid);
-}
-
-std::string gridTypeName(const Grid& grid) {
-    return std::holds_alternative<BeamGrid>(grid) ? "beam" : "rectilinear";
 }
 
 glm::dmat4 Placement::gridToWorld() const {
@@ -73,6 +77,20 @@ AxisAngle toAxisAngle(const glm::dquat& rotation) {
 
 glm::dquat fromAxisAngle(const AxisAngle& rotation) {
     return glm::angleAxis(glm::radians(rotation.angleDeg), glm::normalize(rotation.axis));
+}
+
+glm::ivec3 gridDims(const Grid& grid) {
+    return std::visit([](const auto& kind) { return kind.dims; }, grid);
+}
+
+std::size_t gridVoxelCount(const Grid& grid) {
+    return std::visit([](const auto& kind) { return kind.voxelCount(); }, grid);
+}
+
+std::string gridTypeName(const Grid& grid) {
+    if (std::holds_alternative<StructuredGrid>(grid)) return "structured";
+    if (std::holds_alternative<BeamGrid>(grid)) return "beam";
+    return "rectilinear";
 }
 
 bool Series::hasMasks() const {
@@ -96,11 +114,19 @@ Bounds Series::worldBounds(std::size_t step) const {
             for (const glm::dvec3& corner : triangle) include(corner);
         return bounds;
     }
-    const glm::dvec3 extent = timeStep.rectilinear().extent();
+    // Grid-local bounds: the lattice's box, or the box of a structured grid's nodes.
+    glm::dvec3 localLower(0.0);
+    glm::dvec3 extent(0.0);
+    if (const StructuredGrid* structured = timeStep.structured()) {
+        localLower = structured->localLower;
+        extent = structured->localUpper - structured->localLower;
+    } else {
+        extent = timeStep.rectilinear().extent();
+    }
     // A rotated box's axis-aligned bounds are reached at its corners, so eight points suffice.
     for (int corner = 0; corner < 8; ++corner) {
-        include(glm::dvec3((corner & 1) ? extent.x : 0.0, (corner & 2) ? extent.y : 0.0,
-                           (corner & 4) ? extent.z : 0.0));
+        include(localLower + glm::dvec3((corner & 1) ? extent.x : 0.0, (corner & 2) ? extent.y : 0.0,
+                                        (corner & 4) ? extent.z : 0.0));
     }
     return bounds;
 }
@@ -120,12 +146,15 @@ double Series::finestSpacing() const {
     if (steps.empty()) throw std::logic_error("Series::finestSpacing: the series has no time-steps");
     double finest = std::numeric_limits<double>::infinity();
     for (const TimeStep& step : steps) {
+        if (const StructuredGrid* structured = step.structured()) {
+            finest = std::min(finest, structured->finestEdge);
+            continue;
+        }
         if (step.isBeam()) {
             finest = std::min(finest, beamFinestSpacing(step.beam()));
             continue;
         }
-        const glm::dvec3 spacing = step.rectilinear().spacing;
-        finest = std::min({finest, spacing.x, spacing.y, spacing.z});
+        finest = std::min(finest, tstyles::finestSpacing(step.rectilinear()));
     }
     return finest;
 }

@@ -3,8 +3,10 @@
 #include "tstyles/data/series_summary.h"
 
 #include "tstyles/data/beam_geometry.h"
+#include "tstyles/data/inverse_map.h"
 
 #include <algorithm>
+#include <cmath>
 #include <variant>
 #include <iomanip>
 #include <sstream>
@@ -67,6 +69,18 @@ void printTable(std::ostream& out, const std::vector<Row>& rows) {
     }
 }
 
+// Per axis the spacing, or "uneven" where the axis lists its node positions.
+std::string spacingText(const RectilinearGrid& grid) {
+    std::string text = "(";
+    for (int axis = 0; axis < 3; ++axis)
+        text += (axis > 0 ? ", " : "") + (grid.isUneven(axis) ? std::string("uneven") : number(grid.spacing[axis]));
+    return text + ")";
+}
+
+std::size_t missingVoxels(const TimeStep& step) {
+    return std::size_t(std::count_if(step.density.begin(), step.density.end(), [](float d) { return isMissing(d); }));
+}
+
 std::string dimsText(const glm::ivec3& dims) {
     return std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" + std::to_string(dims.z);
 }
@@ -84,8 +98,10 @@ std::array<std::string, 2> gridText(const TimeStep& step) {
                 "az " + angleSpanText(grid.azimuthDeg) + " el " + angleSpanText(grid.elevationDeg) +
                     " deg, range " + number(grid.minRange) + ".." + number(grid.maxRange)};
     }
+    if (const StructuredGrid* structured = step.structured())
+        return {"structured " + dimsText(structured->dims), "curvilinear, edges from " + number(structured->finestEdge)};
     const RectilinearGrid& grid = step.rectilinear();
-    return {"rectilinear " + dimsText(grid.dims), vec3Text(grid.spacing)};
+    return {"rectilinear " + dimsText(grid.dims), spacingText(grid)};
 }
 
 Row stepRow(const Series& series, std::size_t index) {
@@ -97,7 +113,9 @@ Row stepRow(const Series& series, std::size_t index) {
             spacing,
             vec3Text(step.placement.origin),
             rotationText(step.placement.rotation),
-            number(step.rawRange[0]) + " .. " + number(step.rawRange[1]) + " " + toString(step.sourceType),
+            (std::isnan(step.rawRange[0]) ? std::string("no data")
+                                          : number(step.rawRange[0]) + " .. " + number(step.rawRange[1])) +
+                " " + toString(step.sourceType),
             step.mask ? "yes" : "no"};
 }
 
@@ -117,14 +135,52 @@ void printOverlaps(std::ostream& out, const Series& series) {
     printTable(out, rows);
 }
 
+std::string structuredGridsText(const Series& series) {
+    const std::vector<const StructuredGrid*> grids = distinctStructuredGrids(series);
+    if (grids.empty()) return {};
+    std::ostringstream out;
+    out << "Structured grids: " << grids.size() << " (node coordinates per node; samples are located through an "
+        << "inverse map of RGBA32F texels over each grid's bounds)\n";
+    for (const StructuredGrid* grid : grids) {
+        const glm::ivec3 map = inverseMapDims(*grid);
+        out << "  " << (grid->coordinatesFile.empty() ? std::string("(in memory)") : grid->coordinatesFile.string())
+            << ": " << grid->dims.x << "x" << grid->dims.y << "x" << grid->dims.z << " nodes, local bounds "
+            << vec3Text(grid->localLower) << " to " << vec3Text(grid->localUpper) << ", inverse map " << map.x << "x"
+            << map.y << "x" << map.z << " (" << mibText(std::size_t(map.x) * map.y * map.z * 16) << ")\n";
+    }
+    return out.str();
+}
+
 bool sameGrid(const TimeStep& a, const TimeStep& b) {
     if (a.grid.index() != b.grid.index()) return false;
     if (a.isBeam()) return a.beam() == b.beam();
-    return a.rectilinear().dims == b.rectilinear().dims && a.rectilinear().spacing == b.rectilinear().spacing &&
+    if (const StructuredGrid* structured = a.structured()) return structured->nodes == b.structured()->nodes;
+    return a.dims() == b.dims() && a.rectilinear().spacing == b.rectilinear().spacing &&
            a.rectilinear().axisPositions == b.rectilinear().axisPositions;
 }
 
 }  // namespace
+
+std::vector<const StructuredGrid*> distinctStructuredGrids(const Series& series) {
+    std::vector<const StructuredGrid*> grids;
+    for (const TimeStep& step : series.steps) {
+        const StructuredGrid* grid = step.structured();
+        if (!grid) continue;
+        const bool known = std::any_of(grids.begin(), grids.end(),
+                                       [grid](const StructuredGrid* other) { return other->nodes == grid->nodes; });
+        if (!known) grids.push_back(grid);
+    }
+    return grids;
+}
+
+std::size_t inverseMapBytes(const Series& series) {
+    std::size_t bytes = 0;
+    for (const StructuredGrid* grid : distinctStructuredGrids(series)) {
+        const glm::ivec3 map = inverseMapDims(*grid);
+        bytes += std::size_t(map.x) * std::size_t(map.y) * std::size_t(map.z) * sizeof(glm::vec4);
+    }
+    return bytes;
+}
 
 bool isFullyAligned(const Series& series) {
     if (series.steps.empty()) return true;
@@ -150,6 +206,7 @@ std::size_t diskBytes(const Series& series) {
         const std::size_t voxels = gridVoxelCount(step.grid);
         bytes += voxels * bytesPerValue(step.sourceType) + (step.mask ? voxels : 0);
     }
+    for (const StructuredGrid* grid : distinctStructuredGrids(series)) bytes += grid->voxelCount() * 12;
     return bytes;
 }
 
@@ -159,7 +216,7 @@ std::size_t gpuBytes(const Series& series) {
         const std::size_t voxels = gridVoxelCount(step.grid);
         bytes += voxels * kGpuBytesPerDensityVoxel + (step.mask ? voxels * kGpuBytesPerMaskVoxel : 0);
     }
-    return bytes;
+    return bytes + inverseMapBytes(series);
 }
 
 std::string describeSeries(const Series& series) {
@@ -169,6 +226,17 @@ std::string describeSeries(const Series& series) {
     out << "Time-steps: " << series.size() << "\n";
     out << "Value range: [" << number(series.valueRange[0]) << ", " << number(series.valueRange[1])
         << "] maps to density [0, 1]\n";
+    std::size_t missing = 0;
+    std::size_t voxels = 0;
+    for (const TimeStep& step : series.steps) {
+        missing += missingVoxels(step);
+        voxels += step.density.size();
+    }
+    if (missing > 0) {
+        std::ostringstream share;
+        share << std::fixed << std::setprecision(1) << 100.0 * double(missing) / double(voxels);
+        out << "Missing values: " << missing << " voxels without data (" << share.str() << " %)\n";
+    }
     out << "Alignment: "
         << (isFullyAligned(series) ? "fully aligned: one common grid"
                                    : "partial overlap: time-steps differ in grid or placement")
@@ -186,8 +254,10 @@ std::string describeSeries(const Series& series) {
 
     printOverlaps(out, series);
     out << "\n";
+    out << structuredGridsText(series);
     out << "Memory: " << mibText(diskBytes(series)) << " on disk, " << mibText(gpuBytes(series))
-        << " on the GPU (16-bit density" << (series.hasMasks() ? " + 8-bit mask" : "") << " per voxel)\n";
+        << " on the GPU (16-bit density" << (series.hasMasks() ? " + 8-bit mask" : "") << " per voxel"
+        << (inverseMapBytes(series) > 0 ? ", inverse maps" : "") << ")\n";
     return out.str();
 }
 

@@ -7,7 +7,8 @@
 namespace tstyles {
 
 BrickGrid computeBrickGrid(const TimeStep& step) {
-    const glm::ivec3 dims = gridDims(step.grid);
+    // Bricks are in computational (voxel) space, so every grid kind is bricked the same way.
+    const glm::ivec3 dims = step.dims();
     BrickGrid result;
     result.bricks = glm::max((dims - 1 + kBrickSize - 1) / kBrickSize, glm::ivec3(1));
     result.minMax.assign(std::size_t(result.bricks.x) * result.bricks.y * result.bricks.z, {1.0f, 0.0f});
@@ -25,6 +26,8 @@ BrickGrid computeBrickGrid(const TimeStep& step) {
             for (int x = 0; x < dims.x; ++x, ++index) {
                 const auto [x0, x1] = bricksOf(x, result.bricks.x);
                 const float density = step.density[index];
+                // Missing voxels are transparent; a lookup beside them mixes only the valid ones.
+                if (isMissing(density)) continue;
                 for (int bz = z0; bz <= z1; ++bz)
                     for (int by = y0; by <= y1; ++by)
                         for (int bx = x0; bx <= x1; ++bx) {
@@ -64,6 +67,8 @@ float OpacityRangeMaximum::over(float low, float high) const {
 std::vector<std::uint8_t> brickVisibility(const BrickGrid& grid, const OpacityRangeMaximum& opacity) {
     std::vector<std::uint8_t> visible(grid.minMax.size());
     std::transform(grid.minMax.begin(), grid.minMax.end(), visible.begin(), [&](const auto& range) {
+        // A brick without any data keeps its empty range (min > max) and shows nothing.
+        if (range.first > range.second) return std::uint8_t(0);
         return std::uint8_t(opacity.over(range.first, range.second) > 0.0f ? 255 : 0);
     });
     return visible;

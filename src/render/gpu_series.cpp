@@ -4,12 +4,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
+#include <variant>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "tstyles/core/errors.h"
 #include "tstyles/render/bindings.h"
+#include "tstyles/render/density_texels.h"
 #include "tstyles/render/proxy_mesh.h"
+#include "tstyles/render/uneven_axis_table.h"
 
 namespace tstyles {
 namespace {
@@ -21,6 +25,7 @@ struct TimeStepInfo {
     glm::vec4 dims;
     glm::ivec4 layer;
     glm::vec4 occupancyOrigin;  // xyz: first texel of this time-step's bricks in the occupancy atlas
+    glm::ivec4 flags;           // x: 1 when world -> voxel is affine
     glm::ivec4 grid;            // x: grid kind; beam grids: y, z: first azimuth, elevation angle
     glm::vec4 beamRange;        // beam grids: minimum, maximum range, gradient difference distance
 };
@@ -59,14 +64,19 @@ bool shareProxy(const TimeStep& a, const TimeStep& b) {
     return a.rectilinear().extent() == b.rectilinear().extent();
 }
 
-// The proxy layer of every time-step; time-steps with the same grid and placement share one. Boxes
-// get a proxy box, beam fans a proxy mesh.
+// The proxy layer of every rectilinear and beam time-step; time-steps with the same grid and
+// placement share one. Boxes get a proxy box, beam fans a proxy mesh. Structured time-steps get
+// theirs from GpuStructuredGrids (-1 here).
 std::vector<int> assignProxyLayers(const Series& series, std::vector<ProxyBox>& boxes,
                                    std::vector<ProxyMeshVertex>& mesh) {
     std::vector<int> layers;
     std::vector<std::size_t> firstStepOfLayer;
     for (std::size_t step = 0; step < series.size(); ++step) {
         const auto& timeStep = series.steps[step];
+        if (timeStep.structured()) {
+            layers.push_back(-1);
+            continue;
+        }
         int layer = -1;
         for (std::size_t candidate = 0; candidate < firstStepOfLayer.size(); ++candidate) {
             if (shareProxy(series.steps[firstStepOfLayer[candidate]], timeStep)) {
@@ -88,11 +98,18 @@ std::vector<int> assignProxyLayers(const Series& series, std::vector<ProxyBox>& 
     return layers;
 }
 
+// Whether world -> voxel coordinates is one matrix product: evenly spaced rectilinear grids.
+// Other grids (uneven axes, and the grid kinds still to come) take the general path in the shader.
+bool hasAffineWorldToVoxel(const TimeStep& step) {
+    const auto* grid = std::get_if<RectilinearGrid>(&step.grid);
+    return grid && !grid->isUneven(0) && !grid->isUneven(1) && !grid->isUneven(2);
+}
+
 // A time-step's row in the time-step table; beam grids also append their angles (radians).
 TimeStepInfo timeStepInfo(const TimeStep& step, const glm::ivec3& brickOrigin, int layer,
                           const glm::ivec3& occupancyOrigin, std::vector<float>& beamAngles) {
     TimeStepInfo info{};
-    const glm::ivec3 dims = gridDims(step.grid);
+    const glm::ivec3 dims = step.dims();
     info.brickOrigin = glm::vec4(glm::vec3(brickOrigin), 0.0f);
     info.dims = glm::vec4(glm::vec3(dims), step.mask ? 1.0f : 0.0f);
     info.layer = glm::ivec4(layer, 0, 0, 0);
@@ -106,9 +123,13 @@ TimeStepInfo timeStepInfo(const TimeStep& step, const glm::ivec3& brickOrigin, i
         info.beamRange = glm::vec4(float(grid.minRange), float(grid.maxRange), float(grid.rangeSpacing()), 0.0f);
         return info;
     }
+    const StructuredGrid* structured = step.structured();
     const glm::dmat4 voxelToWorld =
-        step.placement.gridToWorld() * glm::scale(glm::dmat4(1.0), step.rectilinear().spacing);
+        structured ? structuredBoxToWorld(*structured, step.placement)
+                   : step.placement.gridToWorld() * glm::scale(glm::dmat4(1.0), voxelScale(step.rectilinear()));
     info.worldToVoxel = glm::mat4(glm::inverse(voxelToWorld));
+    info.flags = glm::ivec4(hasAffineWorldToVoxel(step) ? 1 : 0, 0, 0, 0);
+    // Structured grids are told apart by their own table (shaders/structured_grid.glsl).
     info.grid = glm::ivec4(kGridRectilinear, 0, 0, 0);
     return info;
 }
@@ -121,32 +142,35 @@ GpuSeries::GpuSeries(const Series& series)
       occupancyAtlas_(Texture::create(GL_TEXTURE_3D)),
       timeStepTable_(Buffer::create()),
       proxyTable_(Buffer::create()),
+      unevenAxisTable_(Buffer::create()),
+      axisNodeTable_(Buffer::create()),
       beamAngleTable_(Buffer::create()),
       proxyMeshTable_(Buffer::create()) {
+    // Validation of structured grids happens on load; here they only need an inverse map and a mesh.
     timeStepCount_ = series.size();
     hasMasks_ = series.hasMasks();
+    allAffine_ = std::all_of(series.steps.begin(), series.steps.end(), hasAffineWorldToVoxel);
     std::vector<glm::ivec3> dims;
-    for (const auto& step : series.steps) dims.push_back(gridDims(step.grid));
+    for (const auto& step : series.steps) dims.push_back(step.dims());
     layout_ = planAtlas(dims, maxTextureSize3D());
 
     glGetError();  // start from a clean error state so that OUT_OF_MEMORY below is ours
-    densityAtlas_ = createAtlas(GL_R16, layout_.size);
+    hasMissingValues_ = tstyles::hasMissingValues(series);
+    densityAtlas_ = createAtlas(hasMissingValues_ ? GL_RG16 : GL_R16, layout_.size);
+    // Validity reads as alpha; without missing values alpha is 1 everywhere (R16's default).
+    if (hasMissingValues_) glTextureParameteri(densityAtlas_.id(), GL_TEXTURE_SWIZZLE_A, GL_GREEN);
     maskAtlas_ = createAtlas(GL_R8, hasMasks_ ? layout_.size : glm::ivec3(1));
     requireNoOutOfMemory(series, "volume atlas");
 
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    std::vector<std::uint16_t> texels;
     std::vector<std::uint8_t> maskTexels;
     for (std::size_t index = 0; index < series.size(); ++index) {
         const auto& step = series.steps[index];
-        const glm::ivec3 size = gridDims(step.grid);
+        const glm::ivec3 size = step.dims();
         const glm::ivec3 origin = layout_.brickOrigins[index];
-        texels.resize(step.density.size());
-        std::transform(step.density.begin(), step.density.end(), texels.begin(), [](float density) {
-            return std::uint16_t(std::lround(std::clamp(density, 0.0f, 1.0f) * 65535.0f));
-        });
+        const std::vector<std::uint16_t> texels = densityTexels(step, hasMissingValues_);
         glTextureSubImage3D(densityAtlas_.id(), 0, origin.x, origin.y, origin.z, size.x, size.y, size.z,
-                            GL_RED, GL_UNSIGNED_SHORT, texels.data());
+                            hasMissingValues_ ? GL_RG : GL_RED, GL_UNSIGNED_SHORT, texels.data());
         if (step.mask) {
             // Upload masks as 0 / 255 so that trilinear filtering gives a smooth boundary at 0.5.
             maskTexels.resize(step.mask->size());
@@ -174,8 +198,12 @@ GpuSeries::GpuSeries(const Series& series)
 
     std::vector<ProxyBox> boxes;
     std::vector<ProxyMeshVertex> mesh;
-    const std::vector<int> layers = assignProxyLayers(series, boxes, mesh);
-    proxyCount_ = layers.empty() ? 0 : std::size_t(*std::max_element(layers.begin(), layers.end()) + 1);
+    std::vector<int> layers = assignProxyLayers(series, boxes, mesh);
+    const int boxAndFanLayers = 1 + std::accumulate(layers.begin(), layers.end(), -1,
+                                                    [](int most, int layer) { return std::max(most, layer); });
+    structuredGrids_.emplace(series, boxAndFanLayers, layers, mesh, maxTextureSize3D());
+    requireNoOutOfMemory(series, "inverse maps of the structured grids");
+    proxyCount_ = std::size_t(boxAndFanLayers + structuredGrids_->layerCount());
     proxyBoxCount_ = boxes.size();
     proxyMeshVertexCount_ = mesh.size();
     std::vector<TimeStepInfo> table;
@@ -192,10 +220,14 @@ GpuSeries::GpuSeries(const Series& series)
     beamAngleTable_.setData(std::as_bytes(std::span(beamAngles)), GL_STATIC_DRAW);
     proxyMeshTable_.setData(std::as_bytes(std::span(mesh)), GL_STATIC_DRAW);
     proxyTable_.setData(std::as_bytes(std::span(boxes)), GL_STATIC_DRAW);
+    const UnevenAxisTable uneven = buildUnevenAxisTable(series);
+    unevenAxisTable_.setData(std::as_bytes(std::span(uneven.firstNode)), GL_STATIC_DRAW);
+    axisNodeTable_.setData(std::as_bytes(std::span(uneven.positions)), GL_STATIC_DRAW);
 }
 
 std::size_t GpuSeries::textureBytes() const {
-    return layout_.texelCount() * 2 + (hasMasks_ ? layout_.texelCount() : 1) + occupancyLayout_.texelCount();
+    return layout_.texelCount() * (hasMissingValues_ ? 4 : 2) + (hasMasks_ ? layout_.texelCount() : 1) +
+           occupancyLayout_.texelCount() + structuredGrids_->gpuBytes();
 }
 
 void GpuSeries::updateOccupancy(const std::vector<glm::vec4>& stfTable) {
@@ -216,6 +248,9 @@ void GpuSeries::bind() const {
     occupancyAtlas_.bindToUnit(binding::kOccupancyUnit);
     timeStepTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kTimeStepBuffer);
     proxyTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kProxyBuffer);
+    structuredGrids_->bind();
+    unevenAxisTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kUnevenAxisBuffer);
+    axisNodeTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kAxisNodeBuffer);
     beamAngleTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kBeamAngleBuffer);
     proxyMeshTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kProxyMeshBuffer);
 }

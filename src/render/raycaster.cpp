@@ -44,7 +44,8 @@ Raycaster::Raycaster(const ShaderLibrary& shaders)
 const Program& Raycaster::programFor(const RaycastParameters& parameters) {
     const int capacity = arrayCapacity(parameters.timeStepCount);
     const auto key = std::make_tuple(compositorDefine(parameters.compositor), parameters.collectStatistics,
-                                     parameters.styled, parameters.naive, capacity);
+                                     parameters.styled, parameters.naive, parameters.masks,
+                                     parameters.allAffine, parameters.structuredGrids, capacity);
     auto found = programs_.find(key);
     if (found != programs_.end()) return found->second;
     const ShaderDefines defines = {
@@ -53,6 +54,9 @@ const Program& Raycaster::programFor(const RaycastParameters& parameters) {
         {"MAX_TIME_STEPS", std::to_string(capacity)},
         {"STYLED", parameters.styled ? "1" : "0"},
         {"NAIVE_RAYCASTER", parameters.naive ? "1" : "0"},
+        {"HAS_MASKS", parameters.masks ? "1" : "0"},
+        {"ALL_AFFINE", parameters.allAffine ? "1" : "0"},
+        {"STRUCTURED_GRIDS", parameters.structuredGrids ? "1" : "0"},
     };
     auto program = Program::build(shaders_, {{GL_VERTEX_SHADER, "fullscreen.vert"},
                                              {GL_FRAGMENT_SHADER, "raycast.frag"}},

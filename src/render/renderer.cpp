@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "tstyles/render/covered_pixels.h"
+
 namespace tstyles {
 namespace {
 
@@ -29,6 +31,7 @@ void Renderer::setSeries(const Series& series) {
     gpuSeries_.emplace(series);
     occupancyStale_ = true;
     finestSpacing_ = series.finestSpacing();
+    worldBounds_ = series.worldBounds();
 }
 
 double Renderer::stepLengthFor(const Scene& scene) const {
@@ -59,6 +62,7 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     parameters.inverseViewProjection = inverseViewProjection;
     parameters.viewport = options.size;
     parameters.timeStepCount = int(gpuSeries_->timeStepCount());
+    parameters.structuredGrids = gpuSeries_->structuredGrids().layerCount() > 0;
     parameters.atlasSize = gpuSeries_->layout().size;
     parameters.stepLength = float(stepLengthFor(scene) * options.stepScale);
     parameters.referenceLength = float(finestSpacing_);
@@ -70,11 +74,24 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     parameters.collectStatistics = options.collectStatistics;
     parameters.soloTimeStep = options.soloTimeStep.value_or(-1);
     parameters.naive = options.naive;
+    parameters.masks = gpuSeries_->hasMasks();
+    parameters.allAffine = gpuSeries_->allAffine();
     parameters.styled = styleTextures_.anyStyled();
     parameters.styleTracks = styleTextures_.trackRanges();
     parameters.worldToView = glm::mat3(view.viewMatrix);
     parameters.styleFootprint = float(styleFootprint(view, options.size.y, finestSpacing_));
+    // Rays through pixels outside the series' projected bounds meet no time-step and would give
+    // the background: clear to it and raycast only the rectangle that can differ.
+    const glm::vec4 premultipliedBackground(glm::vec3(parameters.background) * parameters.background.a,
+                                            parameters.background.a);
+    glDisable(GL_SCISSOR_TEST);
+    glClearNamedFramebufferfv(target_.framebufferId(), GL_COLOR, 0, &premultipliedBackground.x);
+    const PixelRectangle covered =
+        coveredPixels(worldBounds_, view.projectionMatrix * view.viewMatrix, options.size);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(covered.offset.x, covered.offset.y, covered.size.x, covered.size.y);
     raycaster_.draw(parameters);
+    glDisable(GL_SCISSOR_TEST);
 }
 
 std::size_t Renderer::seriesTextureBytes() const { return gpuSeries_ ? gpuSeries_->textureBytes() : 0; }

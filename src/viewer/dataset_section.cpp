@@ -1,5 +1,6 @@
 // The dataset section (what the series is, where it sits, what it costs) and the time section.
 #include <algorithm>
+#include <variant>
 #include <cstdio>
 #include <string>
 
@@ -24,13 +25,15 @@ std::string bytesText(std::size_t bytes) {
 
 bool sameGrid(const Series& series) {
     const TimeStep& first = series.steps.front();
+    if (first.structured()) return false;
     if (first.isBeam()) {
         return std::all_of(series.steps.begin(), series.steps.end(),
                            [&](const TimeStep& step) { return step.isBeam() && step.beam() == first.beam(); });
     }
     return std::all_of(series.steps.begin(), series.steps.end(), [&](const TimeStep& step) {
-        return !step.isBeam() && step.rectilinear().dims == first.rectilinear().dims &&
-               step.rectilinear().spacing == first.rectilinear().spacing;
+        return std::holds_alternative<RectilinearGrid>(step.grid) && step.dims() == first.dims() &&
+               step.rectilinear().spacing == first.rectilinear().spacing &&
+               step.rectilinear().axisPositions == first.rectilinear().axisPositions;
     });
 }
 
@@ -44,7 +47,7 @@ void drawStepTable(const Series& series) {
     ImGui::TableHeadersRow();
     for (std::size_t i = 0; i < series.size(); ++i) {
         const TimeStep& step = series.steps[i];
-        const glm::ivec3 dims = gridDims(step.grid);
+        const glm::ivec3 dims = step.dims();
         const AxisAngle rotation = toAxisAngle(step.placement.rotation);
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
@@ -52,7 +55,8 @@ void drawStepTable(const Series& series) {
         ImGui::TableNextColumn();
         ImGui::Text("%.3g", step.time);
         ImGui::TableNextColumn();
-        ImGui::Text("%s%dx%dx%d", step.isBeam() ? "beam " : "", dims.x, dims.y, dims.z);
+        ImGui::Text("%s%dx%dx%d", step.isBeam() ? "beam " : step.structured() ? "struct. " : "", dims.x, dims.y,
+                    dims.z);
         ImGui::TableNextColumn();
         ImGui::Text("%.2f %.2f %.2f", step.placement.origin.x, step.placement.origin.y, step.placement.origin.z);
         ImGui::TableNextColumn();
@@ -72,12 +76,14 @@ void drawDatasetSection(SidePanelState& state, UiAnchors&) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", series.manifestPath.string().c_str());
     const TimeStep& first = series.steps.front();
     ImGui::Text("%zu time-steps, t = %.3g .. %.3g", series.size(), first.time, series.steps.back().time);
-    const glm::ivec3 dims = gridDims(first.grid);
+    const glm::ivec3 dims = first.dims();
     if (sameGrid(series) && first.isBeam())
         ImGui::Text("beam grid %dx%dx%d, range %.3g .. %.3g", dims.x, dims.y, dims.z, first.beam().minRange,
                     first.beam().maxRange);
     else if (sameGrid(series))
         ImGui::Text("grid %dx%dx%d, spacing %.3g", dims.x, dims.y, dims.z, first.rectilinear().spacing.x);
+    else if (first.structured())
+        ImGui::Text("structured grid %dx%dx%d", dims.x, dims.y, dims.z);
     else
         ImGui::Text("grids of different kinds or sizes");
     ImGui::Text("placement: %s", isFullyAligned(series) ? "aligned" : "moving (partial overlap)");

@@ -12,6 +12,7 @@ DensityHistogram computeDensityHistogram(const Series& series, int bins) {
     histogram.counts.assign(std::size_t(bins), 0.0);
     for (const TimeStep& step : series.steps)
         for (const float density : step.density) {
+            if (isMissing(density)) continue;  // no data is not a density
             const int bin = std::clamp(int(double(density) * bins), 0, bins - 1);
             histogram.counts[std::size_t(bin)] += 1.0;
         }

@@ -19,15 +19,19 @@ void drawProfileSection(SidePanelState& state) {
     const Pick& pick = *state.pick;
     if (state.pickIsNew) ImGui::SetScrollHereY(0.0f);
     ImGui::Text("at (%.3f, %.3f, %.3f)", pick.world.x, pick.world.y, pick.world.z);
-    // Outside a time-step's grid there is no density; the plot shows 0 there and the list says so.
+    // Outside a time-step's grid, or where it has no data, there is no density; the plot shows 0
+    // there and the list says which.
     std::vector<float> values;
-    for (const auto& density : pick.densities) values.push_back(density ? float(*density) : 0.0f);
+    for (const auto& density : pick.densities)
+        values.push_back(density && !isMissing(*density) ? float(*density) : 0.0f);
     const float width = ImGui::GetContentRegionAvail().x;
     ImGui::PlotLines("##profile", values.data(), int(values.size()), 0, "density over time-steps", 0.0f, 1.0f,
                      {width, 70.0f});
     if (ImGui::TreeNode("values")) {
         for (std::size_t i = 0; i < pick.densities.size(); ++i) {
-            if (pick.densities[i])
+            if (pick.densities[i] && isMissing(*pick.densities[i]))
+                ImGui::TextDisabled("%2zu  t = %-8.3g no data", i, state.series.steps[i].time);
+            else if (pick.densities[i])
                 ImGui::Text("%2zu  t = %-8.3g %.4f", i, state.series.steps[i].time, *pick.densities[i]);
             else
                 ImGui::TextDisabled("%2zu  t = %-8.3g outside", i, state.series.steps[i].time);

@@ -48,7 +48,7 @@ std::optional<std::pair<double, double>> clipToBounds(const Ray& ray, const Boun
 bool isVisible(const Series& series, const Scene& scene, const glm::dvec3& position) {
     for (const TimeStep& step : series.steps) {
         const std::optional<double> density = sampleDensity(step, position);
-        if (density && scene.stf.curve.evaluate(*density).opacity >= kVisibleOpacity) return true;
+        if (density && !isMissing(*density) && scene.stf.curve.evaluate(*density).opacity >= kVisibleOpacity) return true;
     }
     return false;
 }

@@ -123,8 +123,8 @@ TEST(ManifestErrors, ZeroRotationAxis) {
 }
 
 TEST(ManifestErrors, UnknownValueType) {
-    expectMentions(errorWhenSet("/time_steps/0/values/type", "int8"),
-                   {"series.json", "time_steps[0].values.type", "unknown value type", "int8", "uint16"});
+    expectMentions(errorWhenSet("/time_steps/0/values/type", "int64"),
+                   {"series.json", "time_steps[0].values.type", "unknown value type", "int64", "uint16"});
 }
 
 TEST(ManifestErrors, TimesMustIncreaseStrictly) {

@@ -27,14 +27,19 @@ tstyles::TimeStep stepOn(glm::ivec3 dims, glm::dvec3 spacing, tstyles::Placement
 }
 
 TEST(ValueType, NamesRoundTripAndSizesAreKnown) {
-    for (ValueType type : {ValueType::UInt8, ValueType::UInt16, ValueType::Float32}) {
+    for (ValueType type : {ValueType::UInt8, ValueType::UInt16, ValueType::Float32, ValueType::Int8,
+                           ValueType::Int16, ValueType::Int32, ValueType::Float64}) {
         EXPECT_EQ(tstyles::valueTypeFromString(tstyles::toString(type)), type);
     }
     EXPECT_EQ(tstyles::toString(ValueType::UInt16), "uint16");
-    EXPECT_EQ(tstyles::valueTypeFromString("int8"), std::nullopt);
+    EXPECT_EQ(tstyles::valueTypeFromString("int64"), std::nullopt);
     EXPECT_EQ(tstyles::bytesPerValue(ValueType::UInt8), 1u);
     EXPECT_EQ(tstyles::bytesPerValue(ValueType::UInt16), 2u);
     EXPECT_EQ(tstyles::bytesPerValue(ValueType::Float32), 4u);
+    EXPECT_EQ(tstyles::bytesPerValue(ValueType::Int8), 1u);
+    EXPECT_EQ(tstyles::bytesPerValue(ValueType::Int16), 2u);
+    EXPECT_EQ(tstyles::bytesPerValue(ValueType::Int32), 4u);
+    EXPECT_EQ(tstyles::bytesPerValue(ValueType::Float64), 8u);
 }
 
 TEST(Placement, GridToWorldRotatesThenTranslates) {

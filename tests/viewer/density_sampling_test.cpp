@@ -64,4 +64,30 @@ TEST(DensitySampling, TemporalProfileHasOneValuePerTimeStep) {
     EXPECT_FALSE(profile[1].has_value());
 }
 
+// Missing voxels: the mix of the corners with data divided by their weight, and "no data" where
+// those corners weigh less than half (as the renderer decides).
+TEST(DensitySampling, MissingCornersAreLeftOutAndMostlyMissingIsNoData) {
+    TimeStep step = linearStep({});
+    step.density[0] = missingDensity();  // node (0, 0, 0)
+    // Halfway between node (0,0,0) (missing) and (1,0,0): only (1,0,0) has data.
+    EXPECT_NEAR(*sampleDensity(step, {0.25, 0.0, 0.0}), expected({1, 0, 0}), 1e-6);
+    // At the missing node itself the valid corners weigh nothing: no data.
+    EXPECT_TRUE(isMissing(*sampleDensity(step, {0.0, 0.0, 0.0})));
+    // A quarter of the way from (1,0,0) to (0,0,0): the missing corner weighs 0.25, (1,0,0) 0.75.
+    EXPECT_NEAR(*sampleDensity(step, {0.375, 0.0, 0.0}), expected({1, 0, 0}), 1e-6);
+    // Three quarters towards the missing node: 0.25 of valid weight is below half, so no data.
+    EXPECT_TRUE(isMissing(*sampleDensity(step, {0.125, 0.0, 0.0})));
+}
+
+TEST(DensitySampling, UnevenAxesMapPositionsThroughTheirNodes) {
+    TimeStep step = linearStep({});
+    RectilinearGrid grid = step.rectilinear();
+    grid.axisPositions[2] = {0.0, 0.2, 1.0};  // z nodes at 0, 0.2, 1.0 instead of 0, 0.5, 1.0
+    step.grid = grid;
+    EXPECT_NEAR(*sampleDensity(step, {0.0, 0.0, 0.2}), expected({0, 0, 1}), 1e-6);
+    EXPECT_NEAR(*sampleDensity(step, {0.0, 0.0, 0.6}), expected({0, 0, 1.5}), 1e-6);
+    EXPECT_NEAR(*sampleDensity(step, {0.0, 0.0, 0.1}), expected({0, 0, 0.5}), 1e-6);
+    EXPECT_FALSE(sampleDensity(step, {0.0, 0.0, 1.01}).has_value());
+}
+
 }  // namespace

@@ -178,7 +178,8 @@ std::vector<RawTimeStep> alignedSteps(const BouncingSeriesOptions& options,
 
 tstyles::RawSeries buildBouncingSeries(const BouncingSeriesOptions& options) {
     const SuperEllipsoidShape shape;
-    const BounceParameters bounce;
+    BounceParameters bounce;
+    bounce.duration = options.duration;
     const Trajectory trajectory = simulateBounce(bounce, shape);
 
     tstyles::RawSeries series;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 
 #include "tstyles/data/series.h"
 
@@ -15,7 +16,10 @@ Series loadSeries(const std::filesystem::path& manifestPath);
 // One time-step's values as they should be written to disk.
 struct RawTimeStep {
     double time = 0.0;
-    RectilinearGrid grid;
+    RectilinearGrid grid;  // uneven axes (axisPositions) are written as grid.positions
+    // When set, the time-step is on this structured grid instead (its dims count the values);
+    // time-steps sharing one node array share one coordinates file.
+    std::optional<StructuredGrid> structured;
     // When set, the time-step lies on this beam (sonar) grid instead, and `grid` is not written.
     std::optional<BeamGrid> beamGrid;
     Placement placement;
@@ -27,6 +31,9 @@ struct RawTimeStep {
 struct RawSeries {
     std::string name;
     std::array<double, 2> valueRange{0.0, 1.0};
+    // The raw value that marks a voxel without data (NaN: NaN values in float32 files); none: every
+    // value is data.
+    std::optional<double> missingValue;
     std::vector<RawTimeStep> steps;
 };
 

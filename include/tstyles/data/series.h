@@ -14,6 +14,8 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "tstyles/data/structured_grid.h"
+
 namespace tstyles {
 
 // A voxel without data (a fill value, land under a weather model's atmosphere): neither a density
@@ -23,8 +25,9 @@ namespace tstyles {
 inline float missingDensity() { return std::nanf(""); }
 inline bool isMissing(float density) { return std::isnan(density); }
 
-// How the values of a time-step are stored in its raw file (little-endian).
-enum class ValueType { UInt8, UInt16, Float32 };
+// How the values of a time-step are stored in its raw file (little-endian), or in the file a
+// reader took them from.
+enum class ValueType { UInt8, UInt16, Float32, Int8, Int16, Int32, Float64 };
 
 std::string toString(ValueType type);
 std::optional<ValueType> valueTypeFromString(const std::string& name);
@@ -74,13 +77,12 @@ struct BeamGrid {
     bool operator==(const BeamGrid& other) const = default;
 };
 
-// Grid kinds grow here (structured grids come later).
-using Grid = std::variant<RectilinearGrid, BeamGrid>;
+using Grid = std::variant<RectilinearGrid, StructuredGrid, BeamGrid>;
 
-// Samples along each axis of any grid, and their count.
+// Samples along each axis and in all, whatever the grid kind.
 glm::ivec3 gridDims(const Grid& grid);
 std::size_t gridVoxelCount(const Grid& grid);
-// "rectilinear", "beam": the manifest's name of the grid type.
+// The grid kind as manifests and `tstyles info` name it ("rectilinear", "structured", "beam").
 std::string gridTypeName(const Grid& grid);
 
 // Where a time-step's grid sits in the world: grid-local position p maps to origin + rotation * p.
@@ -122,6 +124,9 @@ struct TimeStep {
     std::filesystem::path maskFile;
 
     const RectilinearGrid& rectilinear() const { return std::get<RectilinearGrid>(grid); }
+    // The structured grid, or null for other grid kinds.
+    const StructuredGrid* structured() const { return std::get_if<StructuredGrid>(&grid); }
+    glm::ivec3 dims() const { return gridDims(grid); }
     bool isBeam() const { return std::holds_alternative<BeamGrid>(grid); }
     const BeamGrid& beam() const { return std::get<BeamGrid>(grid); }
 };
@@ -134,12 +139,20 @@ struct Bounds {
     glm::dvec3 size() const { return upper - lower; }
 };
 
+// Bits per density sample on the GPU: R8, R16 or R32F textures.
+enum class DensityPrecision { Bits8, Bits16, Bits32 };
+
 struct Series {
     std::string name;
     std::filesystem::path manifestPath;
     // The raw values mapped to density 0 and 1.
     std::array<double, 2> valueRange{0.0, 1.0};
     std::vector<TimeStep> steps;
+    // The GPU precision the reader's memory check assumed (ReadOptions::precision); the renderer
+    // does not read it yet and stores R16.
+    DensityPrecision precision = DensityPrecision::Bits16;
+    // The file format it was read from ("tstyles manifest", "NetCDF-4", "NRRD", ...).
+    std::string sourceFormat = "tstyles manifest";
 
     std::size_t size() const { return steps.size(); }
     bool hasMasks() const;

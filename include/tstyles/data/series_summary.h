@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "tstyles/data/series.h"
 
@@ -21,10 +22,16 @@ bool isFullyAligned(const Series& series);
 // 1 when one box contains the other, 0 when they are apart or only touch.
 double overlapFraction(const Series& series, std::size_t a, std::size_t b);
 
-// Bytes of the raw value and mask files (the manifest itself not counted).
+// Bytes of the raw value, mask and coordinates files (the manifest itself not counted).
 std::size_t diskBytes(const Series& series);
 
-// Bytes the renderer uploads: 2 per voxel for density as 16-bit, plus 1 per mask voxel.
+// Bytes the renderer uploads: 2 per voxel for density as 16-bit, plus 1 per mask voxel, plus the
+// inverse maps of structured grids.
 std::size_t gpuBytes(const Series& series);
+
+// The structured grids of the series, each once however many time-steps share it.
+std::vector<const StructuredGrid*> distinctStructuredGrids(const Series& series);
+// Bytes of their inverse maps (RGBA32F), shared by the time-steps on one grid.
+std::size_t inverseMapBytes(const Series& series);
 
 }  // namespace tstyles

@@ -26,7 +26,7 @@ private:
     void resize(glm::ivec2 viewport, int layers);
 
     Program program_;      // instanced proxy boxes
-    Program meshProgram_;  // proxy meshes (beam fans)
+    Program meshProgram_;  // proxy meshes (beam fans, boundary faces of structured grids)
     VertexArray emptyVertexArray_;
     glm::ivec2 size_{0};
     int layers_ = 0;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -12,6 +13,7 @@
 #include "tstyles/gl/objects.h"
 #include "tstyles/render/atlas_layout.h"
 #include "tstyles/render/brick_occupancy.h"
+#include "tstyles/render/gpu_structured_grids.h"
 
 namespace tstyles {
 
@@ -24,11 +26,17 @@ public:
     std::size_t timeStepCount() const { return timeStepCount_; }
     // Layers of the entry/exit buffers: one per distinct grid and placement.
     std::size_t proxyCount() const { return proxyCount_; }
-    // Of those, the layers drawn as instanced boxes, and the vertices of the beam fans' mesh.
+    // Of those, the layers drawn as instanced boxes, and the vertices of the proxy mesh (beam fans,
+    // then the boundary faces of structured grids).
     std::size_t proxyBoxCount() const { return proxyBoxCount_; }
     std::size_t proxyMeshVertexCount() const { return proxyMeshVertexCount_; }
+    const GpuStructuredGrids& structuredGrids() const { return *structuredGrids_; }
     const AtlasLayout& layout() const { return layout_; }
     bool hasMasks() const { return hasMasks_; }
+    // Whether every time-step's world -> voxel map is affine (TimeStepInfo.flags.x).
+    bool allAffine() const { return allAffine_; }
+    // True when the density atlas holds (density * validity, validity) pairs.
+    bool hasMissingValues() const { return hasMissingValues_; }
     // Bytes of texture memory: the density atlas, the mask atlas.
     std::size_t textureBytes() const;
 
@@ -45,6 +53,8 @@ private:
     std::size_t proxyBoxCount_ = 0;
     std::size_t proxyMeshVertexCount_ = 0;
     bool hasMasks_ = false;
+    bool allAffine_ = true;
+    bool hasMissingValues_ = false;
     AtlasLayout layout_;
     Texture densityAtlas_;
     Texture maskAtlas_;
@@ -53,6 +63,9 @@ private:
     Texture occupancyAtlas_;
     Buffer timeStepTable_;
     Buffer proxyTable_;
+    std::optional<GpuStructuredGrids> structuredGrids_;
+    Buffer unevenAxisTable_;  // shaders/uneven_axes.glsl
+    Buffer axisNodeTable_;
     Buffer beamAngleTable_;
     Buffer proxyMeshTable_;
 };

@@ -30,6 +30,9 @@ struct RaycastParameters {
     bool collectStatistics = false;
     int soloTimeStep = -1;  // -1: every time-step takes part
     bool naive = false;     // the benchmark's baseline raycaster
+    bool masks = false;     // whether any time-step has a segmentation mask
+    bool allAffine = false; // whether every time-step's world -> voxel map is affine
+    bool structuredGrids = false;  // the series has structured time-steps (inverse-map lookups compiled in)
     // Lit-sphere styles: whether any track is styled, each track's node range, the view rotation
     // and the style-image footprint of a pixel.
     bool styled = false;
@@ -58,9 +61,9 @@ private:
     const Program& programFor(const RaycastParameters& parameters);
 
     const ShaderLibrary& shaders_;
-    // Keyed by compositor, statistics on/off, styled or not and the time-step capacity of the
-    // shader's arrays.
-    std::map<std::tuple<int, bool, bool, bool, int>, Program> programs_;
+    // Keyed by compositor, statistics on/off, styled or not, naive or not, masks or not, all
+    // affine or not, structured grids or not and the time-step capacity of the shader's arrays.
+    std::map<std::tuple<int, bool, bool, bool, bool, bool, bool, int>, Program> programs_;
     VertexArray emptyVertexArray_;
     Buffer statistics_;
 };

@@ -60,6 +60,7 @@ private:
     ShaderLibrary shaders_;
     std::optional<GpuSeries> gpuSeries_;
     double finestSpacing_ = 1.0;
+    Bounds worldBounds_;  // of every time-step: rays outside its projection meet nothing
     bool occupancyStale_ = true;  // a new series needs its brick visibility computed
     TransferTables transferTables_;
     StyleTextures styleTextures_;

@@ -1,0 +1,31 @@
+// Opening a series from whatever the user has: our manifest (a .json or its folder), NetCDF, NIfTI,
+// NRRD, or the Hurricane Isabel raw files. The format comes from the extension, else from the
+// file's first bytes. docs/readers.md describes each reader and the options.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "tstyles/data/read_options.h"
+#include "tstyles/data/series.h"
+
+namespace tstyles {
+
+// One file (or a dataset folder), or several files that together form a series: the hourly Isabel
+// files of one variable, or 3D volumes (NRRD, NIfTI) taken in the given order as time-steps.
+Series openSeries(const std::vector<std::filesystem::path>& inputs, const ReadOptions& options);
+Series openSeries(const std::filesystem::path& input, const ReadOptions& options);
+
+// As openSeries, but the values stay raw (missing ones NaN): what `tstyles convert` writes. Not
+// for manifests, which are already in our form.
+Series openRawSeries(const std::vector<std::filesystem::path>& inputs, const ReadOptions& options);
+
+// The name of the format the opener would use ("tstyles manifest", "NetCDF", ...); an InputError
+// when it knows none.
+std::string seriesFormatName(const std::filesystem::path& input);
+
+// True for inputs that are our manifest form (a folder, or a .json file).
+bool isManifestInput(const std::filesystem::path& input);
+
+}  // namespace tstyles

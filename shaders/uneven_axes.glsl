@@ -1,0 +1,61 @@
+// Uneven rectilinear axes (depth or pressure levels): along such an axis the time-step's
+// worldToVoxel gives the grid-local position, and the axis' node list turns it into a fractional
+// node index (binary search, then linear between the two nodes). Mirrors tstyles/data/grid_axes.h.
+layout(std430, binding = UNEVEN_AXIS_BUFFER) readonly buffer UnevenAxes {
+    ivec4 firstNode[];  // per time-step, per axis: index of its first node in axisNodes; -1: even
+} unevenAxes;
+layout(std430, binding = AXIS_NODE_BUFFER) readonly buffer AxisNodes {
+    float positions[];  // the nodes of every uneven axis, each list increasing from 0
+} axisNodes;
+
+bool isUnevenAxis(int step, int axis) {
+    return unevenAxes.firstNode[step][axis] >= 0;
+}
+
+// The fractional node index of grid-local `position` along an uneven axis; clamped to the grid.
+float nodeIndexOf(int step, int axis, float position) {
+    int first = unevenAxes.firstNode[step][axis];
+    int count = int(timeSteps.steps[step].dims[axis]);
+    // The last node at or below `position`, in [0, count - 2].
+    int low = 0;
+    int high = count - 2;
+    while (low < high) {
+        int middle = (low + high + 1) / 2;
+        if (axisNodes.positions[first + middle] <= position) low = middle;
+        else high = middle - 1;
+    }
+    float lower = axisNodes.positions[first + low];
+    float upper = axisNodes.positions[first + low + 1];
+    return clamp(float(low) + (position - lower) / (upper - lower), 0.0, float(count - 1));
+}
+
+// The grid-local position of a fractional node index along an uneven axis.
+float nodePositionOf(int step, int axis, float index) {
+    int first = unevenAxes.firstNode[step][axis];
+    int cell = clamp(int(floor(index)), 0, int(timeSteps.steps[step].dims[axis]) - 2);
+    float lower = axisNodes.positions[first + cell];
+    float upper = axisNodes.positions[first + cell + 1];
+    return mix(lower, upper, index - float(cell));
+}
+
+// worldToVoxel's result -> voxel coordinates: even axes are already node indices.
+vec3 applyUnevenAxes(int step, vec3 gridCoordinate) {
+    vec3 voxel = gridCoordinate;
+    for (int axis = 0; axis < 3; ++axis)
+        if (isUnevenAxis(step, axis)) voxel[axis] = nodeIndexOf(step, axis, gridCoordinate[axis]);
+    return voxel;
+}
+
+// Voxel coordinates -> the space worldToVoxel maps into (grid-local along uneven axes), where a
+// ray is a straight line with the same parameter t.
+vec3 unapplyUnevenAxes(int step, vec3 voxel) {
+    vec3 gridCoordinate = voxel;
+    for (int axis = 0; axis < 3; ++axis)
+        if (isUnevenAxis(step, axis)) gridCoordinate[axis] = nodePositionOf(step, axis, voxel[axis]);
+    return gridCoordinate;
+}
+
+// The largest coordinate worldToVoxel gives inside the grid: dims - 1, or the last node's position.
+vec3 gridCoordinateLimit(int step) {
+    return unapplyUnevenAxes(step, timeSteps.steps[step].dims.xyz - 1.0);
+}

@@ -1,0 +1,31 @@
+// The ray in the voxel coordinates of each time-step it meets, set up once per pixel: where a
+// time-step's world -> voxel map is affine (TimeStepInfo.flags.x), a sample's voxel position is
+// origin + t * direction, with no matrix read or product per sample. Other grids take the general
+// voxelCoordinate() at every sample.
+vec3 activeVoxelOrigin[MAX_TIME_STEPS];     // voxel coordinates at t = 0 (affine time-steps)
+vec3 activeVoxelDirection[MAX_TIME_STEPS];  // voxel units per unit of t (affine time-steps)
+vec3 activeVoxelUpper[MAX_TIME_STEPS];      // dims - 1: where the clamp to the grid ends
+bool activeAffine[MAX_TIME_STEPS];
+
+// After extractVolumeOverlap: fills the arrays above for the ray's list of time-steps.
+void prepareVoxelRays(Ray ray) {
+    for (int i = 0; i < activeCount; ++i) {
+        int step = activeSteps[i];
+        mat4 worldToVoxel = timeSteps.steps[step].worldToVoxel;
+        activeAffine[i] = timeSteps.steps[step].flags.x != 0;
+        activeVoxelOrigin[i] = (worldToVoxel * vec4(ray.origin, 1.0)).xyz;
+        activeVoxelDirection[i] = mat3(worldToVoxel) * ray.direction;
+        activeVoxelUpper[i] = timeSteps.steps[step].dims.xyz - 1.0;
+    }
+}
+
+// voxelCoordinate(step, position) for the sample at ray parameter t, `slot` being the time-step's
+// place in the ray's list.
+// ALL_AFFINE (volume_sampling.glsl) leaves the general path out of the program.
+
+vec3 voxelAtSample(int slot, int step, vec3 position, float t) {
+#if !ALL_AFFINE
+    if (!activeAffine[slot]) return voxelCoordinate(step, position);
+#endif
+    return clamp(activeVoxelOrigin[slot] + t * activeVoxelDirection[slot], vec3(0.0), activeVoxelUpper[slot]);
+}

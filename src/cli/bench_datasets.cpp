@@ -1,0 +1,35 @@
+// The dataset table of the benchmark matrix (bench_datasets.h).
+#include "bench_datasets.h"
+
+#include <algorithm>
+
+namespace tstyles::cli {
+
+const std::vector<BenchDataset>& benchDatasets() {
+    static const std::vector<BenchDataset> datasets = {
+        {"superellipsoid", "super-ellipsoid, 10 x 64^3, partial overlap", "figure4-"},
+        {"superellipsoid-aligned", "super-ellipsoid, 10 steps on one 256x128x64 grid, fully aligned", "figure4-"},
+        {"hurricane", "hurricane-sized, 10 x 125x125x25, fully overlapping", "figure4-"},
+        {"sonar", "sonar, 10 x 25x20x1319 beams", "figure4-"},
+    };
+    return datasets;
+}
+
+BenchDataset benchDatasetFor(const std::string& folder) {
+    const auto& datasets = benchDatasets();
+    const auto found =
+        std::find_if(datasets.begin(), datasets.end(), [&](const BenchDataset& d) { return d.folder == folder; });
+    return found != datasets.end() ? *found : BenchDataset{folder, folder, "figure4-"};
+}
+
+std::string benchSceneFor(const BenchDataset& dataset, TemporalCompositor compositor, bool styled) {
+    const std::string prefix = dataset.scenePrefix + (styled ? "styled-" : "");
+    switch (compositor) {
+        case TemporalCompositor::MaxIntensityProjection: return prefix + "temporal-mip";
+        case TemporalCompositor::Average: return prefix + "temporal-average";
+        case TemporalCompositor::MaxDensityChange: return prefix + "max-density-change";
+    }
+    return prefix + "temporal-mip";
+}
+
+}  // namespace tstyles::cli

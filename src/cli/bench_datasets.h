@@ -1,0 +1,29 @@
+// The datasets of `tstyles bench`: one line per dataset. A dataset whose folder is not under data/
+// (it arrives with another feature, or was not generated) is skipped with a printed note.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "tstyles/scene/scene.h"
+
+namespace tstyles::cli {
+
+struct BenchDataset {
+    std::string folder;       // under the bundled data directory
+    std::string description;  // what the line of the table measures
+    // The scenes that supply camera and transfer functions: <scenePrefix>[styled-]<compositor>.json
+    // in data/scenes.
+    std::string scenePrefix;
+};
+
+// The benchmark matrix's datasets, in the order of the table.
+const std::vector<BenchDataset>& benchDatasets();
+
+// The entry for a folder; folders not in the table get the super-ellipsoid's Figure 4 scenes.
+BenchDataset benchDatasetFor(const std::string& folder);
+
+// The bundled scene for a dataset and compositor, flat or with lit-sphere styles.
+std::string benchSceneFor(const BenchDataset& dataset, TemporalCompositor compositor, bool styled);
+
+}  // namespace tstyles::cli

@@ -1,0 +1,24 @@
+// The readers the opener knows, in one table: adding a format is adding one row (format_table.cpp).
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "source_series.h"
+#include "tstyles/data/read_options.h"
+
+namespace tstyles {
+
+struct SeriesFormat {
+    std::string name;
+    std::vector<std::string> extensions;                        // lower case, with the dot: ".nii.gz"
+    std::function<bool(const std::filesystem::path&)> sniff;    // recognises the content; may be empty
+    // Opens one file, or several that form one series.
+    std::function<SourceSeries(const std::vector<std::filesystem::path>&, const ReadOptions&)> open;
+};
+
+const std::vector<SeriesFormat>& seriesFormats();
+
+}  // namespace tstyles

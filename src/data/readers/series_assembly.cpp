@@ -1,0 +1,177 @@
+// The format-independent half of reading: which steps, how much memory, what resolution, what range.
+#include "series_assembly.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "../raw_values.h"
+#include "resampling.h"
+#include "tstyles/core/errors.h"
+
+namespace tstyles {
+namespace {
+
+std::string mebibytes(double bytes) {
+    std::ostringstream text;
+    text.precision(1);
+    text << std::fixed << bytes / (1024.0 * 1024.0) << " MiB";
+    return text.str();
+}
+
+std::string dimsText(const glm::ivec3& dims) {
+    return std::to_string(dims.x) + " x " + std::to_string(dims.y) + " x " + std::to_string(dims.z);
+}
+
+// Host memory (one float per voxel) plus the GPU's copy at the chosen precision.
+double bytesPerVoxel(const ReadOptions& options) {
+    return double(sizeof(float) + bytesPerDensity(options.precision));
+}
+
+double voxelCount(const glm::ivec3& dims) {
+    return double(dims.x) * double(dims.y) * double(dims.z);
+}
+
+struct Plan {
+    std::vector<std::size_t> steps;
+    std::vector<glm::ivec3> dims;  // per kept step
+};
+
+double planBytes(const Plan& plan, const ReadOptions& options) {
+    double voxels = 0.0;
+    for (const glm::ivec3& dims : plan.dims) voxels += voxelCount(dims);
+    return voxels * bytesPerVoxel(options);
+}
+
+Plan initialPlan(const SourceSeries& source, const ReadOptions& options) {
+    Plan plan;
+    plan.steps = selectedSteps(options.steps, source.steps.size());
+    if (plan.steps.empty()) {
+        throwInputError(source.file, "--steps",
+                        "selects no time-step: the file holds " + std::to_string(source.steps.size()) +
+                            " (indices 0 to " + std::to_string(source.steps.size() - 1) + ")");
+    }
+    for (std::size_t index : plan.steps)
+        plan.dims.push_back(options.resampleTo.value_or(source.steps[index].grid.dims));
+    return plan;
+}
+
+[[noreturn]] void refuse(const SourceSeries& source, const Plan& plan, const ReadOptions& options,
+                         const std::string& remedy) {
+    const glm::ivec3 largest = *std::max_element(plan.dims.begin(), plan.dims.end(), [](auto a, auto b) {
+        return voxelCount(a) < voxelCount(b);
+    });
+    throwInputError(source.file, "--max-memory",
+                    "the series needs " + mebibytes(planBytes(plan, options)) + " (" +
+                        std::to_string(plan.steps.size()) + " time-steps of up to " + dimsText(largest) +
+                        " voxels, 4 bytes each in memory and " + std::to_string(bytesPerDensity(options.precision)) +
+                        " on the GPU), more than the " + mebibytes(double(*options.maxMemoryBytes)) +
+                        " allowed: " + remedy);
+}
+
+// Fewer time-steps, spread evenly over the selection, first and last kept.
+void fitBySteps(const SourceSeries& source, Plan& plan, const ReadOptions& options) {
+    const double allowed = double(*options.maxMemoryBytes);
+    double largestStep = 0.0;
+    for (const glm::ivec3& dims : plan.dims) largestStep = std::max(largestStep, voxelCount(dims) * bytesPerVoxel(options));
+    const std::size_t keep = std::min(plan.steps.size(), std::size_t(allowed / largestStep));
+    if (keep == 0) refuse(source, plan, options, "not even one time-step fits; allow more, or add --fit resolution");
+    Plan fewer;
+    for (std::size_t j = 0; j < keep; ++j) {
+        const std::size_t pick =
+            keep == 1 ? 0 : std::size_t(std::lround(double(j) * double(plan.steps.size() - 1) / double(keep - 1)));
+        fewer.steps.push_back(plan.steps[pick]);
+        fewer.dims.push_back(plan.dims[pick]);
+    }
+    plan = fewer;
+}
+
+// Every time-step shrunk by one factor until the series fits.
+void fitByResolution(const SourceSeries& source, Plan& plan, const ReadOptions& options) {
+    const double allowed = double(*options.maxMemoryBytes);
+    double scale = std::cbrt(planBytes(plan, options) / allowed);
+    const std::vector<glm::ivec3> original = plan.dims;
+    for (int attempt = 0; attempt < 64 && planBytes(plan, options) > allowed; ++attempt) {
+        for (std::size_t index = 0; index < plan.dims.size(); ++index)
+            plan.dims[index] = glm::max(glm::ivec3(2), glm::ivec3(glm::dvec3(original[index]) / scale));
+        scale *= 1.02;
+    }
+    if (planBytes(plan, options) > allowed)
+        refuse(source, plan, options, "even at 2 x 2 x 2 voxels it does not fit; allow more, or add --fit steps");
+}
+
+std::array<double, 2> rangeOf(const std::vector<float>& values) {
+    double lowest = std::numeric_limits<double>::infinity();
+    double highest = -lowest;
+    for (float value : values) {
+        if (isMissing(value)) continue;
+        lowest = std::min(lowest, double(value));
+        highest = std::max(highest, double(value));
+    }
+    const double none = std::numeric_limits<double>::quiet_NaN();
+    return lowest <= highest ? std::array<double, 2>{lowest, highest} : std::array<double, 2>{none, none};
+}
+
+std::array<double, 2> rangeFromData(const SourceSeries& source, const Series& series) {
+    double lowest = std::numeric_limits<double>::infinity();
+    double highest = -lowest;
+    for (const TimeStep& step : series.steps) {
+        if (std::isnan(step.rawRange[0])) continue;
+        lowest = std::min(lowest, step.rawRange[0]);
+        highest = std::max(highest, step.rawRange[1]);
+    }
+    if (!(lowest <= highest))
+        throwInputError(source.file, "", "every value of the chosen time-steps is missing: there is nothing to show");
+    if (lowest == highest) {
+        std::ostringstream value;
+        value << lowest;
+        throwInputError(source.file, "--range",
+                        "every value of the chosen time-steps is " + value.str() +
+                            ", so no range can be derived: give --range LOW:HIGH");
+    }
+    return {lowest, highest};
+}
+
+}  // namespace
+
+Series assembleRawSeries(const SourceSeries& source, const ReadOptions& options) {
+    Plan plan = initialPlan(source, options);
+    if (options.maxMemoryBytes && planBytes(plan, options) > double(*options.maxMemoryBytes)) {
+        if (options.fit == MemoryFit::Refuse)
+            refuse(source, plan, options, "allow more, or add --fit resolution or --fit steps");
+        if (options.fit == MemoryFit::Steps) fitBySteps(source, plan, options);
+        else fitByResolution(source, plan, options);
+    }
+
+    Series series;
+    series.name = source.name;
+    series.manifestPath = source.file;
+    for (std::size_t kept = 0; kept < plan.steps.size(); ++kept) {
+        const SourceStep& from = source.steps[plan.steps[kept]];
+        TimeStep step;
+        step.time = from.time;
+        step.placement = from.placement;
+        step.sourceType = from.type;
+        step.valuesFile = from.file;
+        std::vector<float> values = source.readStep(plan.steps[kept]);
+        if (plan.dims[kept] == from.grid.dims) {
+            step.grid = from.grid;
+        } else {
+            step.grid = resampledGrid(from.grid, plan.dims[kept]);
+            values = resampleValues(values, from.grid, plan.dims[kept]);
+        }
+        step.rawRange = rangeOf(values);
+        step.density = std::move(values);
+        series.steps.push_back(std::move(step));
+    }
+    series.valueRange = options.valueRange ? *options.valueRange : rangeFromData(source, series);
+    return series;
+}
+
+Series toDensity(Series raw) {
+    for (TimeStep& step : raw.steps) normalizeToDensity(step.density, raw.valueRange);
+    return raw;
+}
+
+}  // namespace tstyles

@@ -1,0 +1,109 @@
+// Which reader: a manifest by its folder or .json, any other format by the format table.
+#include "tstyles/data/series_opener.h"
+
+#include <algorithm>
+
+#include "format_table.h"
+#include "series_assembly.h"
+#include "tstyles/core/errors.h"
+#include "tstyles/data/manifest.h"
+
+namespace tstyles {
+namespace {
+
+std::string lowercaseName(const std::filesystem::path& file) {
+    std::string name = file.filename().string();
+    for (char& c : name) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return name;
+}
+
+bool endsWith(const std::string& text, const std::string& suffix) {
+    return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+const SeriesFormat& formatOf(const std::filesystem::path& input) {
+    std::error_code error;
+    if (!std::filesystem::exists(input, error)) throwInputError(input, "", "no such file or folder");
+    const std::string name = lowercaseName(input);
+    for (const SeriesFormat& format : seriesFormats())
+        for (const std::string& extension : format.extensions)
+            if (endsWith(name, extension)) return format;
+    for (const SeriesFormat& format : seriesFormats())
+        if (format.sniff && format.sniff(input)) return format;
+    std::string known;
+    for (const SeriesFormat& format : seriesFormats()) {
+        known += ", " + format.name + " (";
+        for (std::size_t index = 0; index < format.extensions.size(); ++index)
+            known += (index ? " " : "") + format.extensions[index];
+        known += ")";
+    }
+    throwInputError(input, "", "unknown format: neither its name nor its first bytes match a series manifest (.json or folder)" + known);
+}
+
+// A manifest is already prepared: the reading options have nothing to choose in it.
+void rejectReadingOptions(const std::filesystem::path& manifest, const ReadOptions& options) {
+    const auto reject = [&](bool given, const char* option) {
+        if (given)
+            throwInputError(manifest, option,
+                            "applies to NetCDF, NIfTI, NRRD and Isabel files, not to a tstyles manifest");
+    };
+    reject(!options.variable.empty(), "--var");
+    reject(!options.timeDimension.empty(), "--time-dim");
+    reject(options.indexAxes, "--index-axes");
+    reject(options.steps.has_value(), "--steps");
+    reject(options.valueRange.has_value(), "--range");
+    reject(options.resampleTo.has_value(), "--resample");
+    reject(options.rawDims.has_value(), "--dims");
+    reject(options.maxMemoryBytes.has_value(), "--max-memory");
+}
+
+SourceSeries openSource(const std::vector<std::filesystem::path>& inputs, const ReadOptions& options) {
+    const SeriesFormat& format = formatOf(inputs.front());
+    for (const auto& input : inputs)
+        if (&formatOf(input) != &format)
+            throwInputError(input, "", "is not " + format.name + " like " + inputs.front().string() +
+                                           ": a series is read from files of one format");
+    return format.open(inputs, options);
+}
+
+}  // namespace
+
+bool isManifestInput(const std::filesystem::path& input) {
+    std::error_code error;
+    return std::filesystem::is_directory(input, error) || endsWith(lowercaseName(input), ".json");
+}
+
+std::string seriesFormatName(const std::filesystem::path& input) {
+    return isManifestInput(input) ? "tstyles manifest" : formatOf(input).name;
+}
+
+Series openRawSeries(const std::vector<std::filesystem::path>& inputs, const ReadOptions& options) {
+    if (inputs.empty()) throw std::invalid_argument("openRawSeries: no input");
+    for (const auto& input : inputs)
+        if (isManifestInput(input))
+            throwInputError(input, "", "is a tstyles manifest, not a file to read into one");
+    const SourceSeries source = openSource(inputs, options);
+    Series series = assembleRawSeries(source, options);
+    series.precision = options.precision;
+    series.sourceFormat = source.format;
+    return series;
+}
+
+Series openSeries(const std::vector<std::filesystem::path>& inputs, const ReadOptions& options) {
+    if (inputs.empty()) throw std::invalid_argument("openSeries: no input");
+    if (isManifestInput(inputs.front())) {
+        if (inputs.size() > 1)
+            throwInputError(inputs[1], "", "a tstyles manifest is a whole series: give it alone");
+        rejectReadingOptions(inputs.front(), options);
+        Series series = loadSeries(inputs.front());
+        series.precision = options.precision;
+        return series;
+    }
+    return toDensity(openRawSeries(inputs, options));
+}
+
+Series openSeries(const std::filesystem::path& input, const ReadOptions& options) {
+    return openSeries(std::vector<std::filesystem::path>{input}, options);
+}
+
+}  // namespace tstyles

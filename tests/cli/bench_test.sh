@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# End-to-end: `tstyles bench` on tiny images: the matrix skips a dataset folder that is not there
+# with a note, the scaling run generates longer super-ellipsoid series and reports each n, and
+# --json writes the same cases.
+# Usage: bench_test.sh TSTYLES SOURCE_DIR SCRATCH_ROOT CASE (see cli_test_lib.sh).
+source "$(dirname "${BASH_SOURCE[0]}")/cli_test_lib.sh"
+
+# Rows of the table: "<dataset> <compositor> <n> <size> ..." for the three compositors.
+expect_rows() {
+    local dataset=$1 steps=$2 size=$3
+    for compositor in temporal-mip temporal-average temporal-max-change; do
+        grep -qE "^$dataset +$compositor +$steps +$size " "$OUT_FILE" ||
+            fail "no row for $dataset, $compositor, n = $steps, size $size"
+    done
+}
+
+case_matrix_skips_missing_dataset() {
+    run_tstyles -- bench --sizes 24 --frames 1 --warmup 0 --datasets superellipsoid no-such-dataset
+    expect_exit 0
+    expect_stderr_contains "note: skipping dataset no-such-dataset"
+    expect_rows superellipsoid 10 24
+    grep -q "no-such-dataset" "$OUT_FILE" && fail "the missing dataset has a row"
+    return 0
+}
+
+case_no_dataset_there() {
+    run_tstyles -- bench --sizes 24 --frames 1 --warmup 0 --datasets no-such-dataset
+    expect_exit 2
+    expect_stderr_contains "none of the datasets is there"
+}
+
+case_scaling_json() {
+    run_tstyles -- bench --scaling 12 --sizes 24 --frames 1 --warmup 0 --json "$SCRATCH/scaling.json"
+    expect_exit 0
+    expect_rows superellipsoid-x12 12 24
+    expect_rows superellipsoid-aligned-x12 12 24
+    [ -s "$SCRATCH/scaling.json" ] || fail "no JSON written"
+    local cases
+    cases=$(grep -c '"time_steps": 12' "$SCRATCH/scaling.json")
+    [ "$cases" -eq 6 ] || fail "expected 6 cases of 12 time-steps in the JSON, found $cases"
+}
+
+run_case
