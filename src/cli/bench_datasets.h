@@ -15,6 +15,10 @@ struct BenchDataset {
     // The scenes that supply camera and transfer functions: <scenePrefix>[styled-]<compositor>.json
     // in data/scenes.
     std::string scenePrefix;
+    // A dataset with scenes of its own (already styled, used with and without --styled) names them
+    // here instead: one for temporal MIP and average (index TSTF), one for max density change.
+    std::string indexScene;
+    std::string changeScene;
 };
 
 // The benchmark matrix's datasets, in the order of the table.
