@@ -13,6 +13,7 @@
 #include "styles.glsl"
 #include "overlap_extraction.glsl"
 #include "voxel_rays.glsl"
+#include "packed_time_steps.glsl"
 #include "temporal_compositor.glsl"
 
 uniform float stepLength;       // world units between samples

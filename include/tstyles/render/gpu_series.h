@@ -14,6 +14,7 @@
 #include "tstyles/render/atlas_layout.h"
 #include "tstyles/render/brick_occupancy.h"
 #include "tstyles/render/gpu_structured_grids.h"
+#include "tstyles/render/packed_aligned_atlas.h"
 
 namespace tstyles {
 
@@ -37,7 +38,10 @@ public:
     bool allAffine() const { return allAffine_; }
     // True when the density atlas holds (density * validity, validity) pairs.
     bool hasMissingValues() const { return hasMissingValues_; }
-    // Bytes of texture memory: the density atlas, the mask atlas.
+    // Fully aligned series (suitsPackedAtlas): four time-steps per texel, next to the atlas above;
+    // null for other series.
+    const PackedAlignedAtlas* packedAtlas() const { return packedAtlas_ ? &*packedAtlas_ : nullptr; }
+    // Bytes of texture memory: the density atlas, the mask atlas, the packed atlas.
     std::size_t textureBytes() const;
 
     // Marks each brick visible or empty under the STF (its baked table), for empty-space skipping.
@@ -61,6 +65,7 @@ private:
     std::vector<BrickGrid> brickGrids_;
     AtlasLayout occupancyLayout_;
     Texture occupancyAtlas_;
+    std::optional<PackedAlignedAtlas> packedAtlas_;
     Buffer timeStepTable_;
     Buffer proxyTable_;
     std::optional<GpuStructuredGrids> structuredGrids_;
