@@ -55,8 +55,9 @@ class Raycaster {
 public:
     explicit Raycaster(const ShaderLibrary& shaders);
 
-    // Draws into the currently bound framebuffer; series, transfer tables and entry/exit buffers
-    // must be bound.
+    // Draws into the currently bound framebuffer, which must hold the premultiplied background:
+    // pixels whose ray meets no time-step are discarded. Series, transfer tables and entry/exit
+    // buffers must be bound.
     void draw(const RaycastParameters& parameters);
     // Counters of the last draw with collectStatistics (waits for the GPU).
     RaycastStatistics lastStatistics() const;
