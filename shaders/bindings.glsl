@@ -8,6 +8,8 @@ const int GRADIENT_TSTF_UNIT = 5;
 const int STYLE_UNIT = 6;
 const int OCCUPANCY_UNIT = 7;
 const int INVERSE_MAP_UNIT = 8;
+const int PACKED_ATLAS_UNIT = 9;
+const int PACKED_OCCUPANCY_UNIT = 10;
 
 #define TIME_STEP_BUFFER 0
 #define PROXY_BUFFER 1
@@ -19,6 +21,7 @@ const int INVERSE_MAP_UNIT = 8;
 #define UNEVEN_AXIS_BUFFER 7
 #define AXIS_NODE_BUFFER 8
 #define BEAM_ANGLE_BUFFER 9
+#define PACKED_GROUP_BUFFER 10
 
 // Entry buffers are cleared to NO_ENTRY and exit buffers to NO_EXIT; a pixel whose ray misses a
 // proxy keeps them.

@@ -13,6 +13,7 @@
 #include "styles.glsl"
 #include "overlap_extraction.glsl"
 #include "voxel_rays.glsl"
+#include "packed_time_steps.glsl"
 #include "temporal_compositor.glsl"
 
 uniform float stepLength;       // world units between samples
@@ -44,6 +45,10 @@ layout(location = 0) out vec4 fragmentColor;  // premultiplied by alpha
 void main() {
     Ray ray = rayForPixel(gl_FragCoord.xy);
     vec2 rayDepth = extractVolumeOverlap(ivec2(gl_FragCoord.xy));
+    // A ray that meets no time-step would give the background, which the renderer has already
+    // cleared the target to. Discarding it lets llvmpipe skip the rest of the shader for a block of
+    // pixels that all miss (a branch would not: both sides run, masked).
+    if (rayDepth.x >= rayDepth.y) discard;
 #if !NAIVE_RAYCASTER
     prepareVoxelRays(ray);
 #endif

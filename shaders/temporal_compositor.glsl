@@ -31,16 +31,35 @@ struct TemporalSample {
 };
 
 // The loop over the time-steps that contain the sample at ray parameter t; `step` is the time-step.
+// DENSITY_AT_SAMPLE declares the time-step's `density` (and `atlasPosition`) and counts fetches.
 #if NAIVE_RAYCASTER
 #define FOR_EACH_TIME_STEP_AT_SAMPLE                                                             \
     for (int step = 0; step < timeStepCount; ++step) {                                           \
         if (soloTimeStep >= 0 && step != soloTimeStep) continue;                                 \
         if (!insideGrid(step, position)) continue;
+#define END_FOR_EACH_TIME_STEP }
+#elif PACKED_ALIGNED
+// Every time-step contains every sample of the ray (they share one interval): groups of four,
+// one fetch per group (packed_time_steps.glsl), counted in the compositor's `result`.
+#define FOR_EACH_TIME_STEP_AT_SAMPLE                                                             \
+    vec3 alignedVoxel = alignedVoxelAtSample(t);                                                 \
+    for (int group = 0; group < packedGroupCount; ++group) {                                     \
+        vec4 groupDensities = packedDensities(group, alignedVoxel);                              \
+        result.fetches += 1;                                                                     \
+        for (int lane = 0; lane < 4; ++lane) {                                                   \
+            int step = 4 * group + lane;                                                         \
+            if (step >= timeStepCount) break;                                                    \
+            if (soloTimeStep >= 0 && step != soloTimeStep) continue;
+#define END_FOR_EACH_TIME_STEP }}
+#define DENSITY_AT_SAMPLE                                                                        \
+    vec3 atlasPosition = vec3(0.0); /* no masks in a packed series */                            \
+    float density = groupDensities[lane];
 #else
 #define FOR_EACH_TIME_STEP_AT_SAMPLE                                                             \
     for (int i = liveBegin; i < liveEnd; ++i) {                                                  \
         if (t < activeIntervals[i].x || t > activeIntervals[i].y) continue;                      \
         int step = activeSteps[i];
+#define END_FOR_EACH_TIME_STEP }
 #endif
 
 // The time-step's voxel position at the sample, inside FOR_EACH_TIME_STEP_AT_SAMPLE.
@@ -49,8 +68,18 @@ struct TemporalSample {
 #else
 #define VOXEL_AT_SAMPLE voxelAtSample(i, step, position, t)
 #endif
+#if !PACKED_ALIGNED
+#define DENSITY_AT_SAMPLE                                                                        \
+    vec3 atlasPosition = atlasCoordinateOfVoxel(step, VOXEL_AT_SAMPLE);                          \
+    float density = sampleDensity(atlasPosition);                                                \
+    result.fetches += 1;
+#endif
 
-#if !NAIVE_RAYCASTER
+#if PACKED_ALIGNED
+float emptySpaceUntil(vec3 position, float t) {
+    return packedEmptySpaceUntil(t);
+}
+#elif !NAIVE_RAYCASTER
 // Whether all time-steps at the sample lie in empty bricks; if so, where the first brick ends.
 float emptySpaceUntil(vec3 position, float t) {
     float emptyUntil = 1.0e30;
@@ -66,7 +95,7 @@ float emptySpaceUntil(vec3 position, float t) {
         vec3 voxel = VOXEL_AT_SAMPLE;
         if (brickVisible(step, voxel)) return -1.0;
         emptyUntil = min(emptyUntil, emptyBrickEnd(step, voxel, t, position, activeVoxelDirection[i]));
-    }
+    END_FOR_EACH_TIME_STEP
     return anyStep ? emptyUntil : -1.0;
 }
 #endif
@@ -116,10 +145,8 @@ TemporalSample compositeTemporal(vec3 position, float t) {
 
     FOR_EACH_TIME_STEP_AT_SAMPLE
         if (!insideGridShape(step, position)) continue;
-        vec3 atlasPosition = atlasCoordinateOfVoxel(step, VOXEL_AT_SAMPLE);
-        float density = sampleDensity(atlasPosition);
+        DENSITY_AT_SAMPLE
         result.contributing += 1;
-        result.fetches += 1;
         // No data here: transparent, and left out of the temporal characteristic.
         if (isMissingDensity(density)) continue;
         bool inMask = insideMask(step, atlasPosition);
@@ -158,7 +185,7 @@ TemporalSample compositeTemporal(vec3 position, float t) {
             strongestDensity = density;
         }
 #endif
-    }
+    END_FOR_EACH_TIME_STEP
 
 #if TEMPORAL_COMPOSITOR == TC_MAX_INTENSITY_PROJECTION
     if (winner >= 0) {

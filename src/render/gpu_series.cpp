@@ -13,6 +13,7 @@
 #include "tstyles/data/read_options.h"
 #include "tstyles/render/bindings.h"
 #include "tstyles/render/density_texels.h"
+#include "tstyles/render/packed_aligned_atlas.h"
 #include "tstyles/render/proxy_mesh.h"
 #include "tstyles/render/uneven_axis_table.h"
 
@@ -216,6 +217,10 @@ GpuSeries::GpuSeries(const Series& series)
                        occupancyLayout_.size.z);
     occupancyAtlas_.setFilter(GL_NEAREST, GL_NEAREST);
     occupancyAtlas_.setClampToEdge();
+    if (suitsPackedAtlas(series)) {
+        packedAtlas_.emplace(series, brickGrids_.front().bricks, maxTextureSize3D());
+        requireNoOutOfMemory(series, "packed atlas");
+    }
 
     std::vector<ProxyBox> boxes;
     std::vector<ProxyMeshVertex> mesh;
@@ -248,20 +253,23 @@ GpuSeries::GpuSeries(const Series& series)
 
 std::size_t GpuSeries::textureBytes() const {
     return layout_.texelCount() * bytesPerDensity(precision_) * (hasMissingValues_ ? 2 : 1) +
-           (hasMasks_ ? layout_.texelCount() : 1) +
-           occupancyLayout_.texelCount() + structuredGrids_->gpuBytes();
+           (hasMasks_ ? layout_.texelCount() : 1) + occupancyLayout_.texelCount() + structuredGrids_->gpuBytes() +
+           (packedAtlas_ ? packedAtlas_->textureBytes() : 0);
 }
 
 void GpuSeries::updateOccupancy(const std::vector<glm::vec4>& stfTable) {
     const OpacityRangeMaximum opacity(stfTable);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    std::vector<std::vector<std::uint8_t>> visibilities;  // kept for the packed atlas' union only
     for (std::size_t index = 0; index < brickGrids_.size(); ++index) {
         const std::vector<std::uint8_t> visible = brickVisibility(brickGrids_[index], opacity);
+        if (packedAtlas_) visibilities.push_back(visible);
         const glm::ivec3 origin = occupancyLayout_.brickOrigins[index];
         const glm::ivec3 size = brickGrids_[index].bricks;
         glTextureSubImage3D(occupancyAtlas_.id(), 0, origin.x, origin.y, origin.z, size.x, size.y, size.z, GL_RED,
                             GL_UNSIGNED_BYTE, visible.data());
     }
+    if (packedAtlas_) packedAtlas_->updateOccupancy(unionOfVisibilities(visibilities));
 }
 
 void GpuSeries::bind() const {
@@ -275,6 +283,7 @@ void GpuSeries::bind() const {
     axisNodeTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kAxisNodeBuffer);
     beamAngleTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kBeamAngleBuffer);
     proxyMeshTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kProxyMeshBuffer);
+    if (packedAtlas_) packedAtlas_->bind();
 }
 
 }  // namespace tstyles

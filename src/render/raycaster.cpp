@@ -45,7 +45,8 @@ const Program& Raycaster::programFor(const RaycastParameters& parameters) {
     const int capacity = arrayCapacity(parameters.timeStepCount);
     const auto key = std::make_tuple(compositorDefine(parameters.compositor), parameters.collectStatistics,
                                      parameters.styled, parameters.naive, parameters.masks,
-                                     parameters.allAffine, parameters.structuredGrids, capacity);
+                                     parameters.allAffine, parameters.structuredGrids, parameters.packedAligned,
+                                     capacity);
     auto found = programs_.find(key);
     if (found != programs_.end()) return found->second;
     const ShaderDefines defines = {
@@ -57,6 +58,7 @@ const Program& Raycaster::programFor(const RaycastParameters& parameters) {
         {"HAS_MASKS", parameters.masks ? "1" : "0"},
         {"ALL_AFFINE", parameters.allAffine ? "1" : "0"},
         {"STRUCTURED_GRIDS", parameters.structuredGrids ? "1" : "0"},
+        {"PACKED_ALIGNED", parameters.packedAligned ? "1" : "0"},
     };
     auto program = Program::build(shaders_, {{GL_VERTEX_SHADER, "fullscreen.vert"},
                                              {GL_FRAGMENT_SHADER, "raycast.frag"}},
@@ -78,6 +80,10 @@ void Raycaster::draw(const RaycastParameters& parameters) {
     program.set("background", parameters.background);
     program.set("finalMode", finalModeValue(parameters.finalMode));
     program.set("changeRange", parameters.changeRange);
+    if (parameters.packedAligned) {
+        program.set("packedGroupCount", parameters.packedGroupCount);
+        program.set("inversePackedAtlasSize", 1.0f / glm::vec3(parameters.packedAtlasSize));
+    }
     if (parameters.styled) {
         glProgramUniform2iv(program.id(), glGetUniformLocation(program.id(), "styleTracks"), 3,
                             &parameters.styleTracks[0].x);

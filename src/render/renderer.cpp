@@ -76,6 +76,11 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     parameters.naive = options.naive;
     parameters.masks = gpuSeries_->hasMasks();
     parameters.allAffine = gpuSeries_->allAffine();
+    if (const PackedAlignedAtlas* packed = gpuSeries_->packedAtlas(); packed && options.packAligned && !options.naive) {
+        parameters.packedAligned = true;
+        parameters.packedGroupCount = packed->groupCount();
+        parameters.packedAtlasSize = packed->layout().size;
+    }
     parameters.styled = styleTextures_.anyStyled();
     parameters.styleTracks = styleTextures_.trackRanges();
     parameters.worldToView = glm::mat3(view.viewMatrix);

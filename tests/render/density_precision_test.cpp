@@ -9,6 +9,7 @@
 
 #include "render_test_support.h"
 #include "tstyles/render/gpu_series.h"
+#include "tstyles/render/packed_aligned_atlas.h"
 
 namespace tstyles::testing {
 namespace {
@@ -91,9 +92,15 @@ TEST(DensityPrecision, TextureBytesFollowTheTexelSize) {
         const std::size_t texels = byte.layout().texelCount();
         ASSERT_EQ(half.layout().texelCount(), texels);
         const std::size_t channels = withMissing ? 2 : 1;
-        // Everything but the density atlas is the same; it takes 1, 2 or 4 bytes per channel.
-        EXPECT_EQ(half.textureBytes() - byte.textureBytes(), texels * channels);
-        EXPECT_EQ(full.textureBytes() - byte.textureBytes(), 3 * texels * channels);
+        // Everything but the density atlas is the same; it takes 1, 2 or 4 bytes per channel. A
+        // 16-bit aligned series also gets the packed atlas (four time-steps a texel) next to it.
+        const auto withoutPacked = [](const GpuSeries& series) {
+            return series.textureBytes() - (series.packedAtlas() ? series.packedAtlas()->textureBytes() : 0);
+        };
+        EXPECT_EQ(byte.packedAtlas(), nullptr);
+        EXPECT_EQ(full.packedAtlas(), nullptr);
+        EXPECT_EQ(withoutPacked(half) - withoutPacked(byte), texels * channels);
+        EXPECT_EQ(withoutPacked(full) - withoutPacked(byte), 3 * texels * channels);
         std::cout << "texture bytes" << (withMissing ? " (missing values)" : "") << " for " << texels
                   << " atlas texels: 8-bit " << byte.textureBytes() << ", 16-bit " << half.textureBytes()
                   << ", 32-bit " << full.textureBytes() << "\n";

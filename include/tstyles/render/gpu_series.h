@@ -14,6 +14,7 @@
 #include "tstyles/render/atlas_layout.h"
 #include "tstyles/render/brick_occupancy.h"
 #include "tstyles/render/gpu_structured_grids.h"
+#include "tstyles/render/packed_aligned_atlas.h"
 
 namespace tstyles {
 
@@ -40,7 +41,10 @@ public:
     // The density atlas' storage: R8, R16 or R32F (RG8, RG16, RG32F with missing values), from
     // Series::precision.
     DensityPrecision precision() const { return precision_; }
-    // Bytes of texture memory: the density atlas, the mask atlas.
+    // Fully aligned series (suitsPackedAtlas): four time-steps per texel, next to the atlas above;
+    // null for other series.
+    const PackedAlignedAtlas* packedAtlas() const { return packedAtlas_ ? &*packedAtlas_ : nullptr; }
+    // Bytes of texture memory: the density atlas, the mask atlas, the packed atlas.
     std::size_t textureBytes() const;
 
     // Marks each brick visible or empty under the STF (its baked table), for empty-space skipping.
@@ -65,6 +69,7 @@ private:
     std::vector<BrickGrid> brickGrids_;
     AtlasLayout occupancyLayout_;
     Texture occupancyAtlas_;
+    std::optional<PackedAlignedAtlas> packedAtlas_;
     Buffer timeStepTable_;
     Buffer proxyTable_;
     std::optional<GpuStructuredGrids> structuredGrids_;

@@ -33,6 +33,10 @@ struct RaycastParameters {
     bool masks = false;     // whether any time-step has a segmentation mask
     bool allAffine = false; // whether every time-step's world -> voxel map is affine
     bool structuredGrids = false;  // the series has structured time-steps (inverse-map lookups compiled in)
+    // Fully aligned series: read four time-steps per fetch from the packed atlas (PackedAlignedAtlas).
+    bool packedAligned = false;
+    int packedGroupCount = 0;
+    glm::ivec3 packedAtlasSize{1};
     // Lit-sphere styles: whether any track is styled, each track's node range, the view rotation
     // and the style-image footprint of a pixel.
     bool styled = false;
@@ -51,8 +55,9 @@ class Raycaster {
 public:
     explicit Raycaster(const ShaderLibrary& shaders);
 
-    // Draws into the currently bound framebuffer; series, transfer tables and entry/exit buffers
-    // must be bound.
+    // Draws into the currently bound framebuffer, which must hold the premultiplied background:
+    // pixels whose ray meets no time-step are discarded. Series, transfer tables and entry/exit
+    // buffers must be bound.
     void draw(const RaycastParameters& parameters);
     // Counters of the last draw with collectStatistics (waits for the GPU).
     RaycastStatistics lastStatistics() const;
@@ -62,8 +67,9 @@ private:
 
     const ShaderLibrary& shaders_;
     // Keyed by compositor, statistics on/off, styled or not, naive or not, masks or not, all
-    // affine or not, structured grids or not and the time-step capacity of the shader's arrays.
-    std::map<std::tuple<int, bool, bool, bool, bool, bool, bool, int>, Program> programs_;
+    // affine or not, structured grids or not, packed or not and the time-step capacity of the
+    // shader's arrays.
+    std::map<std::tuple<int, bool, bool, bool, bool, bool, bool, bool, int>, Program> programs_;
     VertexArray emptyVertexArray_;
     Buffer statistics_;
 };

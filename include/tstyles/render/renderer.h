@@ -29,6 +29,9 @@ struct FrameOptions {
     // The naive raycaster of the benchmark's baseline: every time-step tested at every sample, no
     // skipping of empty space or of gaps between time-steps. Same image, more work.
     bool naive = false;
+    // Fully aligned series read four time-steps per fetch from the packed atlas; false sends them
+    // through the general path (per time-step fetches), for comparison. Same image.
+    bool packAligned = true;
 };
 
 class Renderer {
