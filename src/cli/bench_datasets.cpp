@@ -9,7 +9,8 @@ const std::vector<BenchDataset>& benchDatasets() {
     static const std::vector<BenchDataset> datasets = {
         {"superellipsoid", "super-ellipsoid, 10 x 64^3, partial overlap", "figure4-"},
         {"superellipsoid-aligned", "super-ellipsoid, 10 steps on one 256x128x64 grid, fully aligned", "figure4-"},
-        {"hurricane", "hurricane-sized, 10 x 125x125x25, fully overlapping", "figure4-"},
+        {"hurricane", "synthetic hurricane, 10 x 125x125x25, fully overlapping", "", "figure5-focus-step5",
+         "figure6-left-max-density-change"},
         {"sonar", "sonar, 10 x 25x20x1319 beams", "figure4-"},
     };
     return datasets;
@@ -23,6 +24,8 @@ BenchDataset benchDatasetFor(const std::string& folder) {
 }
 
 std::string benchSceneFor(const BenchDataset& dataset, TemporalCompositor compositor, bool styled) {
+    if (dataset.hasOwnScenes())
+        return compositor == TemporalCompositor::MaxDensityChange ? dataset.changeScene : dataset.indexScene;
     const std::string prefix = dataset.scenePrefix + (styled ? "styled-" : "");
     switch (compositor) {
         case TemporalCompositor::MaxIntensityProjection: return prefix + "temporal-mip";
