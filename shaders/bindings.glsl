@@ -15,9 +15,10 @@ const int INVERSE_MAP_UNIT = 8;
 #define STATISTICS_BUFFER 3
 #define STYLE_NODE_BUFFER 4
 #define STRUCTURED_GRID_BUFFER 5
-#define BOUNDARY_MESH_BUFFER 6
+#define PROXY_MESH_BUFFER 6
 #define UNEVEN_AXIS_BUFFER 7
 #define AXIS_NODE_BUFFER 8
+#define BEAM_ANGLE_BUFFER 9
 
 // Entry buffers are cleared to NO_ENTRY and exit buffers to NO_EXIT; a pixel whose ray misses a
 // proxy keeps them.

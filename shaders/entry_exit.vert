@@ -33,6 +33,6 @@ void main() {
     vec4 world = box.gridToWorld * vec4(local * box.extent.xyz, 1.0);
     vertexOut.worldPosition = world.xyz;
     vertexOut.worldNormal = mat3(box.gridToWorld) * normal;
-    vertexOut.layer = gl_InstanceID;
+    vertexOut.layer = int(box.extent.w);
     gl_Position = viewProjection * world;
 }

@@ -1,16 +1,9 @@
 #version 450 core
-// Entry/exit buffer generation, step 1 for structured grids: the vertices of the grids' boundary
-// faces, pulled from the mesh buffer by gl_VertexID (world positions, each with its layer).
+// Entry/exit buffer generation, step 1 for proxy meshes (beam fans, the boundary faces of
+// structured grids): vertex gl_VertexID of the mesh of every such grid, drawn in one call; the
+// geometry and fragment stages are the boxes'.
 #include "bindings.glsl"
-
-struct BoundaryVertex {
-    vec4 positionLayer;  // xyz: world position; w: entry/exit layer
-    vec4 normal;         // xyz: world normal, pointing out of the grid
-};
-
-layout(std430, binding = BOUNDARY_MESH_BUFFER) readonly buffer BoundaryMesh {
-    BoundaryVertex vertices[];
-} boundary;
+#include "proxy_mesh.glsl"
 
 uniform mat4 viewProjection;
 
@@ -21,9 +14,9 @@ out VertexData {
 } vertexOut;
 
 void main() {
-    BoundaryVertex vertex = boundary.vertices[gl_VertexID];
-    vertexOut.worldPosition = vertex.positionLayer.xyz;
+    ProxyVertex vertex = proxyMesh.vertices[gl_VertexID];
+    vertexOut.worldPosition = vertex.position.xyz;
     vertexOut.worldNormal = vertex.normal.xyz;
-    vertexOut.layer = int(vertex.positionLayer.w + 0.5);
-    gl_Position = viewProjection * vec4(vertex.positionLayer.xyz, 1.0);
+    vertexOut.layer = int(vertex.position.w);
+    gl_Position = viewProjection * vec4(vertex.position.xyz, 1.0);
 }

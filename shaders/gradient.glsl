@@ -1,10 +1,16 @@
 // Density gradients for lit-sphere shading: central differences one voxel apart in the time-step's
 // own grid (one-sided at its faces), turned into world space through the grid's placement and
-// spacing, so anisotropic, uneven and rotated grids shade correctly.
+// spacing, so anisotropic, uneven and rotated grids shade correctly; structured and beam grids
+// have their own (structured_gradient.glsl, beamWorldGradient below).
 #include "structured_gradient.glsl"
 
+vec3 beamWorldGradient(int step, vec3 worldPosition);
+
 vec3 worldGradient(int step, vec3 worldPosition) {
+#if !ALL_AFFINE
     if (isStructured(step)) return structuredWorldGradient(step, worldPosition);
+    if (isBeamGrid(step)) return beamWorldGradient(step, worldPosition);
+#endif
     vec3 voxel = voxelCoordinate(step, worldPosition);
     vec3 upperLimit = timeSteps.steps[step].dims.xyz - 1.0;
     float centre = MISSING_DENSITY;  // read only when a neighbour has no data
@@ -29,13 +35,32 @@ vec3 worldGradient(int step, vec3 worldPosition) {
             }
         }
         // The span in worldToVoxel's coordinates: voxels, or grid-local units along an uneven axis.
+#if ALL_AFFINE
+        float span = upper[axis] - lower[axis];
+#else
         float span = isUnevenAxis(step, axis)
                          ? nodePositionOf(step, axis, upper[axis]) - nodePositionOf(step, axis, lower[axis])
                          : upper[axis] - lower[axis];
+#endif
         float difference = upperDensity - lowerDensity;
         bool bothHaveData = !isMissingDensity(upperDensity) && !isMissingDensity(lowerDensity);
         gradient[axis] = span > 0.0 && bothHaveData ? difference / span : 0.0;
     }
     // worldToVoxel's coordinates = M * world, so d(density)/d(world) = transpose(M) * their gradient.
     return transpose(mat3(timeSteps.steps[step].worldToVoxel)) * gradient;
+}
+
+// A beam grid's voxel coordinates are not affine in world position, so its gradient is taken by
+// central differences along the world axes, one range spacing to either side.
+vec3 beamWorldGradient(int step, vec3 worldPosition) {
+    float h = timeSteps.steps[step].beamRange.z;
+    vec3 gradient;
+    for (int axis = 0; axis < 3; ++axis) {
+        vec3 offset = vec3(0.0);
+        offset[axis] = h;
+        gradient[axis] = (sampleDensity(atlasCoordinate(step, worldPosition + offset)) -
+                          sampleDensity(atlasCoordinate(step, worldPosition - offset))) /
+                         (2.0 * h);
+    }
+    return gradient;
 }

@@ -44,6 +44,6 @@ vec3 structuredVoxelCoordinate(int step, vec3 worldPosition) {
 // Whether a sample inside a time-step's entry/exit interval is inside its grid: always for
 // rectilinear grids; for structured grids the interval of a concave grid can span a gap, which
 // the inverse map marks as outside (to within one map texel of the boundary).
-bool insideGrid(int step, vec3 worldPosition) {
+bool insideStructuredGrid(int step, vec3 worldPosition) {
     return !isStructured(step) || inverseMapAt(step, worldPosition).a > 1.0e-3;
 }

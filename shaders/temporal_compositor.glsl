@@ -35,10 +35,7 @@ struct TemporalSample {
 #define FOR_EACH_TIME_STEP_AT_SAMPLE                                                             \
     for (int step = 0; step < timeStepCount; ++step) {                                           \
         if (soloTimeStep >= 0 && step != soloTimeStep) continue;                                 \
-        vec3 rawVoxel = (timeSteps.steps[step].worldToVoxel * vec4(position, 1.0)).xyz;          \
-        if (any(lessThan(rawVoxel, vec3(0.0))) ||                                                \
-            any(greaterThan(rawVoxel, gridCoordinateLimit(step))))                              \
-            continue;
+        if (!insideGrid(step, position)) continue;
 #else
 #define FOR_EACH_TIME_STEP_AT_SAMPLE                                                             \
     for (int i = liveBegin; i < liveEnd; ++i) {                                                  \
@@ -59,16 +56,16 @@ float emptySpaceUntil(vec3 position, float t) {
     float emptyUntil = 1.0e30;
     bool anyStep = false;
     FOR_EACH_TIME_STEP_AT_SAMPLE
-        vec3 voxel = VOXEL_AT_SAMPLE;
-        if (insideGrid(step, position) && brickVisible(step, voxel)) return -1.0;
-        // The jump to the brick's exit needs voxel positions linear in t; elsewhere the ray only
-        // skips this sample's work.
-#if ALL_AFFINE
-        emptyUntil = min(emptyUntil, brickExit(step, voxel, t, activeVoxelDirection[i]));
-#else
-        emptyUntil = min(emptyUntil, hasStraightGridRays(step) ? brickExit(step, voxel, t, activeVoxelDirection[i]) : t);
-#endif
         anyStep = true;
+        // Outside a beam fan or a structured grid but inside its proxy: nothing here, and no jump
+        // past this sample.
+        if (!insideGridShape(step, position)) {
+            emptyUntil = min(emptyUntil, t);
+            continue;
+        }
+        vec3 voxel = VOXEL_AT_SAMPLE;
+        if (brickVisible(step, voxel)) return -1.0;
+        emptyUntil = min(emptyUntil, emptyBrickEnd(step, voxel, t, position, activeVoxelDirection[i]));
     }
     return anyStep ? emptyUntil : -1.0;
 }
@@ -118,7 +115,7 @@ TemporalSample compositeTemporal(vec3 position, float t) {
 #endif
 
     FOR_EACH_TIME_STEP_AT_SAMPLE
-        if (!insideGrid(step, position)) continue;
+        if (!insideGridShape(step, position)) continue;
         vec3 atlasPosition = atlasCoordinateOfVoxel(step, VOXEL_AT_SAMPLE);
         float density = sampleDensity(atlasPosition);
         result.contributing += 1;

@@ -4,6 +4,7 @@ layout(binding = MASK_ATLAS_UNIT) uniform sampler3D maskAtlas;
 uniform vec3 inverseAtlasSize;
 
 #include "structured_grid.glsl"
+#include "beam_grid.glsl"
 
 // 1 when every time-step of the series has an affine world -> voxel map (TimeStepInfo.flags.x):
 // the general paths (uneven axes, other grid kinds) are left out of the program, since llvmpipe
@@ -16,9 +17,39 @@ uniform vec3 inverseAtlasSize;
 // on texel centres, and clamping to [0, dims - 1] keeps trilinear filtering inside the time-step's
 // own brick, so bricks need no border between them. Uneven axes go through their node lists.
 vec3 voxelCoordinate(int step, vec3 worldPosition) {
+    vec3 voxel = (timeSteps.steps[step].worldToVoxel * vec4(worldPosition, 1.0)).xyz;
+#if !ALL_AFFINE
     if (isStructured(step)) return structuredVoxelCoordinate(step, worldPosition);
-    vec3 voxel = applyUnevenAxes(step, (timeSteps.steps[step].worldToVoxel * vec4(worldPosition, 1.0)).xyz);
+    if (isBeamGrid(step))
+        voxel = beamVoxel(step, voxel).xyz;
+    else
+        voxel = applyUnevenAxes(step, voxel);
+#endif
     return clamp(voxel, vec3(0.0), timeSteps.steps[step].dims.xyz - 1.0);
+}
+
+// Whether a sample within the time-step's entry/exit interval lies in its grid: always for boxes,
+// whose proxy is exact; a beam fan's proxy encloses it only conservatively, and the interval of a
+// concave structured grid can span a gap. Outside, the time-step contributes nothing.
+bool insideGridShape(int step, vec3 worldPosition) {
+#if ALL_AFFINE
+    return true;
+#else
+    if (isStructured(step)) return insideStructuredGrid(step, worldPosition);
+    if (!isBeamGrid(step)) return true;
+    return beamVoxel(step, (timeSteps.steps[step].worldToVoxel * vec4(worldPosition, 1.0)).xyz).w > 0.5;
+#endif
+}
+
+// Whether a sample lies in the time-step's grid at all (for the naive raycaster, which has no
+// entry/exit intervals).
+bool insideGrid(int step, vec3 worldPosition) {
+#if !ALL_AFFINE
+    if (isStructured(step) || isBeamGrid(step)) return insideGridShape(step, worldPosition);
+#endif
+    vec3 gridCoordinate = (timeSteps.steps[step].worldToVoxel * vec4(worldPosition, 1.0)).xyz;
+    return all(greaterThanEqual(gridCoordinate, vec3(0.0))) &&
+           all(lessThanEqual(gridCoordinate, gridCoordinateLimit(step)));
 }
 
 vec3 atlasCoordinateOfVoxel(int step, vec3 voxel) {
@@ -78,16 +109,11 @@ bool brickVisible(int step, vec3 voxel) {
     return texelFetch(occupancyAtlas, texel, 0).r > 0.5;
 }
 
-// Whether a ray is a straight line, with the ray's own parameter, in the space worldToVoxel maps
-// into (voxels, grid-local along uneven axes): rectilinear grids, even or uneven.
-bool hasStraightGridRays(int step) {
-    return !isStructured(step);
-}
-
 // The ray parameter at which a ray at `t`, at `voxel` in the time-step's grid and moving by
 // `direction` per unit of t in worldToVoxel's space, leaves the brick it is in. Only for
-// time-steps with hasStraightGridRays; the brick's faces are taken in that space too (node index
-// to position is monotonic along uneven axes).
+// rectilinear grids, where a ray is a straight line in that space with the ray's own parameter;
+// the brick's faces are taken in that space too (node index to position is monotonic along uneven
+// axes).
 float brickExit(int step, vec3 voxel, float t, vec3 direction) {
     vec3 lowerVoxel = brickOf(step, voxel) * BRICK_SIZE;
     vec3 upperVoxel = min(lowerVoxel + BRICK_SIZE, timeSteps.steps[step].dims.xyz - 1.0);
@@ -106,4 +132,20 @@ float brickExit(int step, vec3 voxel, float t, vec3 direction) {
         exit = min(exit, (bound - voxel[axis]) / direction[axis]);
     }
     return t + max(exit, 0.0);
+}
+
+// Where a ray may jump to from `t` when the time-step's brick there is empty: the brick's exit, or
+// for a beam grid a conservative step (the distance to the brick's nearest bounding plane or
+// sphere); structured grids get no jump. `direction` is the ray's direction in worldToVoxel's space.
+float emptyBrickEnd(int step, vec3 voxel, float t, vec3 worldPosition, vec3 direction) {
+#if !ALL_AFFINE
+    if (isStructured(step)) return t;
+    if (isBeamGrid(step)) {
+        vec3 brickLower = brickOf(step, voxel) * BRICK_SIZE;
+        vec3 brickUpper = min(brickLower + BRICK_SIZE, timeSteps.steps[step].dims.xyz - 1.0);
+        vec3 local = (timeSteps.steps[step].worldToVoxel * vec4(worldPosition, 1.0)).xyz;
+        return beamBrickExit(step, brickLower, brickUpper, local, t);
+    }
+#endif
+    return brickExit(step, voxel, t, direction);
 }

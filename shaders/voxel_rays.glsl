@@ -2,7 +2,7 @@
 // time-step's world -> voxel map is affine (TimeStepInfo.flags.x), a sample's voxel position is
 // origin + t * direction, with no matrix read or product per sample. Along uneven rectilinear axes
 // that is the grid-local position, which the axis' node lookup turns into a node index; structured
-// grids take the general voxelCoordinate() at every sample.
+// and beam grids take the general voxelCoordinate() at every sample.
 vec3 activeVoxelOrigin[MAX_TIME_STEPS];     // voxel coordinates at t = 0 (affine time-steps)
 vec3 activeVoxelDirection[MAX_TIME_STEPS];  // voxel units per unit of t (affine time-steps)
 vec3 activeVoxelUpper[MAX_TIME_STEPS];      // dims - 1: where the clamp to the grid ends
@@ -28,7 +28,7 @@ vec3 voxelAtSample(int slot, int step, vec3 position, float t) {
     vec3 voxel = activeVoxelOrigin[slot] + t * activeVoxelDirection[slot];
 #if !ALL_AFFINE
     if (!activeAffine[slot]) {
-        if (isStructured(step)) return voxelCoordinate(step, position);
+        if (isStructured(step) || isBeamGrid(step)) return voxelCoordinate(step, position);
         voxel = applyUnevenAxes(step, voxel);
     }
 #endif

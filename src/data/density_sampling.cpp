@@ -1,10 +1,11 @@
-// Trilinear density lookups in a time-step's grid (rectilinear or structured), in world coordinates.
+// Trilinear density lookups in a time-step's grid (box, structured grid or beam fan), in world coordinates.
 #include "tstyles/data/density_sampling.h"
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
 
+#include "tstyles/data/beam_geometry.h"
 #include "tstyles/data/grid_axes.h"
 #include "tstyles/data/structured_point_location.h"
 
@@ -49,6 +50,12 @@ std::optional<double> sampleStructured(const TimeStep& step, const StructuredPoi
     return interpolateAtVoxel(step, step.dims(), *computational);
 }
 
+// Fractional voxel coordinates of a grid-local position, unclamped; none outside a beam fan.
+std::optional<glm::dvec3> voxelOf(const TimeStep& step, const glm::dvec3& local) {
+    if (step.isBeam()) return beamVoxel(step.beam(), local);
+    return localToVoxel(step.rectilinear(), local);
+}
+
 }  // namespace
 
 std::optional<double> sampleDensity(const TimeStep& step, const glm::dvec3& world) {
@@ -57,14 +64,16 @@ std::optional<double> sampleDensity(const TimeStep& step, const glm::dvec3& worl
         // Exact point location (no inverse map): a locator per call is fine for a pick.
         return sampleStructured(step, StructuredPointLocator(*structured), world);
     }
-    const RectilinearGrid& grid = step.rectilinear();
-    glm::dvec3 voxel = localToVoxel(grid, localPosition(step, world));
-    const glm::dvec3 last = glm::dvec3(grid.dims - 1);
+    const glm::ivec3 dims = step.dims();
+    const std::optional<glm::dvec3> voxelOrNone = voxelOf(step, localPosition(step, world));
+    if (!voxelOrNone) return std::nullopt;
+    glm::dvec3 voxel = *voxelOrNone;
+    const glm::dvec3 last = glm::dvec3(dims - 1);
     for (int axis = 0; axis < 3; ++axis) {
         if (voxel[axis] < -kBoundaryTolerance || voxel[axis] > last[axis] + kBoundaryTolerance) return std::nullopt;
         voxel[axis] = std::clamp(voxel[axis], 0.0, last[axis]);
     }
-    return interpolateAtVoxel(step, grid.dims, voxel);
+    return interpolateAtVoxel(step, dims, voxel);
 }
 
 std::vector<std::optional<double>> temporalProfile(const Series& series, const glm::dvec3& world) {

@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "beam_grid_field.h"
 #include "manifest_field.h"
 #include "raw_values.h"
 #include "structured_grid_files.h"
@@ -140,7 +141,8 @@ Grid readGrid(const ManifestField& field, std::size_t stepIndex, StructuredGridF
     const ManifestField type = field.member("type");
     if (type.string() == "rectilinear") return readRectilinearGrid(field);
     if (type.string() == "structured") return structuredGrids.read(field, stepIndex);
-    type.fail("unknown grid type '" + type.string() + "' (known: rectilinear, structured)");
+    if (type.string() == "beam") return readBeamGrid(field);
+    type.fail("unknown grid type '" + type.string() + "' (known: rectilinear, structured, beam)");
 }
 
 Placement readPlacement(const std::optional<ManifestField>& field) {
@@ -230,14 +232,12 @@ void readStepFiles(const std::filesystem::path& manifest, std::size_t index, Ste
                    std::optional<double> missingMarker) {
     TimeStep& step = entry.step;
     // The raw files hold one value per node whatever the grid kind: only the dims matter here.
-    RectilinearGrid shape;
-    shape.dims = step.dims();
-    RawValues raw = readRawValues({manifest, entry.valuesField, index, step.valuesFile}, shape, step.sourceType,
-                                  missingMarker);
+    RawValues raw = readRawValues({manifest, entry.valuesField, index, step.valuesFile}, step.dims(),
+                                  step.sourceType, missingMarker);
     step.density = std::move(raw.values);  // still raw: normalised once the value range is known
     step.rawRange = raw.range;
     if (!entry.maskField.empty()) {
-        step.mask = readMask({manifest, entry.maskField, index, step.maskFile}, shape);
+        step.mask = readMask({manifest, entry.maskField, index, step.maskFile}, step.dims());
     }
 }
 

@@ -15,6 +15,7 @@
 
 #include "tstyles/core/atomic_file.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/data/beam_geometry.h"
 #include "tstyles/data/manifest.h"
 
 namespace tstyles {
@@ -23,7 +24,29 @@ namespace {
 using OrderedJson = nlohmann::ordered_json;
 
 glm::ivec3 dimsOf(const RawTimeStep& step) {
-    return step.structured ? step.structured->dims : step.grid.dims;
+    if (step.structured) return step.structured->dims;
+    if (step.beamGrid) return step.beamGrid->dims;
+    return step.grid.dims;
+}
+
+std::size_t voxelCountOf(const RawTimeStep& step) {
+    const glm::ivec3 dims = dimsOf(step);
+    return std::size_t(dims.x) * std::size_t(dims.y) * std::size_t(dims.z);
+}
+
+void checkWritableBeamGrid(const BeamGrid& grid, const std::string& where) {
+    const auto increasing = [](const std::vector<double>& angles, int count) {
+        if (angles.size() != std::size_t(count)) return false;
+        for (std::size_t index = 0; index < angles.size(); ++index) {
+            if (!(angles[index] > -80.0 && angles[index] < 80.0)) return false;
+            if (index > 0 && !(angles[index] > angles[index - 1])) return false;
+        }
+        return true;
+    };
+    if (!increasing(grid.azimuthDeg, grid.dims.x) || !increasing(grid.elevationDeg, grid.dims.y))
+        throw std::invalid_argument("writeSeries: " + where + "beam angles must be one per beam, increasing, in (-80, 80)");
+    if (!(grid.minRange >= 0.0 && grid.minRange < grid.maxRange && std::isfinite(grid.maxRange)))
+        throw std::invalid_argument("writeSeries: " + where + "beam range must satisfy 0 <= min < max");
 }
 
 // A RawSeries that loadSeries would reject is a bug in the caller (a generator), not bad user input.
@@ -40,7 +63,8 @@ void checkWritable(const RawSeries& series) {
         const RawTimeStep& step = series.steps[index];
         const std::string where = "time-step " + std::to_string(index) + ": ";
         if (glm::any(glm::lessThan(dimsOf(step), glm::ivec3(2)))) fail(where + "dims must be at least 2");
-        const std::size_t voxels = step.structured ? step.structured->voxelCount() : step.grid.voxelCount();
+        if (step.beamGrid) checkWritableBeamGrid(*step.beamGrid, where);
+        const std::size_t voxels = voxelCountOf(step);
         if (step.bytes.size() != voxels * bytesPerValue(step.type)) {
             fail(where + "has " + std::to_string(step.bytes.size()) + " value bytes, expected " +
                  std::to_string(voxels * bytesPerValue(step.type)));
@@ -73,12 +97,31 @@ OrderedJson vec3Json(const glm::dvec3& v) {
     return OrderedJson::array({v.x, v.y, v.z});
 }
 
+// Evenly spread beams are written as their extent, others angle by angle.
+OrderedJson beamGridJson(const BeamGrid& grid) {
+    OrderedJson json;
+    json["type"] = "beam";
+    json["dims"] = OrderedJson::array({grid.dims.x, grid.dims.y, grid.dims.z});
+    const auto angles = [&](const char* name, const std::vector<double>& values) {
+        if (areEvenBeamAngles(values))
+            json[std::string(name) + "_deg"] = OrderedJson::array({values.front(), values.back()});
+        else
+            json[std::string(name) + "_angles_deg"] = values;
+    };
+    angles("azimuth", grid.azimuthDeg);
+    angles("elevation", grid.elevationDeg);
+    json["range"] = OrderedJson::array({grid.minRange, grid.maxRange});
+    return json;
+}
+
 OrderedJson stepJson(const RawTimeStep& step, const std::string& stem, const std::string& coordinatesFile) {
     const AxisAngle rotation = toAxisAngle(step.placement.rotation);
     OrderedJson json;
     json["time"] = step.time;
     const glm::ivec3 dims = dimsOf(step);
-    if (step.structured) {
+    if (step.beamGrid) {
+        json["grid"] = beamGridJson(*step.beamGrid);
+    } else if (step.structured) {
         json["grid"] = {{"type", "structured"},
                         {"dims", OrderedJson::array({dims.x, dims.y, dims.z})},
                         {"coordinates", {{"file", coordinatesFile}}}};

@@ -14,9 +14,8 @@
 namespace tstyles {
 namespace {
 
-std::string dimsText(const RectilinearGrid& grid) {
-    return std::to_string(grid.dims.x) + " x " + std::to_string(grid.dims.y) + " x " +
-           std::to_string(grid.dims.z);
+std::string dimsText(const glm::ivec3& dims) {
+    return std::to_string(dims.x) + " x " + std::to_string(dims.y) + " x " + std::to_string(dims.z);
 }
 
 [[noreturn]] void failFile(const RawFileSource& source, const std::string& kind, const std::string& problem) {
@@ -48,21 +47,21 @@ std::vector<std::uint8_t> readExactly(const RawFileSource& source, const std::st
     return bytes;
 }
 
-std::string voxelText(std::size_t index, const RectilinearGrid& grid) {
-    const std::size_t nx = std::size_t(grid.dims.x);
-    const std::size_t ny = std::size_t(grid.dims.y);
+std::string voxelText(std::size_t index, const glm::ivec3& dims) {
+    const std::size_t nx = std::size_t(dims.x);
+    const std::size_t ny = std::size_t(dims.y);
     return std::string("(") + std::to_string(index % nx) + ", " + std::to_string((index / nx) % ny) + ", " +
            std::to_string(index / (nx * ny)) + ")";
 }
 
 }  // namespace
 
-RawValues readRawValues(const RawFileSource& source, const RectilinearGrid& grid, ValueType type,
+RawValues readRawValues(const RawFileSource& source, const glm::ivec3& dims, ValueType type,
                         std::optional<double> missingMarker) {
     const std::size_t stride = bytesPerValue(type);
-    const std::size_t count = grid.voxelCount();
+    const std::size_t count = std::size_t(dims.x) * std::size_t(dims.y) * std::size_t(dims.z);
     const std::vector<std::uint8_t> bytes =
-        readExactly(source, "value file", count * stride, dimsText(grid) + " " + toString(type) + " values");
+        readExactly(source, "value file", count * stride, dimsText(dims) + " " + toString(type) + " values");
     // Compared in the file's own precision: a float32 file stores the marker 1e35 as float(1e35).
     const bool nanIsMissing = missingMarker && std::isnan(*missingMarker);
     const float marker = missingMarker && !nanIsMissing ? float(*missingMarker) : 0.0f;
@@ -81,7 +80,7 @@ RawValues readRawValues(const RawFileSource& source, const RectilinearGrid& grid
         if (!std::isfinite(value)) {
             failFile(source, "value file",
                      std::string("holds a non-finite value (") + (std::isnan(value) ? "NaN" : "Inf") +
-                         ") at voxel (x, y, z) = " + voxelText(index, grid) +
+                         ") at voxel (x, y, z) = " + voxelText(index, dims) +
                          (std::isnan(value) ? " (declare \"missing_value\": \"NaN\" if NaN marks missing data)" : ""));
         }
         raw.values[index] = value;
@@ -94,8 +93,9 @@ RawValues readRawValues(const RawFileSource& source, const RectilinearGrid& grid
     return raw;
 }
 
-std::vector<std::uint8_t> readMask(const RawFileSource& source, const RectilinearGrid& grid) {
-    return readExactly(source, "mask file", grid.voxelCount(), dimsText(grid) + " uint8 values");
+std::vector<std::uint8_t> readMask(const RawFileSource& source, const glm::ivec3& dims) {
+    return readExactly(source, "mask file", std::size_t(dims.x) * std::size_t(dims.y) * std::size_t(dims.z),
+                       dimsText(dims) + " uint8 values");
 }
 
 std::vector<std::uint8_t> readExactBytes(const RawFileSource& source, const std::string& kind,

@@ -30,14 +30,14 @@ struct RawValues {
     std::array<double, 2> range{0.0, 0.0};
 };
 
-// Reads `grid.voxelCount()` little-endian values of `type`; the file size must match exactly.
+// Reads dims.x * dims.y * dims.z little-endian values of `type`; the file size must match exactly.
 // A value equal to `missingMarker` is missing (a NaN marker makes NaN values missing); any other
 // non-finite float32 value is an error.
-RawValues readRawValues(const RawFileSource& source, const RectilinearGrid& grid, ValueType type,
+RawValues readRawValues(const RawFileSource& source, const glm::ivec3& dims, ValueType type,
                         std::optional<double> missingMarker);
 
 // Reads one uint8 per voxel.
-std::vector<std::uint8_t> readMask(const RawFileSource& source, const RectilinearGrid& grid);
+std::vector<std::uint8_t> readMask(const RawFileSource& source, const glm::ivec3& dims);
 
 // Reads a whole file of exactly `expectedBytes` bytes (`kind` and `layout` word the size error:
 // "coordinates file", "17 x 9 x 5 nodes, 3 float32 each").

@@ -11,6 +11,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "tstyles/data/beam_geometry.h"
+
 namespace tstyles {
 
 std::string toString(ValueType type) {
@@ -86,7 +88,9 @@ std::size_t gridVoxelCount(const Grid& grid) {
 }
 
 std::string gridTypeName(const Grid& grid) {
-    return std::holds_alternative<StructuredGrid>(grid) ? "structured" : "rectilinear";
+    if (std::holds_alternative<StructuredGrid>(grid)) return "structured";
+    if (std::holds_alternative<BeamGrid>(grid)) return "beam";
+    return "rectilinear";
 }
 
 bool Series::hasMasks() const {
@@ -96,6 +100,20 @@ bool Series::hasMasks() const {
 
 Bounds Series::worldBounds(std::size_t step) const {
     const TimeStep& timeStep = steps.at(step);
+    const glm::dmat4 toWorld = timeStep.placement.gridToWorld();
+    Bounds bounds{glm::dvec3(std::numeric_limits<double>::infinity()),
+                  glm::dvec3(-std::numeric_limits<double>::infinity())};
+    auto include = [&](const glm::dvec3& local) {
+        const glm::dvec3 world(toWorld * glm::dvec4(local, 1.0));
+        bounds.lower = glm::min(bounds.lower, world);
+        bounds.upper = glm::max(bounds.upper, world);
+    };
+    if (timeStep.isBeam()) {
+        // The fan's enclosing mesh: its far cap bulges past the corners, and lies just outside it.
+        for (const Triangle& triangle : beamFanBoundary(timeStep.beam()))
+            for (const glm::dvec3& corner : triangle) include(corner);
+        return bounds;
+    }
     // Grid-local bounds: the lattice's box, or the box of a structured grid's nodes.
     glm::dvec3 localLower(0.0);
     glm::dvec3 extent(0.0);
@@ -105,16 +123,10 @@ Bounds Series::worldBounds(std::size_t step) const {
     } else {
         extent = timeStep.rectilinear().extent();
     }
-    const glm::dmat4 toWorld = timeStep.placement.gridToWorld();
-    Bounds bounds{glm::dvec3(std::numeric_limits<double>::infinity()),
-                  glm::dvec3(-std::numeric_limits<double>::infinity())};
     // A rotated box's axis-aligned bounds are reached at its corners, so eight points suffice.
     for (int corner = 0; corner < 8; ++corner) {
-        const glm::dvec3 local = localLower + glm::dvec3((corner & 1) ? extent.x : 0.0, (corner & 2) ? extent.y : 0.0,
-                                                         (corner & 4) ? extent.z : 0.0);
-        const glm::dvec3 world(toWorld * glm::dvec4(local, 1.0));
-        bounds.lower = glm::min(bounds.lower, world);
-        bounds.upper = glm::max(bounds.upper, world);
+        include(localLower + glm::dvec3((corner & 1) ? extent.x : 0.0, (corner & 2) ? extent.y : 0.0,
+                                        (corner & 4) ? extent.z : 0.0));
     }
     return bounds;
 }
@@ -136,6 +148,10 @@ double Series::finestSpacing() const {
     for (const TimeStep& step : steps) {
         if (const StructuredGrid* structured = step.structured()) {
             finest = std::min(finest, structured->finestEdge);
+            continue;
+        }
+        if (step.isBeam()) {
+            finest = std::min(finest, beamFinestSpacing(step.beam()));
             continue;
         }
         finest = std::min(finest, tstyles::finestSpacing(step.rectilinear()));

@@ -2,10 +2,12 @@
 // cost in memory.
 #include "tstyles/data/series_summary.h"
 
+#include "tstyles/data/beam_geometry.h"
 #include "tstyles/data/inverse_map.h"
 
 #include <algorithm>
 #include <cmath>
+#include <variant>
 #include <iomanip>
 #include <sstream>
 #include <vector>
@@ -79,16 +81,36 @@ std::size_t missingVoxels(const TimeStep& step) {
     return std::size_t(std::count_if(step.density.begin(), step.density.end(), [](float d) { return isMissing(d); }));
 }
 
+std::string dimsText(const glm::ivec3& dims) {
+    return std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" + std::to_string(dims.z);
+}
+
+std::string angleSpanText(const std::vector<double>& anglesDeg) {
+    return number(anglesDeg.front()) + ".." + number(anglesDeg.back()) +
+           (areEvenBeamAngles(anglesDeg) ? "" : " uneven");
+}
+
+// The grid's kind and size, and its spacing: a box's distances, or a fan's angles and ranges.
+std::array<std::string, 2> gridText(const TimeStep& step) {
+    if (step.isBeam()) {
+        const BeamGrid& grid = step.beam();
+        return {"beam " + dimsText(grid.dims),
+                "az " + angleSpanText(grid.azimuthDeg) + " el " + angleSpanText(grid.elevationDeg) +
+                    " deg, range " + number(grid.minRange) + ".." + number(grid.maxRange)};
+    }
+    if (const StructuredGrid* structured = step.structured())
+        return {"structured " + dimsText(structured->dims), "curvilinear, edges from " + number(structured->finestEdge)};
+    const RectilinearGrid& grid = step.rectilinear();
+    return {"rectilinear " + dimsText(grid.dims), spacingText(grid)};
+}
+
 Row stepRow(const Series& series, std::size_t index) {
     const TimeStep& step = series.steps[index];
-    const glm::ivec3 dims = step.dims();
-    const StructuredGrid* structured = step.structured();
+    const auto [grid, spacing] = gridText(step);
     return {std::to_string(index),
             number(step.time),
-            gridTypeName(step.grid) + " " + std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" +
-                std::to_string(dims.z),
-            structured ? "curvilinear, edges from " + number(structured->finestEdge)
-                       : spacingText(step.rectilinear()),
+            grid,
+            spacing,
             vec3Text(step.placement.origin),
             rotationText(step.placement.rotation),
             (std::isnan(step.rawRange[0]) ? std::string("no data")
@@ -129,6 +151,14 @@ std::string structuredGridsText(const Series& series) {
     return out.str();
 }
 
+bool sameGrid(const TimeStep& a, const TimeStep& b) {
+    if (a.grid.index() != b.grid.index()) return false;
+    if (a.isBeam()) return a.beam() == b.beam();
+    if (const StructuredGrid* structured = a.structured()) return structured->nodes == b.structured()->nodes;
+    return a.dims() == b.dims() && a.rectilinear().spacing == b.rectilinear().spacing &&
+           a.rectilinear().axisPositions == b.rectilinear().axisPositions;
+}
+
 }  // namespace
 
 std::vector<const StructuredGrid*> distinctStructuredGrids(const Series& series) {
@@ -156,13 +186,7 @@ bool isFullyAligned(const Series& series) {
     if (series.steps.empty()) return true;
     const TimeStep& first = series.steps.front();
     return std::all_of(series.steps.begin(), series.steps.end(), [&first](const TimeStep& step) {
-        if (step.grid.index() != first.grid.index() || step.dims() != first.dims() ||
-            !(step.placement == first.placement))
-            return false;
-        if (const StructuredGrid* structured = step.structured())
-            return structured->nodes == first.structured()->nodes;
-        return step.rectilinear().spacing == first.rectilinear().spacing &&
-               step.rectilinear().axisPositions == first.rectilinear().axisPositions;
+        return sameGrid(step, first) && step.placement == first.placement;
     });
 }
 

@@ -60,19 +60,19 @@ void EntryExitBuffers::render(const GpuSeries& series, const glm::mat4& viewProj
     glBlendFunci(0, GL_ONE, GL_ONE);
     glBlendFunci(1, GL_ONE, GL_ONE);
 
-    program_.set("viewProjection", viewProjection);
-    program_.set("inverseViewProjection", inverseViewProjection);
-    program_.set("viewportSize", glm::vec2(viewport));
-    program_.use();
     emptyVertexArray_.bind();
-    glDrawArraysInstanced(GL_TRIANGLES, 0, 36, GLsizei(series.boxCount()));
-    // Structured grids: their boundary faces, pulled from the mesh buffer by gl_VertexID.
-    if (series.structuredGrids().boundaryVertexCount() > 0) {
-        meshProgram_.set("viewProjection", viewProjection);
-        meshProgram_.set("inverseViewProjection", inverseViewProjection);
-        meshProgram_.set("viewportSize", glm::vec2(viewport));
+    for (const Program* program : {&program_, &meshProgram_}) {
+        program->set("viewProjection", viewProjection);
+        program->set("inverseViewProjection", inverseViewProjection);
+        program->set("viewportSize", glm::vec2(viewport));
+    }
+    if (series.proxyBoxCount() > 0) {
+        program_.use();
+        glDrawArraysInstanced(GL_TRIANGLES, 0, 36, GLsizei(series.proxyBoxCount()));
+    }
+    if (series.proxyMeshVertexCount() > 0) {
         meshProgram_.use();
-        glDrawArrays(GL_TRIANGLES, 0, GLsizei(series.structuredGrids().boundaryVertexCount()));
+        glDrawArrays(GL_TRIANGLES, 0, GLsizei(series.proxyMeshVertexCount()));
     }
 
     glDisablei(GL_BLEND, 0);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <variant>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -11,6 +12,7 @@
 #include "tstyles/core/errors.h"
 #include "tstyles/render/bindings.h"
 #include "tstyles/render/density_texels.h"
+#include "tstyles/render/proxy_mesh.h"
 #include "tstyles/render/uneven_axis_table.h"
 
 namespace tstyles {
@@ -24,7 +26,12 @@ struct TimeStepInfo {
     glm::ivec4 layer;
     glm::vec4 occupancyOrigin;  // xyz: first texel of this time-step's bricks in the occupancy atlas
     glm::ivec4 flags;           // x: 1 when world -> voxel is affine
+    glm::ivec4 grid;            // x: grid kind; beam grids: y, z: first azimuth, elevation angle
+    glm::vec4 beamRange;        // beam grids: minimum, maximum range, gradient difference distance
 };
+
+constexpr int kGridRectilinear = 0;  // GRID_RECTILINEAR in shaders/beam_grid.glsl
+constexpr int kGridBeam = 1;         // GRID_BEAM
 
 // Mirrors ProxyBox in shaders/proxy_geometry.glsl (std430).
 struct ProxyBox {
@@ -51,9 +58,17 @@ Texture createAtlas(GLenum format, const glm::ivec3& size) {
     return texture;
 }
 
-// The proxy layer of every rectilinear time-step; time-steps with the same grid extent and
-// placement share one. Structured time-steps get theirs from GpuStructuredGrids (after the boxes).
-std::vector<int> assignProxyLayers(const Series& series, std::vector<ProxyBox>& boxes) {
+bool shareProxy(const TimeStep& a, const TimeStep& b) {
+    if (!(a.placement == b.placement) || a.grid.index() != b.grid.index()) return false;
+    if (a.isBeam()) return a.beam() == b.beam();
+    return a.rectilinear().extent() == b.rectilinear().extent();
+}
+
+// The proxy layer of every rectilinear and beam time-step; time-steps with the same grid and
+// placement share one. Boxes get a proxy box, beam fans a proxy mesh. Structured time-steps get
+// theirs from GpuStructuredGrids (-1 here).
+std::vector<int> assignProxyLayers(const Series& series, std::vector<ProxyBox>& boxes,
+                                   std::vector<ProxyMeshVertex>& mesh) {
     std::vector<int> layers;
     std::vector<std::size_t> firstStepOfLayer;
     for (std::size_t step = 0; step < series.size(); ++step) {
@@ -64,9 +79,7 @@ std::vector<int> assignProxyLayers(const Series& series, std::vector<ProxyBox>& 
         }
         int layer = -1;
         for (std::size_t candidate = 0; candidate < firstStepOfLayer.size(); ++candidate) {
-            const auto& other = series.steps[firstStepOfLayer[candidate]];
-            if (other.placement == timeStep.placement &&
-                other.rectilinear().extent() == timeStep.rectilinear().extent()) {
+            if (shareProxy(series.steps[firstStepOfLayer[candidate]], timeStep)) {
                 layer = int(candidate);
                 break;
             }
@@ -74,8 +87,11 @@ std::vector<int> assignProxyLayers(const Series& series, std::vector<ProxyBox>& 
         if (layer < 0) {
             layer = int(firstStepOfLayer.size());
             firstStepOfLayer.push_back(step);
-            boxes.push_back({glm::mat4(timeStep.placement.gridToWorld()),
-                             glm::vec4(glm::vec3(timeStep.rectilinear().extent()), 0.0f)});
+            if (timeStep.isBeam())
+                appendBeamProxyMesh(timeStep, layer, mesh);
+            else
+                boxes.push_back({glm::mat4(timeStep.placement.gridToWorld()),
+                                 glm::vec4(glm::vec3(timeStep.rectilinear().extent()), float(layer))});
         }
         layers.push_back(layer);
     }
@@ -89,6 +105,35 @@ bool hasAffineWorldToVoxel(const TimeStep& step) {
     return grid && !grid->isUneven(0) && !grid->isUneven(1) && !grid->isUneven(2);
 }
 
+// A time-step's row in the time-step table; beam grids also append their angles (radians).
+TimeStepInfo timeStepInfo(const TimeStep& step, const glm::ivec3& brickOrigin, int layer,
+                          const glm::ivec3& occupancyOrigin, std::vector<float>& beamAngles) {
+    TimeStepInfo info{};
+    const glm::ivec3 dims = step.dims();
+    info.brickOrigin = glm::vec4(glm::vec3(brickOrigin), 0.0f);
+    info.dims = glm::vec4(glm::vec3(dims), step.mask ? 1.0f : 0.0f);
+    info.layer = glm::ivec4(layer, 0, 0, 0);
+    info.occupancyOrigin = glm::vec4(glm::vec3(occupancyOrigin), 0.0f);
+    if (step.isBeam()) {
+        const BeamGrid& grid = step.beam();
+        info.worldToVoxel = glm::mat4(glm::inverse(step.placement.gridToWorld()));
+        info.grid = glm::ivec4(kGridBeam, int(beamAngles.size()), int(beamAngles.size()) + dims.x, 0);
+        for (double angle : grid.azimuthDeg) beamAngles.push_back(float(glm::radians(angle)));
+        for (double angle : grid.elevationDeg) beamAngles.push_back(float(glm::radians(angle)));
+        info.beamRange = glm::vec4(float(grid.minRange), float(grid.maxRange), float(grid.rangeSpacing()), 0.0f);
+        return info;
+    }
+    const StructuredGrid* structured = step.structured();
+    const glm::dmat4 voxelToWorld =
+        structured ? structuredBoxToWorld(*structured, step.placement)
+                   : step.placement.gridToWorld() * glm::scale(glm::dmat4(1.0), voxelScale(step.rectilinear()));
+    info.worldToVoxel = glm::mat4(glm::inverse(voxelToWorld));
+    info.flags = glm::ivec4(hasAffineWorldToVoxel(step) ? 1 : 0, 0, 0, 0);
+    // Structured grids are told apart by their own table (shaders/structured_grid.glsl).
+    info.grid = glm::ivec4(kGridRectilinear, 0, 0, 0);
+    return info;
+}
+
 }  // namespace
 
 GpuSeries::GpuSeries(const Series& series)
@@ -98,7 +143,9 @@ GpuSeries::GpuSeries(const Series& series)
       timeStepTable_(Buffer::create()),
       proxyTable_(Buffer::create()),
       unevenAxisTable_(Buffer::create()),
-      axisNodeTable_(Buffer::create()) {
+      axisNodeTable_(Buffer::create()),
+      beamAngleTable_(Buffer::create()),
+      proxyMeshTable_(Buffer::create()) {
     // Validation of structured grids happens on load; here they only need an inverse map and a mesh.
     timeStepCount_ = series.size();
     hasMasks_ = series.hasMasks();
@@ -150,25 +197,28 @@ GpuSeries::GpuSeries(const Series& series)
     occupancyAtlas_.setClampToEdge();
 
     std::vector<ProxyBox> boxes;
-    std::vector<int> layers = assignProxyLayers(series, boxes);
-    boxCount_ = boxes.size();
-    structuredGrids_.emplace(series, int(boxCount_), layers, maxTextureSize3D());
+    std::vector<ProxyMeshVertex> mesh;
+    std::vector<int> layers = assignProxyLayers(series, boxes, mesh);
+    const int boxAndFanLayers = 1 + std::accumulate(layers.begin(), layers.end(), -1,
+                                                    [](int most, int layer) { return std::max(most, layer); });
+    structuredGrids_.emplace(series, boxAndFanLayers, layers, mesh, maxTextureSize3D());
     requireNoOutOfMemory(series, "inverse maps of the structured grids");
-    proxyCount_ = boxCount_ + std::size_t(structuredGrids_->layerCount());
+    proxyCount_ = std::size_t(boxAndFanLayers + structuredGrids_->layerCount());
+    proxyBoxCount_ = boxes.size();
+    proxyMeshVertexCount_ = mesh.size();
     std::vector<TimeStepInfo> table;
+    std::vector<float> beamAngles;
     for (std::size_t index = 0; index < series.size(); ++index) {
-        const auto& step = series.steps[index];
-        const StructuredGrid* structured = step.structured();
-        const glm::dmat4 voxelToWorld =
-            structured ? structuredBoxToWorld(*structured, step.placement)
-                       : step.placement.gridToWorld() * glm::scale(glm::dmat4(1.0), voxelScale(step.rectilinear()));
-        table.push_back({glm::mat4(glm::inverse(voxelToWorld)), glm::vec4(glm::vec3(layout_.brickOrigins[index]), 0.0f),
-                         glm::vec4(glm::vec3(step.dims()), step.mask ? 1.0f : 0.0f),
-                         glm::ivec4(layers[index], 0, 0, 0),
-                         glm::vec4(glm::vec3(occupancyLayout_.brickOrigins[index]), 0.0f),
-                         glm::ivec4(hasAffineWorldToVoxel(step) ? 1 : 0, 0, 0, 0)});
+        table.push_back(timeStepInfo(series.steps[index], layout_.brickOrigins[index], layers[index],
+                                     occupancyLayout_.brickOrigins[index], beamAngles));
     }
+    // Buffers bound to a binding point must not be empty, even where no shader reads them.
+    if (boxes.empty()) boxes.push_back({});
+    if (mesh.empty()) mesh.push_back({});
+    if (beamAngles.empty()) beamAngles.push_back(0.0f);
     timeStepTable_.setData(std::as_bytes(std::span(table)), GL_STATIC_DRAW);
+    beamAngleTable_.setData(std::as_bytes(std::span(beamAngles)), GL_STATIC_DRAW);
+    proxyMeshTable_.setData(std::as_bytes(std::span(mesh)), GL_STATIC_DRAW);
     proxyTable_.setData(std::as_bytes(std::span(boxes)), GL_STATIC_DRAW);
     const UnevenAxisTable uneven = buildUnevenAxisTable(series);
     unevenAxisTable_.setData(std::as_bytes(std::span(uneven.firstNode)), GL_STATIC_DRAW);
@@ -201,6 +251,8 @@ void GpuSeries::bind() const {
     structuredGrids_->bind();
     unevenAxisTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kUnevenAxisBuffer);
     axisNodeTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kAxisNodeBuffer);
+    beamAngleTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kBeamAngleBuffer);
+    proxyMeshTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kProxyMeshBuffer);
 }
 
 }  // namespace tstyles

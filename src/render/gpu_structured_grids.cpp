@@ -1,4 +1,5 @@
-// Inverse maps, the per-time-step structured-grid table and boundary meshes on the GPU.
+// Inverse maps and the per-time-step structured-grid table on the GPU; boundary faces for the
+// proxy mesh.
 #include "tstyles/render/gpu_structured_grids.h"
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 
 #include "tstyles/data/inverse_map.h"
 #include "tstyles/render/bindings.h"
+#include "tstyles/render/proxy_mesh.h"
 
 namespace tstyles {
 namespace {
@@ -19,52 +21,6 @@ struct StructuredGridInfo {
     glm::vec4 mapScale;   // xyz: map texels per lattice voxel; w: world step of gradient differences
 };
 
-// Mirrors BoundaryVertex in shaders/entry_exit_mesh.vert (std430).
-struct BoundaryVertex {
-    glm::vec4 positionLayer;  // world position, entry/exit layer
-    glm::vec4 normal;         // world normal, pointing out of the grid
-};
-
-// The six boundary faces of a structured grid as triangles with outward normals, in world space.
-void appendBoundary(const StructuredGrid& grid, const Placement& placement, int layer,
-                    std::vector<BoundaryVertex>& vertices) {
-    const glm::dmat4 toWorld = placement.gridToWorld();
-    const glm::dmat3 rotate = glm::mat3_cast(placement.rotation);
-    for (int axis = 0; axis < 3; ++axis) {
-        const int u = (axis + 1) % 3;
-        const int v = (axis + 2) % 3;
-        for (int side = 0; side < 2; ++side) {
-            const int level = side ? grid.dims[axis] - 1 : 0;
-            const int inwardStep = side ? -1 : 1;
-            auto nodeAt = [&](int a, int b, int c) {
-                glm::ivec3 index(0);
-                index[axis] = a;
-                index[u] = b;
-                index[v] = c;
-                return grid.node(index.x, index.y, index.z);
-            };
-            for (int b = 0; b + 1 < grid.dims[u]; ++b)
-                for (int c = 0; c + 1 < grid.dims[v]; ++c) {
-                    const glm::dvec3 quad[4] = {nodeAt(level, b, c), nodeAt(level, b + 1, c),
-                                                nodeAt(level, b + 1, c + 1), nodeAt(level, b, c + 1)};
-                    const glm::dvec3 inward = nodeAt(level + inwardStep, b, c) - quad[0];
-                    for (const auto& triangle : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}}) {
-                        const glm::dvec3& a = quad[triangle[0]];
-                        glm::dvec3 normal = glm::cross(quad[triangle[1]] - a, quad[triangle[2]] - a);
-                        if (glm::dot(normal, inward) > 0.0) normal = -normal;
-                        const double length = glm::length(normal);
-                        if (!(length > 0.0)) continue;
-                        const glm::vec4 worldNormal(glm::vec3(rotate * (normal / length)), 0.0f);
-                        for (int corner : triangle) {
-                            const glm::dvec3 world(toWorld * glm::dvec4(quad[corner], 1.0));
-                            vertices.push_back({glm::vec4(glm::vec3(world), float(layer)), worldNormal});
-                        }
-                    }
-                }
-        }
-    }
-}
-
 }  // namespace
 
 glm::dmat4 structuredBoxToWorld(const StructuredGrid& grid, const Placement& placement) {
@@ -74,15 +30,12 @@ glm::dmat4 structuredBoxToWorld(const StructuredGrid& grid, const Placement& pla
 }
 
 GpuStructuredGrids::GpuStructuredGrids(const Series& series, int firstLayer, std::vector<int>& stepLayers,
-                                       int maxTextureSize)
-    : inverseMapAtlas_(Texture::create(GL_TEXTURE_3D)),
-      gridTable_(Buffer::create()),
-      boundaryMesh_(Buffer::create()) {
+                                       std::vector<ProxyMeshVertex>& proxyMesh, int maxTextureSize)
+    : inverseMapAtlas_(Texture::create(GL_TEXTURE_3D)), gridTable_(Buffer::create()) {
     // Distinct grids (one inverse map each) and distinct grid + placement pairs (one layer each).
     std::vector<const StructuredGrid*> grids;
     std::vector<int> gridOfStep(series.size(), -1);
     std::vector<std::size_t> firstStepOfLayer;
-    std::vector<BoundaryVertex> vertices;
     for (std::size_t step = 0; step < series.size(); ++step) {
         const StructuredGrid* grid = series.steps[step].structured();
         if (!grid) continue;
@@ -97,11 +50,10 @@ GpuStructuredGrids::GpuStructuredGrids(const Series& series, int firstLayer, std
         stepLayers[step] = firstLayer + int(sameLayer - firstStepOfLayer.begin());
         if (sameLayer == firstStepOfLayer.end()) {
             firstStepOfLayer.push_back(step);
-            appendBoundary(*grid, series.steps[step].placement, stepLayers[step], vertices);
+            appendStructuredProxyMesh(*grid, series.steps[step].placement, stepLayers[step], proxyMesh);
         }
     }
     layerCount_ = int(firstStepOfLayer.size());
-    vertexCount_ = vertices.size();
 
     std::vector<InverseMap> maps;
     std::vector<glm::ivec3> mapDims;
@@ -130,18 +82,15 @@ GpuStructuredGrids::GpuStructuredGrids(const Series& series, int firstLayer, std
                        glm::vec4(scale, float(0.5 * grid.finestEdge))};
     }
     gridTable_.setData(std::as_bytes(std::span(table)), GL_STATIC_DRAW);
-    if (vertices.empty()) vertices.push_back({glm::vec4(0.0f), glm::vec4(0.0f)});  // no zero-sized buffers
-    boundaryMesh_.setData(std::as_bytes(std::span(vertices)), GL_STATIC_DRAW);
 }
 
 std::size_t GpuStructuredGrids::gpuBytes() const {
-    return mapLayout_.texelCount() * sizeof(glm::vec4) + vertexCount_ * sizeof(BoundaryVertex);
+    return mapLayout_.texelCount() * sizeof(glm::vec4);
 }
 
 void GpuStructuredGrids::bind() const {
     inverseMapAtlas_.bindToUnit(binding::kInverseMapUnit);
     gridTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kStructuredGridBuffer);
-    boundaryMesh_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kBoundaryMeshBuffer);
 }
 
 }  // namespace tstyles

@@ -1,5 +1,6 @@
 // The dataset section (what the series is, where it sits, what it costs) and the time section.
 #include <algorithm>
+#include <variant>
 #include <cstdio>
 #include <string>
 
@@ -25,8 +26,12 @@ std::string bytesText(std::size_t bytes) {
 bool sameGrid(const Series& series) {
     const TimeStep& first = series.steps.front();
     if (first.structured()) return false;
+    if (first.isBeam()) {
+        return std::all_of(series.steps.begin(), series.steps.end(),
+                           [&](const TimeStep& step) { return step.isBeam() && step.beam() == first.beam(); });
+    }
     return std::all_of(series.steps.begin(), series.steps.end(), [&](const TimeStep& step) {
-        return !step.structured() && step.dims() == first.dims() &&
+        return std::holds_alternative<RectilinearGrid>(step.grid) && step.dims() == first.dims() &&
                step.rectilinear().spacing == first.rectilinear().spacing &&
                step.rectilinear().axisPositions == first.rectilinear().axisPositions;
     });
@@ -50,7 +55,8 @@ void drawStepTable(const Series& series) {
         ImGui::TableNextColumn();
         ImGui::Text("%.3g", step.time);
         ImGui::TableNextColumn();
-        ImGui::Text("%dx%dx%d", dims.x, dims.y, dims.z);
+        ImGui::Text("%s%dx%dx%d", step.isBeam() ? "beam " : step.structured() ? "struct. " : "", dims.x, dims.y,
+                    dims.z);
         ImGui::TableNextColumn();
         ImGui::Text("%.2f %.2f %.2f", step.placement.origin.x, step.placement.origin.y, step.placement.origin.z);
         ImGui::TableNextColumn();
@@ -70,15 +76,16 @@ void drawDatasetSection(SidePanelState& state, UiAnchors&) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", series.manifestPath.string().c_str());
     const TimeStep& first = series.steps.front();
     ImGui::Text("%zu time-steps, t = %.3g .. %.3g", series.size(), first.time, series.steps.back().time);
-    if (sameGrid(series)) {
-        const RectilinearGrid& grid = first.rectilinear();
-        ImGui::Text("grid %dx%dx%d, spacing %.3g", grid.dims.x, grid.dims.y, grid.dims.z, grid.spacing.x);
-    } else if (first.structured()) {
-        const glm::ivec3 dims = first.dims();
+    const glm::ivec3 dims = first.dims();
+    if (sameGrid(series) && first.isBeam())
+        ImGui::Text("beam grid %dx%dx%d, range %.3g .. %.3g", dims.x, dims.y, dims.z, first.beam().minRange,
+                    first.beam().maxRange);
+    else if (sameGrid(series))
+        ImGui::Text("grid %dx%dx%d, spacing %.3g", dims.x, dims.y, dims.z, first.rectilinear().spacing.x);
+    else if (first.structured())
         ImGui::Text("structured grid %dx%dx%d", dims.x, dims.y, dims.z);
-    } else {
-        ImGui::Text("rectilinear grids of different sizes");
-    }
+    else
+        ImGui::Text("grids of different kinds or sizes");
     ImGui::Text("placement: %s", isFullyAligned(series) ? "aligned" : "moving (partial overlap)");
     ImGui::Text("values %.4g .. %.4g = density 0 .. 1", series.valueRange[0], series.valueRange[1]);
     ImGui::Text("disk %s, GPU %s", bytesText(diskBytes(series)).c_str(),

@@ -91,7 +91,7 @@ TEST(StructuredManifest, UnknownGridTypesListTheKnownOnes) {
     text.replace(text.find("\"structured\""), 12, "\"curvy\"");
     tstyles_test::writeText(folder / "series.json", text);
     const std::string message = loadError(folder);
-    EXPECT_NE(message.find("unknown grid type 'curvy' (known: rectilinear, structured)"), std::string::npos) << message;
+    EXPECT_NE(message.find("unknown grid type 'curvy' (known: rectilinear, structured, beam)"), std::string::npos) << message;
 }
 
 }  // namespace

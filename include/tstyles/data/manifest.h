@@ -20,6 +20,8 @@ struct RawTimeStep {
     // When set, the time-step is on this structured grid instead (its dims count the values);
     // time-steps sharing one node array share one coordinates file.
     std::optional<StructuredGrid> structured;
+    // When set, the time-step lies on this beam (sonar) grid instead, and `grid` is not written.
+    std::optional<BeamGrid> beamGrid;
     Placement placement;
     ValueType type = ValueType::Float32;
     std::vector<std::uint8_t> bytes;                  // little-endian values, x fastest

@@ -55,13 +55,34 @@ struct RectilinearGrid {
     }
 };
 
-// Grid kinds grow here (curvilinear sonar grids come later).
-using Grid = std::variant<RectilinearGrid, StructuredGrid>;
+// A sonar ping's beam (spherical-sector) grid: dims.x beams across (azimuth) times dims.y beams
+// along (elevation), each sampled at dims.z ranges from minRange to maxRange. The transducer sits
+// at the grid-local origin looking along +z; a beam's direction is normalize(tan(azimuth),
+// tan(elevation), 1): azimuth is the angle in the x-z plane, elevation the angle in the y-z plane,
+// so the fan's sides are planes through the transducer. Sample (i, j, k) lies on beam (i, j) at
+// range minRange + k * rangeSpacing(). Geometry helpers: tstyles/data/beam_geometry.h.
+struct BeamGrid {
+    glm::ivec3 dims{0};
+    // One angle per beam in degrees, strictly increasing, each in (-90, 90): dims.x azimuths and
+    // dims.y elevations (evenly spread ones when the manifest gives only the extent).
+    std::vector<double> azimuthDeg;
+    std::vector<double> elevationDeg;
+    double minRange = 0.0;
+    double maxRange = 1.0;
+
+    double rangeSpacing() const { return (maxRange - minRange) / double(dims.z - 1); }
+    std::size_t voxelCount() const {
+        return std::size_t(dims.x) * std::size_t(dims.y) * std::size_t(dims.z);
+    }
+    bool operator==(const BeamGrid& other) const = default;
+};
+
+using Grid = std::variant<RectilinearGrid, StructuredGrid, BeamGrid>;
 
 // Samples along each axis and in all, whatever the grid kind.
 glm::ivec3 gridDims(const Grid& grid);
 std::size_t gridVoxelCount(const Grid& grid);
-// The grid kind as manifests and `tstyles info` name it ("rectilinear", "structured").
+// The grid kind as manifests and `tstyles info` name it ("rectilinear", "structured", "beam").
 std::string gridTypeName(const Grid& grid);
 
 // Where a time-step's grid sits in the world: grid-local position p maps to origin + rotation * p.
@@ -106,6 +127,8 @@ struct TimeStep {
     // The structured grid, or null for other grid kinds.
     const StructuredGrid* structured() const { return std::get_if<StructuredGrid>(&grid); }
     glm::ivec3 dims() const { return gridDims(grid); }
+    bool isBeam() const { return std::holds_alternative<BeamGrid>(grid); }
+    const BeamGrid& beam() const { return std::get<BeamGrid>(grid); }
 };
 
 // World-space axis-aligned box.
@@ -133,7 +156,8 @@ struct Series {
 
     std::size_t size() const { return steps.size(); }
     bool hasMasks() const;
-    // World bounds of the time-step's grid (its eight corners after placement).
+    // World bounds of the time-step's grid after placement (a box's eight corners, a beam fan's
+    // enclosing mesh).
     Bounds worldBounds(std::size_t step) const;
     // World bounds of the whole series.
     Bounds worldBounds() const;

@@ -19,9 +19,10 @@ inline constexpr unsigned kIndexTstfBuffer = 2;
 inline constexpr unsigned kStatisticsBuffer = 3;
 inline constexpr unsigned kStyleNodeBuffer = 4;
 inline constexpr unsigned kStructuredGridBuffer = 5;
-inline constexpr unsigned kBoundaryMeshBuffer = 6;
+inline constexpr unsigned kProxyMeshBuffer = 6;
 inline constexpr unsigned kUnevenAxisBuffer = 7;
 inline constexpr unsigned kAxisNodeBuffer = 8;
+inline constexpr unsigned kBeamAngleBuffer = 9;
 
 inline constexpr float kNoEntry = 1.0e30f;
 inline constexpr float kNoExit = -1.0e30f;

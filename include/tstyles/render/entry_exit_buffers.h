@@ -25,8 +25,8 @@ public:
 private:
     void resize(glm::ivec2 viewport, int layers);
 
-    Program program_;
-    Program meshProgram_;  // boundary faces of structured grids
+    Program program_;      // instanced proxy boxes
+    Program meshProgram_;  // proxy meshes (beam fans, boundary faces of structured grids)
     VertexArray emptyVertexArray_;
     glm::ivec2 size_{0};
     int layers_ = 0;

@@ -1,5 +1,6 @@
 // A series as the GPU holds it: all densities in one 3D atlas texture (masks in a second one), a
-// table describing each time-step, and one proxy box per distinct placement. Built once per series.
+// table describing each time-step, and one proxy (a box, or a beam fan's mesh) per distinct grid
+// and placement. Built once per series.
 #pragma once
 
 #include <cstddef>
@@ -23,10 +24,12 @@ public:
     explicit GpuSeries(const Series& series);
 
     std::size_t timeStepCount() const { return timeStepCount_; }
-    // Entry/exit layers: the proxy boxes of rectilinear time-steps first, then the boundary meshes
-    // of structured grids.
+    // Layers of the entry/exit buffers: one per distinct grid and placement.
     std::size_t proxyCount() const { return proxyCount_; }
-    std::size_t boxCount() const { return boxCount_; }
+    // Of those, the layers drawn as instanced boxes, and the vertices of the proxy mesh (beam fans,
+    // then the boundary faces of structured grids).
+    std::size_t proxyBoxCount() const { return proxyBoxCount_; }
+    std::size_t proxyMeshVertexCount() const { return proxyMeshVertexCount_; }
     const GpuStructuredGrids& structuredGrids() const { return *structuredGrids_; }
     const AtlasLayout& layout() const { return layout_; }
     bool hasMasks() const { return hasMasks_; }
@@ -47,7 +50,8 @@ public:
 private:
     std::size_t timeStepCount_ = 0;
     std::size_t proxyCount_ = 0;
-    std::size_t boxCount_ = 0;
+    std::size_t proxyBoxCount_ = 0;
+    std::size_t proxyMeshVertexCount_ = 0;
     bool hasMasks_ = false;
     bool allAffine_ = true;
     bool hasMissingValues_ = false;
@@ -62,6 +66,8 @@ private:
     std::optional<GpuStructuredGrids> structuredGrids_;
     Buffer unevenAxisTable_;  // shaders/uneven_axes.glsl
     Buffer axisNodeTable_;
+    Buffer beamAngleTable_;
+    Buffer proxyMeshTable_;
 };
 
 }  // namespace tstyles

@@ -1,0 +1,66 @@
+// Beam (sonar) grids: a sample's place in a fan of beams. The transducer sits at the grid-local
+// origin looking along +z; azimuth is the angle in the x-z plane, elevation the angle in the y-z
+// plane, so the fan's sides are planes through the transducer. A time-step's worldToVoxel takes
+// world positions to grid-local ones; from there (azimuth, elevation, range) give the fractional
+// sample (beam across, beam along, range sample). Mirrors tstyles/data/beam_geometry.h.
+#define GRID_RECTILINEAR 0
+#define GRID_BEAM 1
+
+// Every beam grid's beam angles in radians, one run per axis and time-step (TimeStepInfo.grid.yz
+// says where each run starts): uneven beam spacing needs the list, not just the extent.
+layout(std430, binding = BEAM_ANGLE_BUFFER) readonly buffer BeamAngles {
+    float angles[];
+} beamAngles;
+
+bool isBeamGrid(int step) {
+    return timeSteps.steps[step].grid.x == GRID_BEAM;
+}
+
+// The fractional index of `angle` among `count` increasing angles from `first` on; -1 outside.
+float fractionalBeamIndex(int first, int count, float angle) {
+    if (angle < beamAngles.angles[first] || angle > beamAngles.angles[first + count - 1]) return -1.0;
+    int low = 0;
+    int high = count - 1;
+    while (high - low > 1) {  // angles[low] <= angle <= angles[high]
+        int middle = (low + high) / 2;
+        if (beamAngles.angles[first + middle] <= angle)
+            low = middle;
+        else
+            high = middle;
+    }
+    float lowAngle = beamAngles.angles[first + low];
+    float highAngle = beamAngles.angles[first + high];
+    return float(low) + clamp((angle - lowAngle) / (highAngle - lowAngle), 0.0, 1.0);
+}
+
+// xyz: fractional sample coordinates of a grid-local position; w: 1 inside the fan, 0 outside.
+vec4 beamVoxel(int step, vec3 local) {
+    TimeStepInfo info = timeSteps.steps[step];
+    float range = length(local);
+    float across = fractionalBeamIndex(info.grid.y, int(info.dims.x), atan(local.x, local.z));
+    float along = fractionalBeamIndex(info.grid.z, int(info.dims.y), atan(local.y, local.z));
+    float rangeSample = (range - info.beamRange.x) / (info.beamRange.y - info.beamRange.x) * (info.dims.z - 1.0);
+    bool inside = local.z > 0.0 && across >= 0.0 && along >= 0.0 && range >= info.beamRange.x &&
+                  range <= info.beamRange.y;
+    return vec4(across, along, rangeSample, inside ? 1.0 : 0.0);
+}
+
+// Empty-space skipping in a beam grid: a brick is bounded by four planes through the transducer
+// and two spheres, so the distance from the sample to the nearest of them is a step the ray can
+// take without leaving the brick, whatever its direction (world and grid-local distances agree).
+float beamBrickExit(int step, vec3 brickLower, vec3 brickUpper, vec3 local, float t) {
+    TimeStepInfo info = timeSteps.steps[step];
+    float azimuthLow = beamAngles.angles[info.grid.y + int(brickLower.x)];
+    float azimuthHigh = beamAngles.angles[info.grid.y + int(brickUpper.x)];
+    float elevationLow = beamAngles.angles[info.grid.z + int(brickLower.y)];
+    float elevationHigh = beamAngles.angles[info.grid.z + int(brickUpper.y)];
+    float rangeSpacing = (info.beamRange.y - info.beamRange.x) / (info.dims.z - 1.0);
+    float range = length(local);
+    float distance = min(range - (info.beamRange.x + brickLower.z * rangeSpacing),
+                         info.beamRange.x + brickUpper.z * rangeSpacing - range);
+    distance = min(distance, abs(local.x * cos(azimuthLow) - local.z * sin(azimuthLow)));
+    distance = min(distance, abs(local.x * cos(azimuthHigh) - local.z * sin(azimuthHigh)));
+    distance = min(distance, abs(local.y * cos(elevationLow) - local.z * sin(elevationLow)));
+    distance = min(distance, abs(local.y * cos(elevationHigh) - local.z * sin(elevationHigh)));
+    return t + max(distance, 0.0);
+}
