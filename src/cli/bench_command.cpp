@@ -195,12 +195,7 @@ void runMatrix(Renderer& renderer, const BenchOptions& options, std::vector<Benc
             std::cerr << "note: skipping dataset " << folder << ": " << manifest.string() << " does not exist\n";
             continue;
         }
-        const BenchDataset dataset = benchDatasetFor(folder);
-        if (options.styled && dataset.hasOwnScenes()) {
-            std::cerr << "note: skipping dataset " << folder << ": it has no styled scenes\n";
-            continue;
-        }
-        runSeries(renderer, loadSeries(manifest), dataset, options, results);
+        runSeries(renderer, loadSeries(manifest), benchDatasetFor(folder), options, results);
     }
 }
 

@@ -11,7 +11,8 @@ const std::vector<BenchDataset>& benchDatasets() {
         {"superellipsoid-aligned", "super-ellipsoid, 10 steps on one 256x128x64 grid, fully aligned", "figure4-"},
         {"hurricane", "synthetic hurricane, 10 x 125x125x25, fully overlapping", "", "figure5-focus-step5",
          "figure6-left-max-density-change"},
-        {"sonar", "sonar, 10 x 25x20x1319 beams", "figure4-"},
+        {"sonar", "sonar, 10 pings x 25x20x1319 beams, partial overlap", "", "figure6-centre-index-tstf",
+         "figure6-right-max-density-change"},
     };
     return datasets;
 }
@@ -24,7 +25,7 @@ BenchDataset benchDatasetFor(const std::string& folder) {
 }
 
 std::string benchSceneFor(const BenchDataset& dataset, TemporalCompositor compositor, bool styled) {
-    if (dataset.hasOwnScenes())
+    if (!dataset.indexScene.empty())
         return compositor == TemporalCompositor::MaxDensityChange ? dataset.changeScene : dataset.indexScene;
     const std::string prefix = dataset.scenePrefix + (styled ? "styled-" : "");
     switch (compositor) {

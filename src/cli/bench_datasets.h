@@ -15,12 +15,10 @@ struct BenchDataset {
     // The scenes that supply camera and transfer functions: <scenePrefix>[styled-]<compositor>.json
     // in data/scenes.
     std::string scenePrefix;
-    // A dataset with its own figures instead of a prefix: the scene for the time-step index
-    // compositors (MIP, average) and the one for max density change. They have no styled twins.
+    // A dataset with scenes of its own (already styled, used with and without --styled) names them
+    // here instead: one for temporal MIP and average (index TSTF), one for max density change.
     std::string indexScene;
     std::string changeScene;
-
-    bool hasOwnScenes() const { return !indexScene.empty(); }
 };
 
 // The benchmark matrix's datasets, in the order of the table.

@@ -5,10 +5,13 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "tstyles/core/bundled_data.h"
+#include "tstyles/data/read_options.h"
+#include "tstyles/data/series.h"
 #include "tstyles/gl/headless_context.h"
 
 namespace tstyles::cli {
@@ -27,6 +30,28 @@ struct GlOptions {
 void addGlOptions(CLI::App& command, GlOptions& options);
 GlBackend parseBackend(const std::string& name);
 
+// How a dataset is read (docs/readers.md): the spellings as typed, parsed when the command runs so
+// that a bad one is an InputError naming the option. Shared by info, render, view and convert.
+struct DatasetOptions {
+    std::string variable;                  // --var
+    std::string timeDimension;             // --time-dim
+    bool indexAxes = false;                // --index-axes
+    std::optional<std::string> steps;      // --steps FIRST:END:STRIDE
+    std::optional<std::string> range;      // --range LO:HI
+    std::optional<std::string> resample;   // --resample NXxNYxNZ
+    std::optional<std::string> rawDims;    // --dims NXxNYxNZ
+    std::optional<std::string> precision;  // --precision 8|16|32
+    std::optional<std::string> maxMemory;  // --max-memory SIZE
+    std::optional<std::string> fit;        // --fit refuse|resolution|steps
+    std::vector<std::filesystem::path> solutions;  // --solution (Plot3D)
+    int block = 0;                         // --block (Plot3D)
+    double gamma = 1.4;                    // --gamma (Plot3D)
+};
+void addDatasetOptions(CLI::App& command, DatasetOptions& options);
+ReadOptions toReadOptions(const DatasetOptions& options);
+// The one way a command opens a dataset: openSeries with the parsed options.
+Series openDataset(const std::vector<std::filesystem::path>& inputs, const DatasetOptions& options);
+
 struct Command {
     CLI::App* parsed = nullptr;     // the subcommand, to see whether it was chosen
     std::function<int()> run;       // runs it with the parsed options; returns the exit code
@@ -36,5 +61,6 @@ Command addRenderCommand(CLI::App& app);
 Command addInfoCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);
 Command addViewCommand(CLI::App& app);
+Command addConvertCommand(CLI::App& app);
 
 }  // namespace tstyles::cli

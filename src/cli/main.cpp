@@ -10,7 +10,8 @@ int main(int argc, char** argv) {
     CLI::App app{"Temporal Styles: time-varying volume rendering with temporal style transfer functions"};
     app.require_subcommand(1);
     const std::vector<cli::Command> commands = {cli::addRenderCommand(app), cli::addInfoCommand(app),
-                                                cli::addBenchCommand(app), cli::addViewCommand(app)};
+                                                cli::addBenchCommand(app), cli::addViewCommand(app),
+                                                cli::addConvertCommand(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {

@@ -4,9 +4,7 @@
 #include <memory>
 
 #include "commands.h"
-#include "dataset_loading.h"
 #include "tstyles/core/errors.h"
-#include "tstyles/data/manifest.h"
 #include "tstyles/image/image_io.h"
 #include "tstyles/render/renderer.h"
 #include "tstyles/scene/scene_file.h"
@@ -22,7 +20,8 @@ struct RenderOptions {
     std::optional<std::string> compositor;
     std::vector<std::string> styleOverrides;  // NAME=FILE
     GlOptions gl;
-    Plot3DCliOptions plot3d;  // when the scene's dataset is a Plot3D grid
+    std::vector<std::filesystem::path> datasetFiles;  // --dataset: instead of the scene's dataset
+    DatasetOptions dataset;
 };
 
 // --style NAME=FILE: every colour node of the scene that uses style NAME reads FILE instead, so a
@@ -54,7 +53,9 @@ int runRender(const RenderOptions& options) {
         scene.compositor = *temporalCompositorFromString(*options.compositor);
     }
     overrideStyles(scene, options.styleOverrides);
-    const Series series = loadDataset(scene.dataset, options.plot3d);
+    const Series series = openDataset(
+        options.datasetFiles.empty() ? std::vector<std::filesystem::path>{scene.dataset} : options.datasetFiles,
+        options.dataset);
     const auto context = createHeadlessContext(parseBackend(options.gl.backend), glDebugOutputRequested());
     Renderer renderer(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
     renderer.setSeries(series);
@@ -86,7 +87,11 @@ Command addRenderCommand(CLI::App& app) {
     command->add_option("--style", options->styleOverrides,
                         "NAME=FILE: use this image (any format OpenImageIO reads) wherever the scene uses style NAME");
     addGlOptions(*command, options->gl);
-    addPlot3DOptions(*command, options->plot3d);
+    command->add_option("--dataset", options->datasetFiles,
+                        "Render this dataset instead of the scene's: a manifest, a NetCDF, NIfTI, NRRD or Plot3D grid "
+                        "file, or several files of one series (repeated or comma-separated)")
+        ->delimiter(',');
+    addDatasetOptions(*command, options->dataset);
     return {command, [options] { return runRender(*options); }};
 }
 

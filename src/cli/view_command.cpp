@@ -10,7 +10,8 @@ namespace tstyles::cli {
 namespace {
 
 struct ViewOptions {
-    std::optional<std::filesystem::path> input;
+    std::vector<std::filesystem::path> inputs;
+    DatasetOptions dataset;
     std::optional<std::filesystem::path> script;
     std::string size = "1280x800";
     bool noVsync = false;
@@ -29,7 +30,8 @@ glm::ivec2 parseWindowSize(const std::string& text) {
 
 int runView(const ViewOptions& options) {
     viewer::ViewerOptions viewerOptions;
-    viewerOptions.input = options.input;
+    viewerOptions.inputs = options.inputs;
+    viewerOptions.readOptions = toReadOptions(options.dataset);
     viewerOptions.dataDirectory = bundledDataDirectory();
     viewerOptions.script = options.script;
     viewerOptions.windowSize = parseWindowSize(options.size);
@@ -44,7 +46,9 @@ Command addViewCommand(CLI::App& app) {
     auto options = std::make_shared<ViewOptions>();
     CLI::App* command = app.add_subcommand(
         "view", "Open the interactive viewer on a scene or dataset (default: the bundled Figure 1 scene)");
-    command->add_option("input", options->input, "Scene file (JSON), or a dataset folder or manifest");
+    command->add_option("input", options->inputs,
+                        "Scene file (JSON); or a dataset: a manifest or its folder, a NetCDF, NIfTI, NRRD or Plot3D "
+                        "grid file, or several files of one series");
     command->add_option("--script", options->script,
                         "Play input events from this file (format: docs/viewer.md), e.g. for tests")
         ->check(CLI::ExistingFile);
@@ -54,6 +58,7 @@ Command addViewCommand(CLI::App& app) {
     command->add_option("--shader-dir", options->shaderDirectory,
                         "Load shaders from this folder instead of the embedded copy (also: TSTYLES_SHADER_DIR)")
         ->check(CLI::ExistingDirectory);
+    addDatasetOptions(*command, options->dataset);
     return {command, [options] { return runView(*options); }};
 }
 

@@ -7,10 +7,12 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <sstream>
 
 #include "plot3d_layout.h"
+#include "readers/plot3d_source.h"
 #include "tstyles/core/errors.h"
 
 namespace tstyles {
@@ -88,6 +90,15 @@ GridBlock readGridBlock(const Plot3DFile& file, int block) {
     return result;
 }
 
+void requireMatchingDims(const Plot3DFile& file, int block, const GridBlock& grid,
+                         const std::filesystem::path& gridFile) {
+    const glm::ivec3 dims = file.layout.dims[std::size_t(block)];
+    if (dims != grid.grid.dims)
+        throwInputError(file.path, "", "block " + std::to_string(block) + " has " + dimsText(dims) +
+                                           " nodes but the grid '" + gridFile.string() + "' has " +
+                                           dimsText(grid.grid.dims) + " in that block");
+}
+
 struct SolutionBlock {
     double time = 0.0;
     std::vector<float> values;
@@ -109,10 +120,7 @@ SolutionBlock readSolutionBlock(const Plot3DFile& file, const Plot3DOptions& opt
     requireBlock(file, options.block);
     const auto block = std::size_t(options.block);
     const glm::ivec3 dims = file.layout.dims[block];
-    if (dims != grid.grid.dims)
-        throwInputError(file.path, "", "block " + std::to_string(block) + " has " + dimsText(dims) +
-                                           " nodes but the grid '" + gridFile.string() + "' has " +
-                                           dimsText(grid.grid.dims) + " in that block");
+    requireMatchingDims(file, options.block, grid, gridFile);
     if (functionIndex(options.variable))
         throwInputError(file.path, "--var", options.variable + " names a variable of a function (.f) file, not of a "
                                                                "solution (q) file");
@@ -152,10 +160,7 @@ SolutionBlock readFunctionBlock(const Plot3DFile& file, const Plot3DOptions& opt
     requireBlock(file, options.block);
     const auto block = std::size_t(options.block);
     const glm::ivec3 dims = file.layout.dims[block];
-    if (dims != grid.grid.dims)
-        throwInputError(file.path, "", "block " + std::to_string(block) + " has " + dimsText(dims) +
-                                           " nodes but the grid '" + gridFile.string() + "' has " +
-                                           dimsText(grid.grid.dims) + " in that block");
+    requireMatchingDims(file, options.block, grid, gridFile);
     const auto function = functionIndex(options.variable);
     if (!function)
         throwInputError(file.path, "--var", "a function file holds variables function-0, function-1, ...; '" +
@@ -204,44 +209,85 @@ bool hasPlot3DGridExtension(const std::filesystem::path& path) {
     return extension == ".xyz" || extension == ".x" || extension == ".g" || extension == ".grd";
 }
 
-Series readPlot3D(const Plot3DOptions& options) {
+SourceSeries openPlot3DSource(const Plot3DOptions& options) {
     checkOptions(options);
     const Plot3DFile gridFile = readPlot3DFile(options.gridFile, Plot3DKind::GridFile);
-    const GridBlock grid = readGridBlock(gridFile, options.block);
+    auto grid = std::make_shared<const GridBlock>(readGridBlock(gridFile, options.block));
     // Checked after the grid: a file that is no Plot3D grid at all should be reported as such.
     if (options.solutionFiles.empty())
         throwInputError(options.gridFile, "--solution",
                         "a Plot3D grid needs at least one solution (q) file: one per time-step");
 
-    Series series;
-    series.name = options.gridFile.stem().string() + " (" + options.variable + ")";
-    series.manifestPath = options.gridFile;
+    SourceSeries source;
+    source.name = options.gridFile.stem().string() + " (" + options.variable + ")";
+    source.file = options.gridFile;
+    source.format = "Plot3D";
     std::vector<double> times;
     for (const std::filesystem::path& path : options.solutionFiles) {
+        // The whole file is read (and checked) now for its layout and time, and again for its values.
         const bool functionFile = hasFunctionExtension(path);
         const Plot3DFile solution =
             readPlot3DFile(path, functionFile ? Plot3DKind::FunctionFile : Plot3DKind::SolutionFile);
-        SolutionBlock block = functionFile ? readFunctionBlock(solution, options, grid, options.gridFile)
-                                           : readSolutionBlock(solution, options, grid, options.gridFile);
+        requireBlock(solution, options.block);
+        requireMatchingDims(solution, options.block, *grid, options.gridFile);
+        times.push_back(functionFile ? std::numeric_limits<double>::quiet_NaN()
+                                     : solution.real(solution.layout.blockOffsets[std::size_t(options.block)] +
+                                                     3 * std::size_t(solution.layout.precision)));
+        SourceStep step;
+        step.grid = grid->grid;
+        step.type = solution.layout.precision == 8 ? ValueType::Float64 : ValueType::Float32;
+        step.file = path;
+        source.steps.push_back(std::move(step));
+    }
+    const bool increasing = std::adjacent_find(times.begin(), times.end(), std::greater_equal<double>()) == times.end();
+    for (std::size_t index = 0; index < source.steps.size(); ++index)
+        source.steps[index].time = increasing && std::isfinite(times[index]) ? times[index] : double(index);
+
+    source.readStep = [options, grid](std::size_t index) {
+        const std::filesystem::path& path = options.solutionFiles[index];
+        const bool functionFile = hasFunctionExtension(path);
+        const Plot3DFile solution =
+            readPlot3DFile(path, functionFile ? Plot3DKind::FunctionFile : Plot3DKind::SolutionFile);
+        SolutionBlock block = functionFile ? readFunctionBlock(solution, options, *grid, options.gridFile)
+                                           : readSolutionBlock(solution, options, *grid, options.gridFile);
+        if (std::all_of(block.values.begin(), block.values.end(), [](float value) { return isMissing(value); }))
+            throwInputError(path, "", "every node of block " + std::to_string(options.block) + " is blanked (IBLANK 0)");
+        return std::move(block.values);
+    };
+    return source;
+}
+
+bool looksLikePlot3DGrid(const std::filesystem::path& file) {
+    try {
+        readPlot3DFile(file, Plot3DKind::GridFile);
+        return true;
+    } catch (const InputError&) {
+        return false;
+    }
+}
+
+Series readPlot3D(const Plot3DOptions& options) {
+    const SourceSeries source = openPlot3DSource(options);
+    Series series;
+    series.name = source.name;
+    series.manifestPath = source.file;
+    series.sourceFormat = source.format;
+    for (std::size_t index = 0; index < source.steps.size(); ++index) {
+        const SourceStep& from = source.steps[index];
         TimeStep step;
-        step.grid = grid.grid;
+        step.time = from.time;
+        step.grid = from.grid;
         step.sourceType = ValueType::Float32;
-        step.valuesFile = path;
-        step.density = std::move(block.values);
+        step.valuesFile = from.file;
+        step.density = source.readStep(index);
         step.rawRange = {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
         for (float value : step.density)
             if (!isMissing(value)) {
                 step.rawRange[0] = std::min(step.rawRange[0], double(value));
                 step.rawRange[1] = std::max(step.rawRange[1], double(value));
             }
-        if (!(step.rawRange[0] <= step.rawRange[1]))
-            throwInputError(path, "", "every node of block " + std::to_string(options.block) + " is blanked (IBLANK 0)");
-        times.push_back(block.time);
         series.steps.push_back(std::move(step));
     }
-    const bool increasing = std::adjacent_find(times.begin(), times.end(), std::greater_equal<double>()) == times.end();
-    for (std::size_t index = 0; index < series.size(); ++index)
-        series.steps[index].time = increasing && std::isfinite(times[index]) ? times[index] : double(index);
 
     series.valueRange = series.steps.front().rawRange;
     for (const TimeStep& step : series.steps) {

@@ -4,6 +4,7 @@
 
 #include "tstyles/data/beam_geometry.h"
 #include "tstyles/data/inverse_map.h"
+#include "tstyles/data/read_options.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,8 +17,8 @@ namespace tstyles {
 namespace {
 
 constexpr double kBytesPerMiB = 1024.0 * 1024.0;
-// Density goes to the GPU as 16-bit normalised integers; masks as 8-bit.
-constexpr std::size_t kGpuBytesPerDensityVoxel = 2;
+// Density goes to the GPU at the series' precision (8, 16 or 32 bits), paired with a validity
+// channel when values are missing; masks as 8-bit.
 constexpr std::size_t kGpuBytesPerMaskVoxel = 1;
 
 // Six significant digits, as %g; adding 0.0 turns -0 into 0 so rotated origins do not print "-0".
@@ -210,11 +211,20 @@ std::size_t diskBytes(const Series& series) {
     return bytes;
 }
 
+bool anyMissing(const Series& series) {
+    return std::any_of(series.steps.begin(), series.steps.end(),
+                       [](const TimeStep& step) { return missingVoxels(step) > 0; });
+}
+
+std::size_t gpuBytesPerDensityVoxel(const Series& series) {
+    return bytesPerDensity(series.precision) * (anyMissing(series) ? 2 : 1);
+}
+
 std::size_t gpuBytes(const Series& series) {
     std::size_t bytes = 0;
     for (const TimeStep& step : series.steps) {
         const std::size_t voxels = gridVoxelCount(step.grid);
-        bytes += voxels * kGpuBytesPerDensityVoxel + (step.mask ? voxels * kGpuBytesPerMaskVoxel : 0);
+        bytes += voxels * gpuBytesPerDensityVoxel(series) + (step.mask ? voxels * kGpuBytesPerMaskVoxel : 0);
     }
     return bytes + inverseMapBytes(series);
 }
@@ -222,7 +232,9 @@ std::size_t gpuBytes(const Series& series) {
 std::string describeSeries(const Series& series) {
     std::ostringstream out;
     out << "Series: " << series.name << "\n";
-    out << "Manifest: " << series.manifestPath.string() << "\n";
+    out << (series.sourceFormat == "tstyles manifest" ? "Manifest: " : "File: ") << series.manifestPath.string()
+        << "\n";
+    out << "Format: " << series.sourceFormat << "\n";
     out << "Time-steps: " << series.size() << "\n";
     out << "Value range: [" << number(series.valueRange[0]) << ", " << number(series.valueRange[1])
         << "] maps to density [0, 1]\n";
@@ -256,7 +268,8 @@ std::string describeSeries(const Series& series) {
     out << "\n";
     out << structuredGridsText(series);
     out << "Memory: " << mibText(diskBytes(series)) << " on disk, " << mibText(gpuBytes(series))
-        << " on the GPU (16-bit density" << (series.hasMasks() ? " + 8-bit mask" : "") << " per voxel"
+        << " on the GPU (" << precisionBits(series.precision) << "-bit density"
+        << (anyMissing(series) ? " + validity" : "") << (series.hasMasks() ? " + 8-bit mask" : "") << " per voxel"
         << (inverseMapBytes(series) > 0 ? ", inverse maps" : "") << ")\n";
     return out.str();
 }

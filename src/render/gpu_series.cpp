@@ -10,6 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "tstyles/core/errors.h"
+#include "tstyles/data/read_options.h"
 #include "tstyles/render/bindings.h"
 #include "tstyles/render/density_texels.h"
 #include "tstyles/render/proxy_mesh.h"
@@ -105,6 +106,24 @@ bool hasAffineWorldToVoxel(const TimeStep& step) {
     return grid && !grid->isUneven(0) && !grid->isUneven(1) && !grid->isUneven(2);
 }
 
+struct DensityTexelFormat {
+    GLenum internalFormat;
+    GLenum type;  // of the uploaded texels (densityTexelBytes)
+};
+
+// R8 / R16 / R32F, or their RG pairs (density * validity, validity) when values are missing.
+DensityTexelFormat densityTexelFormat(DensityPrecision precision, bool withValidity) {
+    switch (precision) {
+        case DensityPrecision::Bits8:
+            return {GLenum(withValidity ? GL_RG8 : GL_R8), GLenum(GL_UNSIGNED_BYTE)};
+        case DensityPrecision::Bits16:
+            return {GLenum(withValidity ? GL_RG16 : GL_R16), GLenum(GL_UNSIGNED_SHORT)};
+        case DensityPrecision::Bits32:
+            break;
+    }
+    return {GLenum(withValidity ? GL_RG32F : GL_R32F), GLenum(GL_FLOAT)};
+}
+
 // A time-step's row in the time-step table; beam grids also append their angles (radians).
 TimeStepInfo timeStepInfo(const TimeStep& step, const glm::ivec3& brickOrigin, int layer,
                           const glm::ivec3& occupancyOrigin, std::vector<float>& beamAngles) {
@@ -156,8 +175,10 @@ GpuSeries::GpuSeries(const Series& series)
 
     glGetError();  // start from a clean error state so that OUT_OF_MEMORY below is ours
     hasMissingValues_ = tstyles::hasMissingValues(series);
-    densityAtlas_ = createAtlas(hasMissingValues_ ? GL_RG16 : GL_R16, layout_.size);
-    // Validity reads as alpha; without missing values alpha is 1 everywhere (R16's default).
+    precision_ = series.precision;
+    const DensityTexelFormat texelFormat = densityTexelFormat(precision_, hasMissingValues_);
+    densityAtlas_ = createAtlas(texelFormat.internalFormat, layout_.size);
+    // Validity reads as alpha; without missing values alpha is 1 everywhere (R*'s default).
     if (hasMissingValues_) glTextureParameteri(densityAtlas_.id(), GL_TEXTURE_SWIZZLE_A, GL_GREEN);
     maskAtlas_ = createAtlas(GL_R8, hasMasks_ ? layout_.size : glm::ivec3(1));
     requireNoOutOfMemory(series, "volume atlas");
@@ -168,9 +189,9 @@ GpuSeries::GpuSeries(const Series& series)
         const auto& step = series.steps[index];
         const glm::ivec3 size = step.dims();
         const glm::ivec3 origin = layout_.brickOrigins[index];
-        const std::vector<std::uint16_t> texels = densityTexels(step, hasMissingValues_);
+        const std::vector<std::uint8_t> texels = densityTexelBytes(step, hasMissingValues_, precision_);
         glTextureSubImage3D(densityAtlas_.id(), 0, origin.x, origin.y, origin.z, size.x, size.y, size.z,
-                            hasMissingValues_ ? GL_RG : GL_RED, GL_UNSIGNED_SHORT, texels.data());
+                            hasMissingValues_ ? GL_RG : GL_RED, texelFormat.type, texels.data());
         if (step.mask) {
             // Upload masks as 0 / 255 so that trilinear filtering gives a smooth boundary at 0.5.
             maskTexels.resize(step.mask->size());
@@ -226,7 +247,8 @@ GpuSeries::GpuSeries(const Series& series)
 }
 
 std::size_t GpuSeries::textureBytes() const {
-    return layout_.texelCount() * (hasMissingValues_ ? 4 : 2) + (hasMasks_ ? layout_.texelCount() : 1) +
+    return layout_.texelCount() * bytesPerDensity(precision_) * (hasMissingValues_ ? 2 : 1) +
+           (hasMasks_ ? layout_.texelCount() : 1) +
            occupancyLayout_.texelCount() + structuredGrids_->gpuBytes();
 }
 

@@ -3,14 +3,20 @@
 
 #include <filesystem>
 #include <optional>
+#include <vector>
 
 #include <glm/glm.hpp>
+
+#include "tstyles/data/read_options.h"
 
 namespace tstyles::viewer {
 
 struct ViewerOptions {
-    // A scene file or a dataset (folder or manifest); none: the bundled default.
-    std::optional<std::filesystem::path> input;
+    // A scene file or a dataset (a manifest or its folder, or a file docs/readers.md lists); several:
+    // the files of one series; none: the bundled default.
+    std::vector<std::filesystem::path> inputs;
+    // How the first dataset is read (--var, --steps, ...); files opened later use the defaults.
+    ReadOptions readOptions;
     std::filesystem::path dataDirectory;  // where the bundled default is looked for
     std::optional<std::filesystem::path> script;
     glm::ivec2 windowSize{1280, 800};

@@ -19,7 +19,8 @@ namespace tstyles::viewer {
 namespace {
 
 ViewerDocument openInitialDocument(const ViewerOptions& options) {
-    return openDocument(options.input.value_or(defaultViewerInput(options.dataDirectory)), nullptr);
+    if (options.inputs.empty()) return openDocument(defaultViewerInput(options.dataDirectory), nullptr);
+    return openDocument(options.inputs, nullptr, options.readOptions);
 }
 
 std::optional<ScriptPlayer> loadScript(const ViewerOptions& options) {

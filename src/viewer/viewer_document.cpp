@@ -1,13 +1,15 @@
 // Opening scenes and datasets for the viewer.
 #include "viewer_document.h"
 
+#include <cctype>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
 #include "tstyles/core/errors.h"
-#include "tstyles/data/manifest.h"
+#include "tstyles/data/series_opener.h"
 #include "tstyles/scene/scene_file.h"
 
 namespace tstyles::viewer {
@@ -19,18 +21,27 @@ bool sameFile(const std::filesystem::path& a, const std::filesystem::path& b) {
     return !error && same;
 }
 
-std::shared_ptr<const Series> seriesFor(const std::filesystem::path& manifest, const ViewerDocument* current) {
-    if (current != nullptr && current->series && sameFile(manifest, current->series->manifestPath))
+std::shared_ptr<const Series> seriesFor(const std::vector<std::filesystem::path>& paths,
+                                        const ViewerDocument* current, const ReadOptions& readOptions) {
+    if (paths.size() == 1 && current != nullptr && current->series &&
+        sameFile(paths.front(), current->series->manifestPath))
         return current->series;
-    return std::make_shared<const Series>(loadSeries(manifest));
+    return std::make_shared<const Series>(openSeries(paths, readOptions));
 }
 
 }  // namespace
 
 ViewerInputKind classifyViewerInput(const std::filesystem::path& path) {
     if (std::filesystem::is_directory(path)) return ViewerInputKind::Dataset;
-    std::ifstream stream(path);
+    std::ifstream stream(path, std::ios::binary);
     if (!stream) return ViewerInputKind::Scene;  // let the scene reader say what is wrong
+    char first = 0;
+    while (stream.get(first) && std::isspace(static_cast<unsigned char>(first))) {
+    }
+    // Not JSON (which starts with an object or a comment): a data file, left to the opener.
+    if (!isManifestInput(path) && (!stream || (first != '{' && first != '/'))) return ViewerInputKind::Dataset;
+    stream.clear();
+    stream.seekg(0);
     std::stringstream text;
     text << stream.rdbuf();
     const nlohmann::json json = nlohmann::json::parse(text.str(), nullptr, false, true);
@@ -39,16 +50,19 @@ ViewerInputKind classifyViewerInput(const std::filesystem::path& path) {
     return ViewerInputKind::Scene;
 }
 
-ViewerDocument openDocument(const std::filesystem::path& path, const ViewerDocument* current) {
-    if (!std::filesystem::exists(path)) throwInputError(path, "", "no such file or folder");
+ViewerDocument openDocument(const std::vector<std::filesystem::path>& paths, const ViewerDocument* current,
+                            const ReadOptions& readOptions) {
+    if (paths.empty()) throw std::invalid_argument("openDocument: no path");
+    for (const auto& path : paths)
+        if (!std::filesystem::exists(path)) throwInputError(path, "", "no such file or folder");
     ViewerDocument document;
-    if (classifyViewerInput(path) == ViewerInputKind::Dataset) {
-        document.series = seriesFor(path, current);
+    if (paths.size() > 1 || classifyViewerInput(paths.front()) == ViewerInputKind::Dataset) {
+        document.series = seriesFor(paths, current, readOptions);
         document.scene.dataset = document.series->manifestPath;
     } else {
-        document.scene = loadScene(path);
-        document.series = seriesFor(document.scene.dataset, current);
-        document.sceneFile = std::filesystem::absolute(path).lexically_normal();
+        document.scene = loadScene(paths.front());
+        document.series = seriesFor({document.scene.dataset}, current, readOptions);
+        document.sceneFile = std::filesystem::absolute(paths.front()).lexically_normal();
     }
     if (document.series->size() == 0) throwInputError(document.series->manifestPath, "", "the series has no time-steps");
     document.histogram = (current != nullptr && current->series == document.series)
@@ -56,6 +70,10 @@ ViewerDocument openDocument(const std::filesystem::path& path, const ViewerDocum
                              : std::make_shared<const DensityHistogram>(computeDensityHistogram(*document.series));
     document.openedCamera = document.scene.camera;
     return document;
+}
+
+ViewerDocument openDocument(const std::filesystem::path& path, const ViewerDocument* current) {
+    return openDocument(std::vector<std::filesystem::path>{path}, current, ReadOptions{});
 }
 
 std::filesystem::path defaultViewerInput(const std::filesystem::path& dataDirectory) {

@@ -6,8 +6,10 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "density_histogram.h"
+#include "tstyles/data/read_options.h"
 #include "tstyles/data/series.h"
 #include "tstyles/scene/scene.h"
 
@@ -25,11 +27,16 @@ struct ViewerDocument {
 
 enum class ViewerInputKind { Scene, Dataset };
 
-// A folder, or a JSON file that is a series manifest, is a dataset; any other file a scene.
+// A folder, a JSON file that is a series manifest, or a file that is not JSON (NetCDF, NIfTI,
+// NRRD, Plot3D, Isabel: docs/readers.md) is a dataset; a JSON file naming a dataset is a scene.
 ViewerInputKind classifyViewerInput(const std::filesystem::path& path);
 
-// Opens a scene file or a dataset (with a default scene). A series already held by `current` is
-// reused rather than read again. Throws InputError naming the file and the problem.
+// Opens a scene file or a dataset (with a default scene); several paths are the files of one
+// series. The dataset is read with `readOptions` (the command line's --var, --steps, ...). A
+// series already held by `current` is reused rather than read again. Throws InputError naming the
+// file and the problem.
+ViewerDocument openDocument(const std::vector<std::filesystem::path>& paths, const ViewerDocument* current,
+                            const ReadOptions& readOptions);
 ViewerDocument openDocument(const std::filesystem::path& path, const ViewerDocument* current);
 
 // What `tstyles view` opens without an argument: the bundled Figure 1 scene, else the bundled

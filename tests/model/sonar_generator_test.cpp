@@ -180,8 +180,9 @@ TEST_F(SmallSurvey, EveryPingIsABeamGridWithAMaskOfTheSchoolInsideTheFan) {
 }
 
 TEST_F(SmallSurvey, ConsecutiveFansOverlapOnlyPartly) {
-    // The transducers are 6 m apart and the fans 33 m long (along the track) at the school's
-    // depth: the school's centre at ping 0 lies in fan 1 but not in fan 2's far side.
+    // The transducers are 6 m apart and the fans 33 m long (along the track, +-16.4 m) at 45 m
+    // down: a point 25 m ahead of ping 0 is outside fan 0 but inside fan 2 (13 m ahead of it);
+    // a point 9 m ahead lies in fans 0 and 1 both.
     const auto& steps = series().steps;
     const auto inFan = [&](std::size_t ping, const glm::dvec3& world) {
         const tstyles::RawTimeStep& step = steps[ping];

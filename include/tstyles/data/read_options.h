@@ -6,6 +6,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,7 +29,7 @@ struct StepSelection {
 enum class MemoryFit { Refuse, Resolution, Steps };
 
 struct ReadOptions {
-    std::string variable;                          // NetCDF: the variable (--var)
+    std::string variable;                          // NetCDF, Plot3D: the variable (--var)
     std::string timeDimension;                     // NetCDF: the time dimension when it is not found (--time-dim)
     bool indexAxes = false;                        // NetCDF: unit spacing instead of coordinate variables
     std::optional<StepSelection> steps;            // --steps first:end:stride
@@ -38,6 +39,10 @@ struct ReadOptions {
     std::optional<std::uint64_t> maxMemoryBytes;   // --max-memory
     MemoryFit fit = MemoryFit::Refuse;             // --fit
     DensityPrecision precision = DensityPrecision::Bits16;  // --precision
+    // Plot3D: the solution (or function) files, one per time-step; given, the input is a grid file.
+    std::vector<std::filesystem::path> solutionFiles;   // --solution
+    int block = 0;                                      // --block
+    double gamma = 1.4;                                 // --gamma
 };
 
 // Parsers for the command-line spellings; a bad spelling is an InputError naming `option`.

@@ -148,8 +148,8 @@ struct Series {
     // The raw values mapped to density 0 and 1.
     std::array<double, 2> valueRange{0.0, 1.0};
     std::vector<TimeStep> steps;
-    // The GPU precision the reader's memory check assumed (ReadOptions::precision); the renderer
-    // does not read it yet and stores R16.
+    // How the GPU stores the densities (ReadOptions::precision, --precision): R8, R16 or R32F
+    // (RG pairs with missing values); the reader's memory check assumes the same.
     DensityPrecision precision = DensityPrecision::Bits16;
     // The file format it was read from ("tstyles manifest", "NetCDF-4", "NRRD", ...).
     std::string sourceFormat = "tstyles manifest";

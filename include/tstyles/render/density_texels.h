@@ -17,4 +17,8 @@ bool hasMissingValues(const Series& series);
 // a missing voxel becomes (0, 0).
 std::vector<std::uint16_t> densityTexels(const TimeStep& step, bool withValidity);
 
+// The same at a chosen precision, as the bytes of the texture upload: uint8 (0..255), uint16
+// (0..65535) or float32 (0..1) per channel, native byte order.
+std::vector<std::uint8_t> densityTexelBytes(const TimeStep& step, bool withValidity, DensityPrecision precision);
+
 }  // namespace tstyles

@@ -37,6 +37,9 @@ public:
     bool allAffine() const { return allAffine_; }
     // True when the density atlas holds (density * validity, validity) pairs.
     bool hasMissingValues() const { return hasMissingValues_; }
+    // The density atlas' storage: R8, R16 or R32F (RG8, RG16, RG32F with missing values), from
+    // Series::precision.
+    DensityPrecision precision() const { return precision_; }
     // Bytes of texture memory: the density atlas, the mask atlas.
     std::size_t textureBytes() const;
 
@@ -55,6 +58,7 @@ private:
     bool hasMasks_ = false;
     bool allAffine_ = true;
     bool hasMissingValues_ = false;
+    DensityPrecision precision_ = DensityPrecision::Bits16;
     AtlasLayout layout_;
     Texture densityAtlas_;
     Texture maskAtlas_;

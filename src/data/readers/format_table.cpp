@@ -8,7 +8,9 @@
 #include "netcdf_reader.h"
 #include "nifti_reader.h"
 #include "nrrd_reader.h"
+#include "plot3d_source.h"
 #include "stacked_files.h"
+#include "tstyles/core/errors.h"
 
 namespace tstyles {
 namespace {
@@ -24,17 +26,33 @@ bool startsWithNrrdMagic(const std::filesystem::path& file) {
 
 const std::vector<SeriesFormat>& seriesFormats() {
     static const std::vector<SeriesFormat> formats = {
-        {"NetCDF", {".nc", ".nc4", ".cdf", ".netcdf"}, hasNetcdfSignature,
+        {"NetCDF", {".nc", ".nc4", ".cdf", ".netcdf"}, ".nc .nc4 .cdf .netcdf",
+         {"--var", "--time-dim", "--index-axes"}, hasNetcdfSignature,
          stackedFiles([](const std::filesystem::path& file, const ReadOptions& options) {
              return openNetcdf(file, options);
          })},
-        {"NIfTI", {".nii", ".nii.gz"}, hasNiftiSignature,
+        {"NIfTI", {".nii", ".nii.gz"}, ".nii .nii.gz", {}, hasNiftiSignature,
          stackedFiles([](const std::filesystem::path& file, const ReadOptions&) { return openNifti(file); })},
-        {"NRRD", {".nrrd", ".nhdr"}, startsWithNrrdMagic,
+        {"NRRD", {".nrrd", ".nhdr"}, ".nrrd .nhdr", {}, startsWithNrrdMagic,
          stackedFiles([](const std::filesystem::path& file, const ReadOptions&) { return openNrrd(file); })},
-        {"Hurricane Isabel raw", {".bin", ".bin.gz"}, isIsabelFileName,
+        // By name only: ".bin" alone says too little.
+        {"Hurricane Isabel raw", {}, "VARIABLEfHH.bin or .bin.gz", {"--dims"}, isIsabelFileName,
          [](const std::vector<std::filesystem::path>& files, const ReadOptions& options) {
              return openIsabel(files, options.rawDims);
+         }},
+        // Last: its content sniff reads the whole file to find a layout that fits.
+        {kPlot3DFormatName, {".xyz", ".x", ".g", ".grd"}, ".xyz .x .g .grd, with --solution",
+         {"--var", "--solution", "--block", "--gamma"}, looksLikePlot3DGrid,
+         [](const std::vector<std::filesystem::path>& files, const ReadOptions& options) {
+             if (files.size() > 1)
+                 throwInputError(files[1], "", "a Plot3D series is one grid file; give its solution files with --solution");
+             Plot3DOptions plot3d;
+             plot3d.gridFile = files.front();
+             plot3d.solutionFiles = options.solutionFiles;
+             if (!options.variable.empty()) plot3d.variable = options.variable;
+             plot3d.block = options.block;
+             plot3d.gamma = options.gamma;
+             return openPlot3DSource(plot3d);
          }},
     };
     return formats;

@@ -14,10 +14,14 @@ namespace tstyles {
 struct SeriesFormat {
     std::string name;
     std::vector<std::string> extensions;                        // lower case, with the dot: ".nii.gz"
+    std::string spelling;                                       // how its files look, for messages
+    std::vector<std::string> options;                           // the format-only options it takes: "--var", ...
     std::function<bool(const std::filesystem::path&)> sniff;    // recognises the content; may be empty
     // Opens one file, or several that form one series.
     std::function<SourceSeries(const std::vector<std::filesystem::path>&, const ReadOptions&)> open;
 };
+
+inline constexpr const char* kPlot3DFormatName = "Plot3D";
 
 const std::vector<SeriesFormat>& seriesFormats();
 

@@ -65,10 +65,12 @@ SourceSeries openIsabel(const std::vector<std::filesystem::path>& paths, const s
     for (const IsabelFile& file : files) {
         SourceStep step;
         step.time = double(file.hour);
-        step.grid.dims = gridDims;
+        RectilinearGrid grid;
+        grid.dims = gridDims;
         // One unit per original sample along every axis: the contest renderings' aspect (the
         // true 2000 km by 2000 km by 20 km box would be a sheet).
-        step.grid.spacing = glm::dvec3(1.0);
+        grid.spacing = glm::dvec3(1.0);
+        step.grid = grid;
         step.type = ValueType::Float32;
         step.file = file.path;
         source.steps.push_back(step);

@@ -15,7 +15,11 @@ NetcdfFile::NetcdfFile(std::filesystem::path file) : path_(std::move(file)) {
     const int status = nc_open(path_.c_str(), NC_NOWRITE, &id_);
     if (status != NC_NOERR) {
         id_ = -1;
-        throwInputError(path_, "", std::string("not a readable NetCDF file: ") + nc_strerror(status));
+        const auto bytes = std::filesystem::file_size(path_, error);
+        throwInputError(path_, "",
+                        std::string("not a readable NetCDF file (truncated or damaged? ") +
+                            (error ? std::string("size unknown") : std::to_string(bytes) + " bytes") +
+                            "): " + nc_strerror(status));
     }
 }
 

@@ -110,8 +110,10 @@ SourceSeries openNifti(const std::filesystem::path& file) {
     for (std::size_t index = 0; index < stepCount; ++index) {
         SourceStep timeStep;
         timeStep.time = image->toffset + double(index) * step;
-        timeStep.grid.dims = dims;
-        timeStep.grid.spacing = frame.spacing;
+        RectilinearGrid grid;
+        grid.dims = dims;
+        grid.spacing = frame.spacing;
+        timeStep.grid = grid;
         timeStep.placement = frame.placement;
         timeStep.type = type;
         timeStep.file = dataFile;

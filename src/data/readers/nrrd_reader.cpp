@@ -123,8 +123,10 @@ SourceSeries openNrrd(const std::filesystem::path& file) {
     for (std::size_t index = 0; index < stepCount; ++index) {
         SourceStep step;
         step.time = stepTime(header, layout.timeAxis, index);
-        step.grid.dims = dims;
-        step.grid.spacing = frame.spacing;
+        RectilinearGrid grid;
+        grid.dims = dims;
+        grid.spacing = frame.spacing;
+        step.grid = grid;
         step.placement = frame.placement;
         step.type = header.type;
         step.file = header.dataFile;

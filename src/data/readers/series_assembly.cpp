@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <sstream>
+#include <variant>
 
 #include "../raw_values.h"
 #include "resampling.h"
@@ -13,10 +15,14 @@
 namespace tstyles {
 namespace {
 
+// Bytes, KiB, MiB or GiB, whichever says it best (a figure of "0.0 MiB" says nothing).
 std::string mebibytes(double bytes) {
     std::ostringstream text;
     text.precision(1);
-    text << std::fixed << bytes / (1024.0 * 1024.0) << " MiB";
+    if (bytes < 10240.0) text << std::fixed << std::setprecision(0) << bytes << " bytes";
+    else if (bytes < 1024.0 * 1024.0) text << std::fixed << bytes / 1024.0 << " KiB";
+    else if (bytes < 1024.0 * 1024.0 * 1024.0) text << std::fixed << bytes / (1024.0 * 1024.0) << " MiB";
+    else text << std::fixed << bytes / (1024.0 * 1024.0 * 1024.0) << " GiB";
     return text.str();
 }
 
@@ -52,9 +58,18 @@ Plan initialPlan(const SourceSeries& source, const ReadOptions& options) {
                         "selects no time-step: the file holds " + std::to_string(source.steps.size()) +
                             " (indices 0 to " + std::to_string(source.steps.size() - 1) + ")");
     }
-    for (std::size_t index : plan.steps)
-        plan.dims.push_back(options.resampleTo.value_or(source.steps[index].grid.dims));
+    for (std::size_t index : plan.steps) {
+        if (options.resampleTo && std::holds_alternative<StructuredGrid>(source.steps[index].grid))
+            throwInputError(source.file, "--resample",
+                            "applies to rectilinear grids; a structured (Plot3D) grid is read at its own nodes");
+        plan.dims.push_back(options.resampleTo.value_or(gridDims(source.steps[index].grid)));
+    }
     return plan;
+}
+
+bool anyStructured(const SourceSeries& source) {
+    return std::any_of(source.steps.begin(), source.steps.end(),
+                       [](const SourceStep& step) { return std::holds_alternative<StructuredGrid>(step.grid); });
 }
 
 [[noreturn]] void refuse(const SourceSeries& source, const Plan& plan, const ReadOptions& options,
@@ -89,6 +104,9 @@ void fitBySteps(const SourceSeries& source, Plan& plan, const ReadOptions& optio
 
 // Every time-step shrunk by one factor until the series fits.
 void fitByResolution(const SourceSeries& source, Plan& plan, const ReadOptions& options) {
+    if (anyStructured(source))
+        refuse(source, plan, options, "a structured (Plot3D) grid cannot be read at a lower resolution; allow more, "
+                                      "or add --fit steps");
     const double allowed = double(*options.maxMemoryBytes);
     double scale = std::cbrt(planBytes(plan, options) / allowed);
     const std::vector<glm::ivec3> original = plan.dims;
@@ -155,11 +173,12 @@ Series assembleRawSeries(const SourceSeries& source, const ReadOptions& options)
         step.sourceType = from.type;
         step.valuesFile = from.file;
         std::vector<float> values = source.readStep(plan.steps[kept]);
-        if (plan.dims[kept] == from.grid.dims) {
+        if (plan.dims[kept] == gridDims(from.grid)) {
             step.grid = from.grid;
         } else {
-            step.grid = resampledGrid(from.grid, plan.dims[kept]);
-            values = resampleValues(values, from.grid, plan.dims[kept]);
+            const auto& grid = std::get<RectilinearGrid>(from.grid);  // structured grids are never resampled
+            step.grid = resampledGrid(grid, plan.dims[kept]);
+            values = resampleValues(values, grid, plan.dims[kept]);
         }
         step.rawRange = rangeOf(values);
         step.density = std::move(values);

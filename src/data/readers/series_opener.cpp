@@ -2,6 +2,7 @@
 #include "tstyles/data/series_opener.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "format_table.h"
 #include "series_assembly.h"
@@ -21,23 +22,38 @@ bool endsWith(const std::string& text, const std::string& suffix) {
     return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-const SeriesFormat& formatOf(const std::filesystem::path& input) {
-    std::error_code error;
-    if (!std::filesystem::exists(input, error)) throwInputError(input, "", "no such file or folder");
+const SeriesFormat& formatByName(const std::string& name) {
+    for (const SeriesFormat& format : seriesFormats())
+        if (format.name == name) return format;
+    throw std::logic_error("no series format named " + name);
+}
+
+const SeriesFormat* formatByExtension(const std::filesystem::path& input) {
     const std::string name = lowercaseName(input);
     for (const SeriesFormat& format : seriesFormats())
         for (const std::string& extension : format.extensions)
-            if (endsWith(name, extension)) return format;
+            if (endsWith(name, extension)) return &format;
+    return nullptr;
+}
+
+// Solution files say the input is a Plot3D grid, whatever its name (unless it is named like
+// another format); otherwise the extension decides, then the content.
+const SeriesFormat& formatOf(const std::filesystem::path& input, const ReadOptions& options) {
+    std::error_code error;
+    if (!std::filesystem::exists(input, error)) throwInputError(input, "", "no such file or folder");
+    const SeriesFormat* byExtension = formatByExtension(input);
+    if (!options.solutionFiles.empty()) {
+        if (byExtension && byExtension->name != kPlot3DFormatName)
+            throwInputError(input, "--solution",
+                            "applies to Plot3D grid files, and this is named like a " + byExtension->name + " file");
+        return formatByName(kPlot3DFormatName);
+    }
+    if (byExtension) return *byExtension;
     for (const SeriesFormat& format : seriesFormats())
         if (format.sniff && format.sniff(input)) return format;
-    std::string known;
-    for (const SeriesFormat& format : seriesFormats()) {
-        known += ", " + format.name + " (";
-        for (std::size_t index = 0; index < format.extensions.size(); ++index)
-            known += (index ? " " : "") + format.extensions[index];
-        known += ")";
-    }
-    throwInputError(input, "", "unknown format: neither its name nor its first bytes match a series manifest (.json or folder)" + known);
+    std::string known = "tstyles manifest (.json, or its folder)";
+    for (const SeriesFormat& format : seriesFormats()) known += "; " + format.name + " (" + format.spelling + ")";
+    throwInputError(input, "", "unknown format: its name and first bytes match none of " + known);
 }
 
 // A manifest is already prepared: the reading options have nothing to choose in it.
@@ -45,7 +61,7 @@ void rejectReadingOptions(const std::filesystem::path& manifest, const ReadOptio
     const auto reject = [&](bool given, const char* option) {
         if (given)
             throwInputError(manifest, option,
-                            "applies to NetCDF, NIfTI, NRRD and Isabel files, not to a tstyles manifest");
+                            "applies to NetCDF, NIfTI, NRRD, Plot3D and Isabel files, not to a tstyles manifest");
     };
     reject(!options.variable.empty(), "--var");
     reject(!options.timeDimension.empty(), "--time-dim");
@@ -55,12 +71,41 @@ void rejectReadingOptions(const std::filesystem::path& manifest, const ReadOptio
     reject(options.resampleTo.has_value(), "--resample");
     reject(options.rawDims.has_value(), "--dims");
     reject(options.maxMemoryBytes.has_value(), "--max-memory");
+    reject(!options.solutionFiles.empty(), "--solution");
+    reject(options.block != 0, "--block");
+    reject(options.gamma != ReadOptions{}.gamma, "--gamma");
+}
+
+// The options that only some formats take, as the command line spells them, where given.
+std::vector<std::string> formatOnlyOptionsGiven(const ReadOptions& options) {
+    std::vector<std::string> given;
+    if (!options.variable.empty()) given.push_back("--var");
+    if (!options.timeDimension.empty()) given.push_back("--time-dim");
+    if (options.indexAxes) given.push_back("--index-axes");
+    if (options.rawDims) given.push_back("--dims");
+    if (!options.solutionFiles.empty()) given.push_back("--solution");
+    if (options.block != 0) given.push_back("--block");
+    if (options.gamma != ReadOptions{}.gamma) given.push_back("--gamma");
+    return given;
+}
+
+// An option the format has no use for is an error, not silently ignored.
+void rejectForeignOptions(const std::filesystem::path& input, const SeriesFormat& format, const ReadOptions& options) {
+    for (const std::string& option : formatOnlyOptionsGiven(options))
+        if (std::find(format.options.begin(), format.options.end(), option) == format.options.end()) {
+            std::string takers;
+            for (const SeriesFormat& other : seriesFormats())
+                if (std::find(other.options.begin(), other.options.end(), option) != other.options.end())
+                    takers += (takers.empty() ? "" : " and ") + other.name;
+            throwInputError(input, option, "does not apply to " + format.name + " files (only to " + takers + ")");
+        }
 }
 
 SourceSeries openSource(const std::vector<std::filesystem::path>& inputs, const ReadOptions& options) {
-    const SeriesFormat& format = formatOf(inputs.front());
+    const SeriesFormat& format = formatOf(inputs.front(), options);
+    rejectForeignOptions(inputs.front(), format, options);
     for (const auto& input : inputs)
-        if (&formatOf(input) != &format)
+        if (&formatOf(input, options) != &format)
             throwInputError(input, "", "is not " + format.name + " like " + inputs.front().string() +
                                            ": a series is read from files of one format");
     return format.open(inputs, options);
@@ -74,7 +119,7 @@ bool isManifestInput(const std::filesystem::path& input) {
 }
 
 std::string seriesFormatName(const std::filesystem::path& input) {
-    return isManifestInput(input) ? "tstyles manifest" : formatOf(input).name;
+    return isManifestInput(input) ? "tstyles manifest" : formatOf(input, {}).name;
 }
 
 Series openRawSeries(const std::vector<std::filesystem::path>& inputs, const ReadOptions& options) {

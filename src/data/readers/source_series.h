@@ -15,7 +15,7 @@ namespace tstyles {
 
 struct SourceStep {
     double time = 0.0;
-    RectilinearGrid grid;
+    Grid grid;  // rectilinear for most formats; structured for Plot3D
     Placement placement;
     ValueType type = ValueType::Float32;
     std::filesystem::path file;  // the file the values come from

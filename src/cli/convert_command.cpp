@@ -1,0 +1,48 @@
+// `tstyles convert INPUT... -o FOLDER`: a scientist's file (NetCDF, NIfTI, NRRD, Plot3D, Isabel),
+// read with the usual options, kept as our manifest form (docs/dataset-format.md).
+#include <iostream>
+#include <memory>
+
+#include "commands.h"
+#include "tstyles/data/series_export.h"
+#include "tstyles/data/series_opener.h"
+
+namespace tstyles::cli {
+namespace {
+
+struct ConvertOptions {
+    std::vector<std::filesystem::path> inputs;
+    std::filesystem::path output;
+    bool force = false;
+    DatasetOptions dataset;
+};
+
+int runConvert(const ConvertOptions& options) {
+    const Series raw = openRawSeries(options.inputs, toReadOptions(options.dataset));
+    writeSeriesFolder(toRawSeries(raw, options.inputs.front()), options.output, options.force);
+    std::size_t voxels = 0;
+    for (const TimeStep& step : raw.steps) voxels += step.density.size();
+    std::cout << "wrote " << (options.output / "series.json").string() << " (" << raw.sourceFormat << ", "
+              << raw.size() << " time-steps, " << voxels << " float32 values, value range [" << raw.valueRange[0]
+              << ", " << raw.valueRange[1] << "])\n";
+    return kExitSuccess;
+}
+
+}  // namespace
+
+Command addConvertCommand(CLI::App& app) {
+    auto options = std::make_shared<ConvertOptions>();
+    CLI::App* command = app.add_subcommand(
+        "convert", "Read NetCDF, NIfTI, NRRD, Plot3D or Isabel files and keep the series as a tstyles manifest folder");
+    command
+        ->add_option("input", options->inputs,
+                     "A NetCDF, NIfTI, NRRD or Plot3D grid file, or several files that form one series")
+        ->required();
+    command->add_option("-o,--output", options->output, "Dataset folder to write (series.json and raw files)")
+        ->required();
+    command->add_flag("--force", options->force, "Replace the output folder if it exists and is not empty");
+    addDatasetOptions(*command, options->dataset);
+    return {command, [options] { return runConvert(*options); }};
+}
+
+}  // namespace tstyles::cli
