@@ -1,6 +1,6 @@
 // Uneven rectilinear axes (depth or pressure levels): along such an axis the time-step's
 // worldToVoxel gives the grid-local position, and the axis' node list turns it into a fractional
-// node index (binary search, then linear between the two nodes). Mirrors tstyles/data/grid_axes.h.
+// node index (bucket lookup, then linear between the two nodes). Mirrors tstyles/data/grid_axes.h.
 layout(std430, binding = UNEVEN_AXIS_BUFFER) readonly buffer UnevenAxes {
     ivec4 firstNode[];  // per time-step, per axis: index of its first node in axisNodes; -1: even
 } unevenAxes;
@@ -13,17 +13,19 @@ bool isUnevenAxis(int step, int axis) {
 }
 
 // The fractional node index of grid-local `position` along an uneven axis; clamped to the grid.
+// Mirrors lookUpNodeIndex (tstyles/render/uneven_axis_table.h).
 float nodeIndexOf(int step, int axis, float position) {
     int first = unevenAxes.firstNode[step][axis];
     int count = int(timeSteps.steps[step].dims[axis]);
+    // After the nodes, a bucket lookup: 1 / bucket width, bucket count, each bucket's lower node.
+    // Buckets are at most half the finest gap wide, so the walks below take a step or none.
+    int lookup = first + count;
+    int buckets = int(axisNodes.positions[lookup + 1]);
+    int bucket = clamp(int(position * axisNodes.positions[lookup]), 0, buckets - 1);
     // The last node at or below `position`, in [0, count - 2].
-    int low = 0;
-    int high = count - 2;
-    while (low < high) {
-        int middle = (low + high + 1) / 2;
-        if (axisNodes.positions[first + middle] <= position) low = middle;
-        else high = middle - 1;
-    }
+    int low = int(axisNodes.positions[lookup + 2 + bucket]);
+    while (low < count - 2 && axisNodes.positions[first + low + 1] <= position) ++low;
+    while (low > 0 && axisNodes.positions[first + low] > position) --low;
     float lower = axisNodes.positions[first + low];
     float upper = axisNodes.positions[first + low + 1];
     return clamp(float(low) + (position - lower) / (upper - lower), 0.0, float(count - 1));

@@ -1,7 +1,8 @@
 // The ray in the voxel coordinates of each time-step it meets, set up once per pixel: where a
 // time-step's world -> voxel map is affine (TimeStepInfo.flags.x), a sample's voxel position is
-// origin + t * direction, with no matrix read or product per sample. Other grids take the general
-// voxelCoordinate() at every sample.
+// origin + t * direction, with no matrix read or product per sample. Along uneven rectilinear axes
+// that is the grid-local position, which the axis' node lookup turns into a node index; structured
+// and beam grids take the general voxelCoordinate() at every sample.
 vec3 activeVoxelOrigin[MAX_TIME_STEPS];     // voxel coordinates at t = 0 (affine time-steps)
 vec3 activeVoxelDirection[MAX_TIME_STEPS];  // voxel units per unit of t (affine time-steps)
 vec3 activeVoxelUpper[MAX_TIME_STEPS];      // dims - 1: where the clamp to the grid ends
@@ -24,8 +25,12 @@ void prepareVoxelRays(Ray ray) {
 // ALL_AFFINE (volume_sampling.glsl) leaves the general path out of the program.
 
 vec3 voxelAtSample(int slot, int step, vec3 position, float t) {
+    vec3 voxel = activeVoxelOrigin[slot] + t * activeVoxelDirection[slot];
 #if !ALL_AFFINE
-    if (!activeAffine[slot]) return voxelCoordinate(step, position);
+    if (!activeAffine[slot]) {
+        if (isStructured(step) || isBeamGrid(step)) return voxelCoordinate(step, position);
+        voxel = applyUnevenAxes(step, voxel);
+    }
 #endif
-    return clamp(activeVoxelOrigin[slot] + t * activeVoxelDirection[slot], vec3(0.0), activeVoxelUpper[slot]);
+    return clamp(voxel, vec3(0.0), activeVoxelUpper[slot]);
 }

@@ -9,7 +9,8 @@ const std::vector<BenchDataset>& benchDatasets() {
     static const std::vector<BenchDataset> datasets = {
         {"superellipsoid", "super-ellipsoid, 10 x 64^3, partial overlap", "figure4-"},
         {"superellipsoid-aligned", "super-ellipsoid, 10 steps on one 256x128x64 grid, fully aligned", "figure4-"},
-        {"hurricane", "hurricane-sized, 10 x 125x125x25, fully overlapping", "figure4-"},
+        {"hurricane", "synthetic hurricane, 10 x 125x125x25, fully overlapping", "", "figure5-focus-step5",
+         "figure6-left-max-density-change"},
         {"sonar", "sonar, 10 pings x 25x20x1319 beams, partial overlap", "", "figure6-centre-index-tstf",
          "figure6-right-max-density-change"},
     };

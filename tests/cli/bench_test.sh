@@ -23,6 +23,16 @@ case_matrix_skips_missing_dataset() {
     return 0
 }
 
+# The synthetic hurricane (generated with the build) measures with its own Figure 5 and 6 scenes.
+case_hurricane_rows() {
+    run_tstyles -- bench --sizes 24 --frames 1 --warmup 0 --datasets hurricane --json "$SCRATCH/hurricane.json"
+    expect_exit 0
+    expect_rows hurricane 10 24
+    grep -q '"scene": "figure5-focus-step5"' "$SCRATCH/hurricane.json" || fail "MIP and average not on Figure 5's scene"
+    grep -q '"scene": "figure6-left-max-density-change"' "$SCRATCH/hurricane.json" ||
+        fail "max density change not on Figure 6's scene"
+}
+
 case_no_dataset_there() {
     run_tstyles -- bench --sizes 24 --frames 1 --warmup 0 --datasets no-such-dataset
     expect_exit 2

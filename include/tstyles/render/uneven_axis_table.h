@@ -14,11 +14,18 @@ namespace tstyles {
 struct UnevenAxisTable {
     // Per time-step, per axis: the index of the axis' first node in `positions`, or -1 (even).
     std::vector<glm::ivec4> firstNode;
-    // Every uneven axis' nodes; never empty (one unused 0), so the buffer can always be bound.
+    // Every uneven axis' nodes, each list followed by its bucket lookup (1 / bucket width, bucket
+    // count, each bucket's lower node), so that a position finds its cell with one read and a step
+    // or two instead of a binary search; never empty (one unused 0), so the buffer can always be bound.
     std::vector<float> positions;
 };
 
 UnevenAxisTable buildUnevenAxisTable(const Series& series);
+
+// The fractional node index of grid-local `position` along the axis whose `count` nodes start at
+// `first`, through its bucket lookup, clamped to [0, count - 1]: what shaders/uneven_axes.glsl's
+// nodeIndexOf computes (the tests check it against data/grid_axes.h).
+float lookUpNodeIndex(const UnevenAxisTable& table, int first, int count, float position);
 
 // The per-axis distance that worldToVoxel divides by: the spacing, or 1 along an uneven axis.
 glm::dvec3 voxelScale(const RectilinearGrid& grid);
