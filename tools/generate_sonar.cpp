@@ -6,8 +6,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include "generator_main.h"
+
 #include "sonar/sonar_series.h"
-#include "tstyles/core/errors.h"
 
 int main(int argc, char** argv) {
     CLI::App app{"Writes the synthetic sonar survey (uint16 echo amplitudes, one beam grid and school mask per ping)."};
@@ -16,19 +17,11 @@ int main(int argc, char** argv) {
     app.add_option("--output", output, "Directory for series.json and the raw files")->required();
     app.add_option("--pings", options.pings, "Number of pings (time-steps), 2 s apart")
         ->check(CLI::Range(1, sonar::kMaxPings));
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& error) {
-        const int code = app.exit(error);
-        return code == 0 ? 0 : 2;
-    }
+    if (const auto exitCode = generator::parseArguments(app, argc, argv)) return *exitCode;
 
-    try {
-        tstyles::writeSeries(sonar::buildSonarSeries(options), output);
-    } catch (const tstyles::InputError& error) {
-        std::cerr << "generate_sonar: " << error.what() << "\n";
-        return 2;
-    }
+    const int exitCode = generator::runReportingErrors(
+        "generate_sonar", [&] { tstyles::writeSeries(sonar::buildSonarSeries(options), output); });
+    if (exitCode != 0) return exitCode;
     std::cout << "wrote " << options.pings << " pings to " << output.string() << "\n";
     return 0;
 }

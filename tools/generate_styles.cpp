@@ -2,6 +2,8 @@
 // Usage:
 //   generate_styles --output DIR [--size N] [--contact-sheet FILE]
 #include <CLI/CLI.hpp>
+
+#include "generator_main.h"
 #include <filesystem>
 #include <iostream>
 #include <system_error>
@@ -22,15 +24,9 @@ int main(int argc, char** argv) {
     std::filesystem::path contactSheet;
     app.add_option("--contact-sheet", contactSheet,
                    "Also write one picture of all styles, cut out over a checkerboard (for the docs)");
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& error) {
-        // Help is a success; any other parse problem is a usage error: exit 2, like user errors.
-        const int code = app.exit(error);
-        return code == 0 ? 0 : 2;
-    }
+    if (const auto exitCode = generator::parseArguments(app, argc, argv)) return *exitCode;
 
-    try {
+    const int exitCode = generator::runReportingErrors("generate_styles", [&] {
         std::error_code error;
         std::filesystem::create_directories(output, error);
         if (error) tstyles::throwInputError(output, "", "cannot create the folder: " + error.message());
@@ -41,9 +37,6 @@ int main(int argc, char** argv) {
         if (!contactSheet.empty()) styles::writePng(styles::drawContactSheet(library, size, 6), contactSheet);
         std::cout << "wrote " << library.size() << " styles of " << size << "x" << size << " to "
                   << output.string() << "\n";
-    } catch (const tstyles::InputError& error) {
-        std::cerr << "generate_styles: " << error.what() << "\n";
-        return 2;
-    }
-    return 0;
+    });
+    return exitCode;
 }

@@ -7,8 +7,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include "generator_main.h"
+
 #include "superellipsoid/bouncing_series.h"
-#include "tstyles/core/errors.h"
 #include "tstyles/data/manifest.h"
 
 int main(int argc, char** argv) {
@@ -24,20 +25,11 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(8, 1024));
     app.add_option("--duration", options.duration, "Simulated seconds the time-steps span")
         ->check(CLI::Range(0.01, 1000.0));
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& error) {
-        // Help is a success; any other parse problem is a usage error: exit 2, like user errors.
-        const int code = app.exit(error);
-        return code == 0 ? 0 : 2;
-    }
+    if (const auto exitCode = generator::parseArguments(app, argc, argv)) return *exitCode;
 
-    try {
-        tstyles::writeSeries(superellipsoid::buildBouncingSeries(options), output);
-    } catch (const tstyles::InputError& error) {
-        std::cerr << "generate_superellipsoid: " << error.what() << "\n";
-        return 2;
-    }
+    const int exitCode = generator::runReportingErrors(
+        "generate_superellipsoid", [&] { tstyles::writeSeries(superellipsoid::buildBouncingSeries(options), output); });
+    if (exitCode != 0) return exitCode;
     std::cout << "wrote " << options.steps << " time-steps to " << output.string() << "\n";
     return 0;
 }

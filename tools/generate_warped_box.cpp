@@ -8,7 +8,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "tstyles/core/errors.h"
+#include "generator_main.h"
+
 #include "tstyles/data/manifest.h"
 #include "tstyles/data/warped_box.h"
 #include "warped_box/plot3d_writer.h"
@@ -41,14 +42,9 @@ int main(int argc, char** argv) {
     app.add_option("--output", output, "Directory to write into")->required();
     app.add_option("--steps", steps, "Number of time-steps")->check(CLI::Range(1, 1000));
     app.add_flag("--plot3d", plot3d, "Write grid.xyz and flowNN.q (Plot3D) instead of a tstyles series");
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& error) {
-        const int code = app.exit(error);
-        return code == 0 ? 0 : 2;
-    }
+    if (const auto exitCode = generator::parseArguments(app, argc, argv)) return *exitCode;
 
-    try {
+    const int exitCode = generator::runReportingErrors("generate_warped_box", [&] {
         const tstyles::WarpedBox box = demoBox();
         const tstyles::StructuredGrid grid = box.grid();
         std::filesystem::create_directories(output);
@@ -83,10 +79,8 @@ int main(int argc, char** argv) {
             series.steps.push_back(std::move(raw));
         }
         if (!plot3d) tstyles::writeSeries(series, output);
-    } catch (const tstyles::InputError& error) {
-        std::cerr << "generate_warped_box: " << error.what() << "\n";
-        return 2;
-    }
+    });
+    if (exitCode != 0) return exitCode;
     std::cout << "wrote " << steps << " time-steps to " << output.string() << "\n";
     return 0;
 }
