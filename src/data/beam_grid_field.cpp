@@ -12,7 +12,6 @@ namespace {
 // Beams must point into the half-space in front of the transducer; beyond 80 degrees the fan's
 // sides approach that plane and tan() grows without bound.
 constexpr double kMaxBeamAngleDeg = 80.0;
-constexpr std::uint64_t kMaxVoxelsPerStep = std::uint64_t(1) << 36;
 
 std::string numberText(double value) {
     std::ostringstream text;
@@ -73,18 +72,10 @@ BeamGrid readBeamGrid(const ManifestField& field) {
                          "elevation_angles_deg", "range"});
     BeamGrid grid;
     const ManifestField dims = field.member("dims");
-    if (dims.arraySize() != 3) dims.fail("expected 3 sample counts (beams across, beams along, range samples)");
-    std::uint64_t voxels = 1;
-    for (int axis = 0; axis < 3; ++axis) {
-        const ManifestField count = dims.element(std::size_t(axis));
-        grid.dims[axis] = count.integer();
-        if (grid.dims[axis] < 2) {
-            count.fail("must be at least 2, found " + std::to_string(grid.dims[axis]) +
-                       ": a beam grid needs two beams each way and two range samples to span a fan");
-        }
-        voxels *= std::uint64_t(grid.dims[axis]);
-        if (voxels > kMaxVoxelsPerStep) dims.fail("too many voxels for one time-step");
-    }
+    grid.dims = readGridDims(dims, kMaxVoxelsPerStep,
+                             {"expected 3 sample counts (beams across, beams along, range samples)",
+                              "a beam grid needs two beams each way and two range samples to span a fan",
+                              "too many voxels for one time-step"});
     grid.azimuthDeg = readBeamAngles(field, "azimuth", grid.dims.x, dims.path() + "[0]");
     grid.elevationDeg = readBeamAngles(field, "elevation", grid.dims.y, dims.path() + "[1]");
 

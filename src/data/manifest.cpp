@@ -26,7 +26,6 @@ constexpr const char* kManifestFormat = "tstyles-series";
 constexpr int kManifestVersion = 1;
 constexpr const char* kManifestFileName = "series.json";
 // Far beyond any volume a GPU holds, and small enough that byte counts cannot overflow.
-constexpr std::uint64_t kMaxVoxelsPerStep = std::uint64_t(1) << 36;
 
 // A time-step as the manifest describes it, before its files are read.
 struct StepEntry {
@@ -105,18 +104,12 @@ RectilinearGrid readRectilinearGrid(const ManifestField& field) {
     const ManifestField spacing = field.member("spacing");
     const auto positions = field.optionalMember("positions");
     if (positions) positions->allowOnlyKeys({"x", "y", "z"});
-    if (dims.arraySize() != 3) dims.fail("expected 3 sample counts (x, y, z)");
+    grid.dims = readGridDims(dims, kMaxVoxelsPerStep,
+                             {"expected 3 sample counts (x, y, z)",
+                              "a grid needs two samples along each axis to span a box",
+                              "too many voxels for one time-step"});
     if (spacing.arraySize() != 3) spacing.fail("expected 3 distances (x, y, z)");
-    std::uint64_t voxels = 1;
     for (int axis = 0; axis < 3; ++axis) {
-        const ManifestField count = dims.element(std::size_t(axis));
-        grid.dims[axis] = count.integer();
-        if (grid.dims[axis] < 2) {
-            count.fail("must be at least 2, found " + std::to_string(grid.dims[axis]) +
-                       ": a grid needs two samples along each axis to span a box");
-        }
-        voxels *= std::uint64_t(grid.dims[axis]);  // each factor < 2^31 and the running product is checked
-        if (voxels > kMaxVoxelsPerStep) dims.fail("too many voxels for one time-step");
         const ManifestField distance = spacing.element(std::size_t(axis));
         const std::string axisName(1, "xyz"[axis]);
         const auto axisPositions = positions ? positions->optionalMember(axisName) : std::nullopt;

@@ -97,4 +97,19 @@ glm::dvec3 ManifestField::finiteVec3() const {
     return {element(0).finiteNumber(), element(1).finiteNumber(), element(2).finiteNumber()};
 }
 
+glm::ivec3 readGridDims(const ManifestField& dims, std::uint64_t maxCount, const GridDimsWording& wording) {
+    if (dims.arraySize() != 3) dims.fail(wording.expectedThree);
+    glm::ivec3 result(0);
+    std::uint64_t total = 1;
+    for (int axis = 0; axis < 3; ++axis) {
+        const ManifestField count = dims.element(std::size_t(axis));
+        result[axis] = count.integer();
+        if (result[axis] < 2)
+            count.fail("must be at least 2, found " + std::to_string(result[axis]) + ": " + wording.whyTwo);
+        total *= std::uint64_t(result[axis]);  // each factor < 2^31 and the running product is checked
+        if (total > maxCount) dims.fail(wording.tooMany);
+    }
+    return result;
+}
+
 }  // namespace tstyles

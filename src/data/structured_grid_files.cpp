@@ -18,22 +18,6 @@ float decodeFloat32(const std::uint8_t* bytes) {
     return std::bit_cast<float>(bits);
 }
 
-glm::ivec3 readDims(const ManifestField& dims) {
-    if (dims.arraySize() != 3) dims.fail("expected 3 node counts (x, y, z)");
-    glm::ivec3 result(0);
-    std::uint64_t nodes = 1;
-    for (int axis = 0; axis < 3; ++axis) {
-        const ManifestField count = dims.element(std::size_t(axis));
-        result[axis] = count.integer();
-        if (result[axis] < 2)
-            count.fail("must be at least 2, found " + std::to_string(result[axis]) +
-                       ": a grid needs two nodes along each axis to have cells");
-        nodes *= std::uint64_t(result[axis]);
-        if (nodes > kMaxNodesPerGrid) dims.fail("too many nodes for one grid");
-    }
-    return result;
-}
-
 std::filesystem::path resolve(const ManifestField& name) {
     const std::filesystem::path file = name.string();
     if (file.empty()) name.fail("must name a file");
@@ -44,7 +28,10 @@ std::filesystem::path resolve(const ManifestField& name) {
 
 StructuredGrid StructuredGridFiles::read(const ManifestField& field, std::size_t stepIndex) {
     field.allowOnlyKeys({"type", "dims", "coordinates"});
-    const glm::ivec3 dims = readDims(field.member("dims"));
+    const glm::ivec3 dims = readGridDims(field.member("dims"), kMaxNodesPerGrid,
+                                         {"expected 3 node counts (x, y, z)",
+                                          "a grid needs two nodes along each axis to have cells",
+                                          "too many nodes for one grid"});
     const ManifestField coordinates = field.member("coordinates");
     coordinates.allowOnlyKeys({"file"});
     const ManifestField fileField = coordinates.member("file");
