@@ -10,6 +10,7 @@ const int OCCUPANCY_UNIT = 7;
 const int INVERSE_MAP_UNIT = 8;
 const int PACKED_ATLAS_UNIT = 9;
 const int PACKED_OCCUPANCY_UNIT = 10;
+const int PACKED_VALIDITY_UNIT = 11;
 
 #define TIME_STEP_BUFFER 0
 #define PROXY_BUFFER 1

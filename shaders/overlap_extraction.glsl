@@ -15,11 +15,25 @@ int activeCount;
 int activeSteps[MAX_TIME_STEPS];
 vec2 activeIntervals[MAX_TIME_STEPS];
 
+// Fully aligned series read through the packed atlas (packed_time_steps.glsl).
+#ifndef PACKED_ALIGNED
+#define PACKED_ALIGNED 0
+#endif
+
 // Returns the ray depth (min entry, max exit); empty (x >= y) when the ray meets no time-step.
 vec2 extractVolumeOverlap(ivec2 pixel) {
     activeCount = 0;
     vec2 rayDepth = vec2(NO_ENTRY, NO_EXIT);
-    for (int step = 0; step < timeStepCount; ++step) {
+#if PACKED_ALIGNED
+    // Every time-step has the same proxy, hence the same interval: one list entry, the first (or
+    // the solo) time-step's, stands for all of them.
+    int firstStep = max(soloTimeStep, 0);
+    int lastStep = firstStep + 1;
+#else
+    int firstStep = 0;
+    int lastStep = timeStepCount;
+#endif
+    for (int step = firstStep; step < lastStep; ++step) {
         if (soloTimeStep >= 0 && step != soloTimeStep) continue;
         int layer = timeSteps.steps[step].layer.x;
         float exitDepth = texelFetch(exitDepths, ivec3(pixel, layer), 0).r;

@@ -1,38 +1,87 @@
 // Fully aligned series (render/packed_aligned_atlas.h): four consecutive time-steps share one
 // RGBA16 texel of the packed atlas, so one filtered fetch reads a group of four at a sample. All
-// time-steps have the same grid, placement and entry/exit interval, so the ray's first slot gives
-// the voxel position of every one of them, and one occupancy texel per brick (visible where any
-// time-step is) decides empty-space skipping for all of them at once.
+// time-steps have the same grid, placement and entry/exit interval, so the ray's only slot gives
+// the voxel position of every one of them (one node lookup along uneven axes for all), and one
+// occupancy texel per brick (visible where any time-step is) decides empty-space skipping for all
+// of them at once.
 #ifndef PACKED_ALIGNED
 #define PACKED_ALIGNED 0
+#endif
+// With missing values the packed densities are premultiplied by validity (render::PackedValidity):
+// PER_GROUP: the group's four validities are a second RGBA16 texel at the same place; SHARED:
+// every time-step misses the same voxels, and one R16 texture of the grid holds their validity.
+#define PACKED_VALIDITY_NONE 0
+#define PACKED_VALIDITY_PER_GROUP 1
+#define PACKED_VALIDITY_SHARED 2
+#ifndef PACKED_VALIDITY
+#define PACKED_VALIDITY PACKED_VALIDITY_NONE
 #endif
 
 #if PACKED_ALIGNED
 layout(binding = PACKED_ATLAS_UNIT) uniform sampler3D packedAtlas;
 layout(binding = PACKED_OCCUPANCY_UNIT) uniform sampler3D packedOccupancy;
+layout(binding = PACKED_VALIDITY_UNIT) uniform sampler3D packedValidity;
 uniform vec3 inversePackedAtlasSize;
+uniform vec3 inverseSharedValiditySize;
 uniform int packedGroupCount;
 
 layout(std430, binding = PACKED_GROUP_BUFFER) readonly buffer PackedGroups {
     vec4 origin[];  // xyz: first texel of each group of four time-steps in the packed atlas
 } packedGroups;
 
-// The voxel position, shared by every time-step, of the sample at ray parameter t (slot 0 is
-// filled whenever the ray takes a sample).
-vec3 alignedVoxelAtSample(float t) {
-    return clamp(activeVoxelOrigin[0] + t * activeVoxelDirection[0], vec3(0.0), activeVoxelUpper[0]);
+// The sample in the grid every time-step shares (slot 0 is filled whenever the ray takes a
+// sample): `gridLocal` in worldToVoxel's space, `voxel` after the node lookup along uneven axes
+// (one lookup for all time-steps), clamped to the grid.
+struct AlignedSample {
+    vec3 gridLocal;
+    vec3 voxel;
+};
+
+AlignedSample alignedSampleAt(float t) {
+    vec3 gridLocal = gridLocalAtSample(0, t);
+#if ALL_AFFINE
+    vec3 voxel = clamp(gridLocal, vec3(0.0), activeVoxelUpper[0]);
+    return AlignedSample(voxel, voxel);
+#else
+    vec3 voxel = clamp(applyUnevenAxes(activeSteps[0], gridLocal), vec3(0.0), activeVoxelUpper[0]);
+    return AlignedSample(gridLocal, voxel);
+#endif
 }
 
-// The densities of time-steps 4 group .. 4 group + 3 at the voxel position.
-vec4 packedDensities(int group, vec3 voxel) {
-    return texture(packedAtlas, (packedGroups.origin[group].xyz + voxel + 0.5) * inversePackedAtlasSize);
+// Fetches per sample for the shared validity, and per group of four time-steps.
+const int PACKED_FETCHES_PER_SAMPLE = PACKED_VALIDITY == PACKED_VALIDITY_SHARED ? 1 : 0;
+const int PACKED_FETCHES_PER_GROUP = PACKED_VALIDITY == PACKED_VALIDITY_PER_GROUP ? 2 : 1;
+
+// The validity every time-step has at the voxel position (PACKED_VALIDITY_SHARED), else 1.
+float sharedValidityAt(vec3 voxel) {
+#if PACKED_VALIDITY == PACKED_VALIDITY_SHARED
+    return texture(packedValidity, (voxel + 0.5) * inverseSharedValiditySize).r;
+#else
+    return 1.0;
+#endif
+}
+
+// The densities of time-steps 4 group .. 4 group + 3 at the voxel position; MISSING_DENSITY where
+// a time-step has no data there (as sampleDensity decides for one time-step).
+vec4 packedDensities(int group, vec3 voxel, float sharedValidity) {
+    vec3 position = (packedGroups.origin[group].xyz + voxel + 0.5) * inversePackedAtlasSize;
+    vec4 densities = texture(packedAtlas, position);
+#if PACKED_VALIDITY == PACKED_VALIDITY_NONE
+    return densities;
+#else
+#if PACKED_VALIDITY == PACKED_VALIDITY_PER_GROUP
+    vec4 validity = texture(packedValidity, position);
+#else
+    vec4 validity = vec4(sharedValidity);
+#endif
+    return mix(densities / validity, vec4(MISSING_DENSITY), lessThan(validity, vec4(0.5)));
+#endif
 }
 
 // Empty-space skipping for all time-steps at once: -1 when any time-step's brick at the sample is
 // visible, else where the brick ends (time-step 0's grid is every time-step's grid).
-float packedEmptySpaceUntil(float t) {
-    vec3 voxel = alignedVoxelAtSample(t);
-    if (texelFetch(packedOccupancy, ivec3(brickOf(0, voxel)), 0).r > 0.5) return -1.0;
-    return brickExit(0, voxel, t, activeVoxelDirection[0]);
+float packedEmptySpaceUntil(AlignedSample aligned, float t) {
+    if (texelFetch(packedOccupancy, ivec3(brickOf(0, aligned.voxel)), 0).r > 0.5) return -1.0;
+    return brickExit(0, aligned.voxel, aligned.gridLocal, t, activeVoxelDirection[0]);
 }
 #endif

@@ -42,10 +42,12 @@ struct TemporalSample {
 // Every time-step contains every sample of the ray (they share one interval): groups of four,
 // one fetch per group (packed_time_steps.glsl), counted in the compositor's `result`.
 #define FOR_EACH_TIME_STEP_AT_SAMPLE                                                             \
-    vec3 alignedVoxel = alignedVoxelAtSample(t);                                                 \
+    vec3 alignedVoxel = aligned.voxel;                                                           \
+    float sharedValidity = sharedValidityAt(alignedVoxel);                                       \
+    result.fetches += PACKED_FETCHES_PER_SAMPLE;                                                 \
     for (int group = 0; group < packedGroupCount; ++group) {                                     \
-        vec4 groupDensities = packedDensities(group, alignedVoxel);                              \
-        result.fetches += 1;                                                                     \
+        vec4 groupDensities = packedDensities(group, alignedVoxel, sharedValidity);              \
+        result.fetches += PACKED_FETCHES_PER_GROUP;                                              \
         for (int lane = 0; lane < 4; ++lane) {                                                   \
             int step = 4 * group + lane;                                                         \
             if (step >= timeStepCount) break;                                                    \
@@ -75,11 +77,7 @@ struct TemporalSample {
     result.fetches += 1;
 #endif
 
-#if PACKED_ALIGNED
-float emptySpaceUntil(vec3 position, float t) {
-    return packedEmptySpaceUntil(t);
-}
-#elif !NAIVE_RAYCASTER
+#if !NAIVE_RAYCASTER && !PACKED_ALIGNED
 // Whether all time-steps at the sample lie in empty bricks; if so, where the first brick ends.
 float emptySpaceUntil(vec3 position, float t) {
     float emptyUntil = 1.0e30;
@@ -94,7 +92,12 @@ float emptySpaceUntil(vec3 position, float t) {
         }
         vec3 voxel = VOXEL_AT_SAMPLE;
         if (brickVisible(step, voxel)) return -1.0;
-        emptyUntil = min(emptyUntil, emptyBrickEnd(step, voxel, t, position, activeVoxelDirection[i]));
+#if ALL_AFFINE
+        vec3 gridLocal = voxel;
+#else
+        vec3 gridLocal = activeAffine[i] ? voxel : gridLocalAtSample(i, t);
+#endif
+        emptyUntil = min(emptyUntil, emptyBrickEnd(step, voxel, gridLocal, t, position, activeVoxelDirection[i]));
     END_FOR_EACH_TIME_STEP
     return anyStep ? emptyUntil : -1.0;
 }
@@ -115,7 +118,12 @@ TemporalSample compositeTemporal(vec3 position, float t) {
 #if !NAIVE_RAYCASTER
     // Skip transparent regions of all time-steps at once. The max density change needs every
     // density once any time-step is visible, so the test comes before the real work.
+#if PACKED_ALIGNED
+    AlignedSample aligned = alignedSampleAt(t);
+    result.emptyUntil = packedEmptySpaceUntil(aligned, t);
+#else
     result.emptyUntil = emptySpaceUntil(position, t);
+#endif
     if (result.emptyUntil > 0.0) {
         result.contributing = 1;
         return result;
@@ -144,14 +152,19 @@ TemporalSample compositeTemporal(vec3 position, float t) {
 #endif
 
     FOR_EACH_TIME_STEP_AT_SAMPLE
+#if !PACKED_ALIGNED
+        // (Packed series are rectilinear: every sample in the interval is in the grid.)
         if (!insideGridShape(step, position)) continue;
+#endif
         DENSITY_AT_SAMPLE
         result.contributing += 1;
         // No data here: transparent, and left out of the temporal characteristic.
         if (isMissingDensity(density)) continue;
         bool inMask = insideMask(step, atlasPosition);
         vec4 stf = classifyStf(density);
+#if HAS_MASKS
         result.fetches += timeSteps.steps[step].dims.w > 0.5 ? 1 : 0;
+#endif
 #if TEMPORAL_COMPOSITOR == TC_MAX_INTENSITY_PROJECTION
         if (stf.a >= winnerStf.a && stf.a > 0.0) {
             vec4 tstf = classifyIndexTstf(step);

@@ -57,6 +57,17 @@ vec3 unapplyUnevenAxes(int step, vec3 voxel) {
     return gridCoordinate;
 }
 
+// Whole node indices -> grid-local positions (a brick's faces): one read per uneven axis, none
+// along even ones.
+void nodeBoundsToGrid(int step, inout vec3 lower, inout vec3 upper) {
+    ivec4 firstNode = unevenAxes.firstNode[step];
+    for (int axis = 0; axis < 3; ++axis) {
+        if (firstNode[axis] < 0) continue;
+        lower[axis] = axisNodes.positions[firstNode[axis] + int(lower[axis])];
+        upper[axis] = axisNodes.positions[firstNode[axis] + int(upper[axis])];
+    }
+}
+
 // The largest coordinate worldToVoxel gives inside the grid: dims - 1, or the last node's position.
 vec3 gridCoordinateLimit(int step) {
     return unapplyUnevenAxes(step, timeSteps.steps[step].dims.xyz - 1.0);

@@ -112,32 +112,28 @@ bool brickVisible(int step, vec3 voxel) {
 // The ray parameter at which a ray at `t`, at `voxel` in the time-step's grid and moving by
 // `direction` per unit of t in worldToVoxel's space, leaves the brick it is in. Only for
 // rectilinear grids, where a ray is a straight line in that space with the ray's own parameter;
-// the brick's faces are taken in that space too (node index to position is monotonic along uneven
-// axes).
-float brickExit(int step, vec3 voxel, float t, vec3 direction) {
-    vec3 lowerVoxel = brickOf(step, voxel) * BRICK_SIZE;
-    vec3 upperVoxel = min(lowerVoxel + BRICK_SIZE, timeSteps.steps[step].dims.xyz - 1.0);
-#if ALL_AFFINE
-    vec3 lower = lowerVoxel;
-    vec3 upper = upperVoxel;
-#else
-    vec3 lower = unapplyUnevenAxes(step, lowerVoxel);
-    vec3 upper = unapplyUnevenAxes(step, upperVoxel);
-    voxel = unapplyUnevenAxes(step, voxel);
+// `gridLocal` is the sample in that space (the voxel itself along even axes), where the brick's
+// faces are taken too (node index to position is monotonic along uneven axes).
+float brickExit(int step, vec3 voxel, vec3 gridLocal, float t, vec3 direction) {
+    vec3 lower = brickOf(step, voxel) * BRICK_SIZE;
+    vec3 upper = min(lower + BRICK_SIZE, timeSteps.steps[step].dims.xyz - 1.0);
+#if !ALL_AFFINE
+    nodeBoundsToGrid(step, lower, upper);
 #endif
     float exit = 1.0e30;
     for (int axis = 0; axis < 3; ++axis) {
         if (abs(direction[axis]) < 1.0e-12) continue;
         float bound = direction[axis] > 0.0 ? upper[axis] : lower[axis];
-        exit = min(exit, (bound - voxel[axis]) / direction[axis]);
+        exit = min(exit, (bound - gridLocal[axis]) / direction[axis]);
     }
     return t + max(exit, 0.0);
 }
 
 // Where a ray may jump to from `t` when the time-step's brick there is empty: the brick's exit, or
 // for a beam grid a conservative step (the distance to the brick's nearest bounding plane or
-// sphere); structured grids get no jump. `direction` is the ray's direction in worldToVoxel's space.
-float emptyBrickEnd(int step, vec3 voxel, float t, vec3 worldPosition, vec3 direction) {
+// sphere); structured grids get no jump. `gridLocal` and `direction` (rectilinear grids): the
+// sample and the ray's direction in worldToVoxel's space (brickExit).
+float emptyBrickEnd(int step, vec3 voxel, vec3 gridLocal, float t, vec3 worldPosition, vec3 direction) {
 #if !ALL_AFFINE
     if (isStructured(step)) return t;
     if (isBeamGrid(step)) {
@@ -147,5 +143,5 @@ float emptyBrickEnd(int step, vec3 voxel, float t, vec3 worldPosition, vec3 dire
         return beamBrickExit(step, brickLower, brickUpper, local, t);
     }
 #endif
-    return brickExit(step, voxel, t, direction);
+    return brickExit(step, voxel, gridLocal, t, direction);
 }

@@ -24,8 +24,14 @@ void prepareVoxelRays(Ray ray) {
 // place in the ray's list.
 // ALL_AFFINE (volume_sampling.glsl) leaves the general path out of the program.
 
+// The sample in worldToVoxel's space along the ray of an affine or rectilinear time-step (before
+// the node lookup of uneven axes); along even axes, the unclamped voxel position.
+vec3 gridLocalAtSample(int slot, float t) {
+    return activeVoxelOrigin[slot] + t * activeVoxelDirection[slot];
+}
+
 vec3 voxelAtSample(int slot, int step, vec3 position, float t) {
-    vec3 voxel = activeVoxelOrigin[slot] + t * activeVoxelDirection[slot];
+    vec3 voxel = gridLocalAtSample(slot, t);
 #if !ALL_AFFINE
     if (!activeAffine[slot]) {
         if (isStructured(step) || isBeamGrid(step)) return voxelCoordinate(step, position);

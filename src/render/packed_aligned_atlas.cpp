@@ -1,4 +1,5 @@
-// The packed atlas of a fully aligned series: four time-steps per RGBA16 texel.
+// The packed atlas of a fully aligned series: four time-steps per RGBA16 texel, and their
+// validities in a second one when values are missing.
 #include "tstyles/render/packed_aligned_atlas.h"
 
 #include <algorithm>
@@ -12,9 +13,23 @@
 namespace tstyles {
 namespace {
 
-bool isEvenRectilinear(const TimeStep& step) {
-    const auto* grid = std::get_if<RectilinearGrid>(&step.grid);
-    return grid && !grid->isUneven(0) && !grid->isUneven(1) && !grid->isUneven(2);
+bool isRectilinear(const TimeStep& step) {
+    return std::holds_alternative<RectilinearGrid>(step.grid);
+}
+
+// One channel per time-step of the group: value(step, voxel) for its voxels, 0 past the last step.
+template <typename ValueOfVoxel>
+std::vector<std::uint16_t> interleaveGroup(const Series& series, std::size_t group, ValueOfVoxel valueOf) {
+    const std::size_t voxels = series.steps.front().density.size();
+    std::vector<std::uint16_t> texels(voxels * kTimeStepsPerTexel, 0);
+    for (int channel = 0; channel < kTimeStepsPerTexel; ++channel) {
+        const std::size_t step = group * kTimeStepsPerTexel + std::size_t(channel);
+        if (step >= series.size()) break;
+        valueOf(series.steps[step], [&](std::size_t voxel, std::uint16_t value) {
+            texels[voxel * kTimeStepsPerTexel + std::size_t(channel)] = value;
+        });
+    }
+    return texels;
 }
 
 }  // namespace
@@ -22,21 +37,38 @@ bool isEvenRectilinear(const TimeStep& step) {
 bool suitsPackedAtlas(const Series& series) {
     // The packed atlas is RGBA16: only for 16-bit storage, so that packed and unpacked agree.
     return series.size() >= 2 && series.precision == DensityPrecision::Bits16 && isFullyAligned(series) &&
-           std::all_of(series.steps.begin(), series.steps.end(), isEvenRectilinear) && !series.hasMasks() &&
-           !hasMissingValues(series);
+           std::all_of(series.steps.begin(), series.steps.end(), isRectilinear) && !series.hasMasks();
 }
 
-std::vector<std::uint16_t> packedGroupTexels(const Series& series, std::size_t group) {
-    const std::size_t voxels = series.steps.front().density.size();
-    std::vector<std::uint16_t> texels(voxels * kTimeStepsPerTexel, 0);
-    for (int channel = 0; channel < kTimeStepsPerTexel; ++channel) {
-        const std::size_t step = group * kTimeStepsPerTexel + std::size_t(channel);
-        if (step >= series.size()) break;
-        const std::vector<std::uint16_t> densities = densityTexels(series.steps[step], false);
-        for (std::size_t voxel = 0; voxel < voxels; ++voxel)
-            texels[voxel * kTimeStepsPerTexel + std::size_t(channel)] = densities[voxel];
-    }
+std::vector<std::uint16_t> packedGroupTexels(const Series& series, std::size_t group, bool withValidity) {
+    return interleaveGroup(series, group, [withValidity](const TimeStep& step, auto store) {
+        // With validity, densityTexels gives (premultiplied density, validity) pairs.
+        const std::vector<std::uint16_t> densities = densityTexels(step, withValidity);
+        const std::size_t stride = withValidity ? 2 : 1;
+        for (std::size_t voxel = 0; voxel < step.density.size(); ++voxel) store(voxel, densities[voxel * stride]);
+    });
+}
+
+std::vector<std::uint16_t> validityTexels(const TimeStep& step) {
+    std::vector<std::uint16_t> texels(step.density.size());
+    std::transform(step.density.begin(), step.density.end(), texels.begin(),
+                   [](float density) { return isMissing(density) ? std::uint16_t(0) : std::uint16_t(65535); });
     return texels;
+}
+
+std::vector<std::uint16_t> packedGroupValidities(const Series& series, std::size_t group) {
+    return interleaveGroup(series, group, [](const TimeStep& step, auto store) {
+        const std::vector<std::uint16_t> validities = validityTexels(step);
+        for (std::size_t voxel = 0; voxel < validities.size(); ++voxel) store(voxel, validities[voxel]);
+    });
+}
+
+PackedValidity packedValidityOf(const Series& series) {
+    if (!hasMissingValues(series)) return PackedValidity::None;
+    const std::vector<std::uint16_t> first = validityTexels(series.steps.front());
+    const bool shared = std::all_of(series.steps.begin() + 1, series.steps.end(),
+                                    [&first](const TimeStep& step) { return validityTexels(step) == first; });
+    return shared ? PackedValidity::Shared : PackedValidity::PerGroup;
 }
 
 std::vector<std::uint8_t> unionOfVisibilities(const std::vector<std::vector<std::uint8_t>>& visibilities) {
@@ -49,7 +81,9 @@ std::vector<std::uint8_t> unionOfVisibilities(const std::vector<std::vector<std:
 
 PackedAlignedAtlas::PackedAlignedAtlas(const Series& series, glm::ivec3 brickCounts, int maxTextureSize)
     : brickCounts_(brickCounts),
+      validity_(packedValidityOf(series)),
       atlas_(Texture::create(GL_TEXTURE_3D)),
+      validityTexture_(Texture::create(GL_TEXTURE_3D)),
       occupancy_(Texture::create(GL_TEXTURE_3D)),
       groupOrigins_(Buffer::create()) {
     const std::size_t groups = (series.size() + kTimeStepsPerTexel - 1) / kTimeStepsPerTexel;
@@ -59,13 +93,31 @@ PackedAlignedAtlas::PackedAlignedAtlas(const Series& series, glm::ivec3 brickCou
     glTextureStorage3D(atlas_.id(), 1, GL_RGBA16, layout_.size.x, layout_.size.y, layout_.size.z);
     atlas_.setFilter(GL_LINEAR, GL_LINEAR);
     atlas_.setClampToEdge();
+    const bool perGroup = validity_ == PackedValidity::PerGroup;
+    if (validity_ == PackedValidity::Shared) sharedValiditySize_ = dims;
+    const glm::ivec3 validitySize = perGroup ? layout_.size : sharedValiditySize_;
+    glTextureStorage3D(validityTexture_.id(), 1, perGroup ? GL_RGBA16 : GL_R16, validitySize.x, validitySize.y,
+                       validitySize.z);
+    validityTexture_.setFilter(GL_LINEAR, GL_LINEAR);
+    validityTexture_.setClampToEdge();
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    if (validity_ == PackedValidity::Shared) {
+        const std::vector<std::uint16_t> validities = validityTexels(series.steps.front());
+        glTextureSubImage3D(validityTexture_.id(), 0, 0, 0, 0, dims.x, dims.y, dims.z, GL_RED, GL_UNSIGNED_SHORT,
+                            validities.data());
+    }
     std::vector<glm::vec4> origins;
     for (std::size_t group = 0; group < groups; ++group) {
         const glm::ivec3 origin = layout_.brickOrigins[group];
-        const std::vector<std::uint16_t> texels = packedGroupTexels(series, group);
+        const std::vector<std::uint16_t> texels =
+            packedGroupTexels(series, group, validity_ != PackedValidity::None);
         glTextureSubImage3D(atlas_.id(), 0, origin.x, origin.y, origin.z, dims.x, dims.y, dims.z, GL_RGBA,
                             GL_UNSIGNED_SHORT, texels.data());
+        if (perGroup) {
+            const std::vector<std::uint16_t> validities = packedGroupValidities(series, group);
+            glTextureSubImage3D(validityTexture_.id(), 0, origin.x, origin.y, origin.z, dims.x, dims.y, dims.z,
+                                GL_RGBA, GL_UNSIGNED_SHORT, validities.data());
+        }
         origins.push_back(glm::vec4(glm::vec3(origin), 0.0f));
     }
     groupOrigins_.setData(std::as_bytes(std::span(origins)), GL_STATIC_DRAW);
@@ -76,8 +128,14 @@ PackedAlignedAtlas::PackedAlignedAtlas(const Series& series, glm::ivec3 brickCou
 }
 
 std::size_t PackedAlignedAtlas::textureBytes() const {
-    return layout_.texelCount() * 8 + std::size_t(brickCounts_.x) * std::size_t(brickCounts_.y) *
-                                          std::size_t(brickCounts_.z);
+    const glm::ivec3 bricks = brickCounts_;
+    const std::size_t occupancyBytes = std::size_t(bricks.x) * std::size_t(bricks.y) * std::size_t(bricks.z);
+    const glm::ivec3 shared = sharedValiditySize_;
+    std::size_t validityBytes = 0;
+    if (validity_ == PackedValidity::PerGroup) validityBytes = layout_.texelCount() * 8;
+    if (validity_ == PackedValidity::Shared)
+        validityBytes = std::size_t(shared.x) * std::size_t(shared.y) * std::size_t(shared.z) * 2;
+    return layout_.texelCount() * 8 + validityBytes + occupancyBytes;
 }
 
 void PackedAlignedAtlas::updateOccupancy(const std::vector<std::uint8_t>& unionVisibility) {
@@ -88,6 +146,7 @@ void PackedAlignedAtlas::updateOccupancy(const std::vector<std::uint8_t>& unionV
 
 void PackedAlignedAtlas::bind() const {
     atlas_.bindToUnit(binding::kPackedAtlasUnit);
+    validityTexture_.bindToUnit(binding::kPackedValidityUnit);
     occupancy_.bindToUnit(binding::kPackedOccupancyUnit);
     groupOrigins_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kPackedGroupBuffer);
 }

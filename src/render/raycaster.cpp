@@ -28,6 +28,16 @@ int finalModeValue(FinalMode mode) {
     return 2;
 }
 
+// PACKED_VALIDITY in shaders/packed_time_steps.glsl.
+int packedValidityDefine(PackedValidity validity) {
+    switch (validity) {
+    case PackedValidity::None: return 0;
+    case PackedValidity::PerGroup: return 1;
+    case PackedValidity::Shared: return 2;
+    }
+    return 0;
+}
+
 // The shader keeps per-ray arrays of the time-steps it meets; their size is a compile-time
 // constant, rounded up so that a few more or fewer time-steps reuse the same program.
 int arrayCapacity(int timeStepCount) {
@@ -46,7 +56,7 @@ const Program& Raycaster::programFor(const RaycastParameters& parameters) {
     const auto key = std::make_tuple(compositorDefine(parameters.compositor), parameters.collectStatistics,
                                      parameters.styled, parameters.naive, parameters.masks,
                                      parameters.allAffine, parameters.structuredGrids, parameters.packedAligned,
-                                     capacity);
+                                     parameters.packedValidity, capacity);
     auto found = programs_.find(key);
     if (found != programs_.end()) return found->second;
     const ShaderDefines defines = {
@@ -59,6 +69,7 @@ const Program& Raycaster::programFor(const RaycastParameters& parameters) {
         {"ALL_AFFINE", parameters.allAffine ? "1" : "0"},
         {"STRUCTURED_GRIDS", parameters.structuredGrids ? "1" : "0"},
         {"PACKED_ALIGNED", parameters.packedAligned ? "1" : "0"},
+        {"PACKED_VALIDITY", std::to_string(packedValidityDefine(parameters.packedValidity))},
     };
     auto program = Program::build(shaders_, {{GL_VERTEX_SHADER, "fullscreen.vert"},
                                              {GL_FRAGMENT_SHADER, "raycast.frag"}},
@@ -83,6 +94,8 @@ void Raycaster::draw(const RaycastParameters& parameters) {
     if (parameters.packedAligned) {
         program.set("packedGroupCount", parameters.packedGroupCount);
         program.set("inversePackedAtlasSize", 1.0f / glm::vec3(parameters.packedAtlasSize));
+        if (parameters.packedValidity == PackedValidity::Shared)
+            program.set("inverseSharedValiditySize", 1.0f / glm::vec3(parameters.sharedValiditySize));
     }
     if (parameters.styled) {
         glProgramUniform2iv(program.id(), glGetUniformLocation(program.id(), "styleTracks"), 3,

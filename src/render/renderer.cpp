@@ -78,6 +78,8 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     parameters.allAffine = gpuSeries_->allAffine();
     if (const PackedAlignedAtlas* packed = gpuSeries_->packedAtlas(); packed && options.packAligned && !options.naive) {
         parameters.packedAligned = true;
+        parameters.packedValidity = packed->validity();
+        parameters.sharedValiditySize = packed->sharedValiditySize();
         parameters.packedGroupCount = packed->groupCount();
         parameters.packedAtlasSize = packed->layout().size;
     }

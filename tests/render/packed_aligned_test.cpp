@@ -2,7 +2,10 @@
 // (render/packed_aligned_atlas.h). Packing must not change what a time-step contributes: a
 // known-answer test that needs every channel of both groups, and the benchmark scenes on the
 // aligned dataset rendered packed and through the general per-time-step path.
+#include <functional>
 #include <iostream>
+#include <limits>
+#include <variant>
 
 #include <gtest/gtest.h>
 
@@ -37,6 +40,24 @@ Series sixAlignedSteps() {
 
 glm::dvec3 indexColour(int step) { return {step / 5.0, 1.0 - step / 5.0, 0.5}; }
 
+// Missing values on uneven levels: the same six time-steps with levels at z = 0, 0.05, 0.15, 0.3
+// and no data where `hasData(step, block)` is false (block b: x = 4b .. 4b + 3).
+Series sixAlignedStepsWithMissingValues(const std::function<bool(int, int)>& hasData) {
+    Series series = sixAlignedSteps();
+    for (int k = 0; k < kSteps; ++k) {
+        TimeStep& step = series.steps[std::size_t(k)];
+        std::get<RectilinearGrid>(step.grid).axisPositions[2] = {0.0, 0.05, 0.15, 0.3};
+        for (std::size_t voxel = 0; voxel < step.density.size(); ++voxel)
+            if (!hasData(k, int(voxel % 24) / 4)) step.density[voxel] = std::numeric_limits<float>::quiet_NaN();
+    }
+    return series;
+}
+
+// Time-step 0 has no data in blocks 4 and 5 (the packed atlas needs a validity per time-step).
+bool stepZeroMissesBlocksFourAndFive(int step, int block) { return step != 0 || block < 4; }
+// No time-step has data in block 5 (one validity for all, as land in a weather model).
+bool everyStepMissesBlockFive(int, int block) { return block != 5; }
+
 TEST(PackedAtlas, GroupsFourTimeStepsPerTexelInStepOrder) {
     const Series series = sixAlignedSteps();
     ASSERT_TRUE(suitsPackedAtlas(series));
@@ -66,69 +87,127 @@ TEST(PackedAtlas, OnlyAlignedSeriesWithoutMasksArePacked) {
     EXPECT_FALSE(suitsPackedAtlas(single));
 }
 
+TEST(PackedAtlas, MissingValuesArePremultipliedWithTheirValidityAlongside) {
+    EXPECT_EQ(packedValidityOf(sixAlignedSteps()), PackedValidity::None);
+    const Series perStep = sixAlignedStepsWithMissingValues(stepZeroMissesBlocksFourAndFive);
+    ASSERT_TRUE(suitsPackedAtlas(perStep));
+    ASSERT_EQ(packedValidityOf(perStep), PackedValidity::PerGroup);
+    // Voxel (21, 0, 0), block 5: time-step 0 (group 0, channel 0) has no data, time-step 1 has 0.
+    const std::vector<std::uint16_t> validities = packedGroupValidities(perStep, 0);
+    EXPECT_EQ(validities[21 * 4 + 0], 0);
+    EXPECT_EQ(validities[21 * 4 + 1], 65535);
+    EXPECT_EQ(packedGroupTexels(perStep, 0, true)[21 * 4 + 0], 0);
+    // Voxel (1, 0, 0), block 0: time-step 0 is dense there and has data.
+    EXPECT_EQ(packedGroupTexels(perStep, 0, true)[1 * 4 + 0], 65535);
+    EXPECT_EQ(validities[1 * 4 + 0], 65535);
+    // Voxel (21, 0, 0) is dense in time-step 5 (group 1, channel 1), which has data there.
+    EXPECT_EQ(packedGroupTexels(perStep, 1, true)[21 * 4 + 1], 65535);
+
+    const Series shared = sixAlignedStepsWithMissingValues(everyStepMissesBlockFive);
+    ASSERT_EQ(packedValidityOf(shared), PackedValidity::Shared);
+    const std::vector<std::uint16_t> sharedValidity = validityTexels(shared.steps.front());
+    EXPECT_EQ(sharedValidity[21], 0);
+    EXPECT_EQ(sharedValidity[17], 65535);
+    EXPECT_EQ(packedGroupTexels(shared, 1, true)[21 * 4 + 1], 0);
+}
+
 TEST(PackedAtlas, UnionOfVisibilitiesIsVisibleWhereAnyTimeStepIs) {
     EXPECT_EQ(unionOfVisibilities({{0, 255, 0, 0}, {0, 0, 0, 255}, {0, 255, 0, 0}}),
               (std::vector<std::uint8_t>{0, 255, 0, 255}));
 }
 
-// Temporal MIP with an opaque STF above density 0.5 and the index TSTF alone: each column block
-// shows its time-step's colour, fully opaque; with one time-step solo, only its block shows.
-TEST(PackedAlignedRender, EveryTimeStepShowsItsIndexColourInItsColumns) {
-    const Series series = sixAlignedSteps();
-    constexpr int kSize = 96;
+// Temporal MIP with the index TSTF alone (each time-step's own colour, opaque) over the STF
+// opacity given.
+Scene columnBlockScene(int size, const std::vector<OpacityNode>& stfOpacity) {
     const double width = 23 * kSpacing;
     const glm::dvec2 centre(width / 2.0, 1.5 * kSpacing);
-    const double viewHeight = width * 1.1;
-    Scene scene = orthographicSceneLookingDownZ(centre, viewHeight, kSize);
+    Scene scene = orthographicSceneLookingDownZ(centre, width * 1.1, size);
     scene.compositor = TemporalCompositor::MaxIntensityProjection;
     scene.finalMode = FinalMode::Tstf;
-    scene.stf.curve.opacity = {{0.0, 0.0}, {0.5, 0.0}, {0.51, 1.0}, {1.0, 1.0}};
+    scene.stf.curve.opacity = stfOpacity;
     scene.stf.curve.color = {{0.0, {1.0, 1.0, 1.0}}};
     scene.indexTstf.curve.opacity = {{0.0, 1.0}};
     scene.indexTstf.curve.color.clear();
     for (int k = 0; k < kSteps; ++k) scene.indexTstf.curve.color.push_back({double(k), indexColour(k)});
+    return scene;
+}
 
+// At the middle of each column block the colour is that of time-step `expectedWinner(block)`, or
+// transparent where that is -1.
+void expectWinnerInEveryColumnBlock(const Series& series, const Scene& scene, bool packed, int solo,
+                                    const std::function<int(int)>& expectedWinner) {
+    constexpr int kSize = 96;
+    const double width = 23 * kSpacing;
+    const glm::dvec2 centre(width / 2.0, 1.5 * kSpacing);
     Renderer& renderer = testRenderer();
     renderer.setSeries(series);
     const View view = resolveView(scene.camera, series.worldBounds(), kSize, kSize);
-    for (const bool packed : {true, false}) {
-        for (const int solo : {-1, 4}) {
-            FrameOptions options;
-            options.size = {kSize, kSize};
-            options.packAligned = packed;
-            if (solo >= 0) options.soloTimeStep = solo;
-            renderer.draw(scene, view, options);
-            const Image image = renderer.readFrame();
-            for (int k = 0; k < kSteps; ++k) {
-                // The middle of time-step k's dense block: x = (4k + 1.5) voxels.
-                const glm::ivec2 pixel =
-                    pixelOf({(4 * k + 1.5) * kSpacing, centre.y}, centre, viewHeight, kSize);
-                const glm::vec4 actual = image.at(pixel.x, pixel.y);
-                const bool shown = solo < 0 || solo == k;
-                const glm::vec4 expected = shown ? glm::vec4(glm::vec3(indexColour(k)), 1.0f) : glm::vec4(0.0f);
-                for (int channel = 0; channel < 4; ++channel)
-                    EXPECT_NEAR(actual[channel], expected[channel], 2.0 / 255.0)
-                        << (packed ? "packed" : "general path") << ", solo " << solo << ", time-step " << k
-                        << ", channel " << channel;
-            }
-        }
+    FrameOptions options;
+    options.size = {kSize, kSize};
+    options.packAligned = packed;
+    if (solo >= 0) options.soloTimeStep = solo;
+    renderer.draw(scene, view, options);
+    const Image image = renderer.readFrame();
+    for (int block = 0; block < kSteps; ++block) {
+        const glm::ivec2 pixel = pixelOf({(4 * block + 1.5) * kSpacing, centre.y}, centre, width * 1.1, kSize);
+        const glm::vec4 actual = image.at(pixel.x, pixel.y);
+        const int winner = expectedWinner(block);
+        const glm::vec4 expected = winner >= 0 ? glm::vec4(glm::vec3(indexColour(winner)), 1.0f) : glm::vec4(0.0f);
+        for (int channel = 0; channel < 4; ++channel)
+            EXPECT_NEAR(actual[channel], expected[channel], 2.0 / 255.0)
+                << (packed ? "packed" : "general path") << ", solo " << solo << ", block " << block
+                << ", channel " << channel;
+    }
+}
+
+// Opaque above density 0.5: block k shows time-step k (with one time-step solo, only its block).
+TEST(PackedAlignedRender, EveryTimeStepShowsItsIndexColourInItsColumns) {
+    const Series series = sixAlignedSteps();
+    const Scene scene = columnBlockScene(96, {{0.0, 0.0}, {0.5, 0.0}, {0.51, 1.0}, {1.0, 1.0}});
+    for (const bool packed : {true, false})
+        for (const int solo : {-1, 4})
+            expectWinnerInEveryColumnBlock(series, scene, packed, solo,
+                                           [solo](int block) { return solo < 0 || solo == block ? block : -1; });
+}
+
+// Opaque below density 0.49, so that a time-step's empty columns show, unless it has no data
+// there: in block b every time-step but b is opaque where it has data, and the earliest of them
+// wins the tie. A missing value read as density 0 would be opaque and win instead.
+TEST(PackedAlignedRender, MissingValuesOnUnevenLevelsAreLeftOut) {
+    const Scene scene = columnBlockScene(96, {{0.0, 1.0}, {0.49, 1.0}, {0.5, 0.0}, {1.0, 0.0}});
+    for (const auto hasData : {stepZeroMissesBlocksFourAndFive, everyStepMissesBlockFive}) {
+        const Series series = sixAlignedStepsWithMissingValues(hasData);
+        ASSERT_TRUE(suitsPackedAtlas(series));
+        const auto winner = [hasData](int block) {
+            for (int k = 0; k < kSteps; ++k)
+                if (k != block && hasData(k, block)) return k;
+            return -1;
+        };
+        for (const bool packed : {true, false}) expectWinnerInEveryColumnBlock(series, scene, packed, -1, winner);
     }
 }
 
 // Packed and general path differ only in how a density is fetched (one RGBA16 texel for four
-// time-steps instead of one R16 texel each, the same 16-bit values and filter weights) and in the
-// order in which equal intervals are visited; the images must agree to rounding.
+// time-steps instead of one R16 or RG16 texel each, the same 16-bit values and filter weights) and
+// in the order in which equal intervals are visited; the images must agree to rounding.
 constexpr int kPixelThreshold = 2;
 constexpr double kMaxFailingFraction = 0.001;
 constexpr double kMaxMeanDelta = 0.05;
 
-class PackedAlignedEquivalence : public ::testing::TestWithParam<std::string> {};
+struct PackedCase {
+    std::string scene;
+    std::string dataset;
+};
+
+void PrintTo(const PackedCase& c, std::ostream* out) { *out << c.scene << " on " << c.dataset; }
+
+class PackedAlignedEquivalence : public ::testing::TestWithParam<PackedCase> {};
 
 TEST_P(PackedAlignedEquivalence, PackedAndGeneralPathGiveTheSameImage) {
-    const std::string& sceneName = GetParam();
-    const std::filesystem::path manifest = kSourceDir / "data/superellipsoid-aligned/series.json";
-    if (!std::filesystem::exists(manifest)) GTEST_SKIP() << "dataset superellipsoid-aligned is not there";
-    const Scene scene = loadScene(kSourceDir / "data/scenes" / (sceneName + ".json"));
+    const PackedCase& c = GetParam();
+    const std::filesystem::path manifest = kSourceDir / "data" / c.dataset / "series.json";
+    if (!std::filesystem::exists(manifest)) GTEST_SKIP() << "dataset " << c.dataset << " is not there";
+    const Scene scene = loadScene(kSourceDir / "data/scenes" / (c.scene + ".json"));
     const Series& series = loadSeriesOnce(manifest);
     ASSERT_TRUE(suitsPackedAtlas(series));
     constexpr int kSize = 160;
@@ -143,28 +222,36 @@ TEST_P(PackedAlignedEquivalence, PackedAndGeneralPathGiveTheSameImage) {
     renderer.draw(scene, view, options);
     const Image general = renderer.readFrame();
 
+    const std::string name = c.scene + "-on-" + c.dataset;
     const ImageDifference difference = compareImages(packed, general, kPixelThreshold);
     const bool same = difference.failingFraction <= kMaxFailingFraction && difference.meanDelta <= kMaxMeanDelta;
     if (!same) {
         std::filesystem::create_directories(kOutputDir);
-        writeImage(packed, kOutputDir / (sceneName + ".packed.png"));
-        writeImage(general, kOutputDir / (sceneName + ".general.png"));
-        writeImage(differenceImage(packed, general, 8.0f), kOutputDir / (sceneName + ".packed-difference.png"));
+        writeImage(packed, kOutputDir / (name + ".packed.png"));
+        writeImage(general, kOutputDir / (name + ".general.png"));
+        writeImage(differenceImage(packed, general, 8.0f), kOutputDir / (name + ".packed-difference.png"));
     }
-    std::cout << "  " << sceneName << ": " << describe(difference) << "\n";
-    EXPECT_TRUE(same) << sceneName << ": " << describe(difference);
+    std::cout << "  " << name << ": " << describe(difference) << "\n";
+    EXPECT_TRUE(same) << name << ": " << describe(difference);
 }
 
-INSTANTIATE_TEST_SUITE_P(BenchmarkScenes, PackedAlignedEquivalence,
-                         ::testing::Values("figure4-temporal-mip", "figure4-temporal-average",
-                                           "figure4-max-density-change", "figure1-styled-focus-step3",
-                                           "figure4-styled-max-density-change"),
-                         [](const auto& parameter) {
-                             std::string name = parameter.param;
-                             for (char& c : name)
-                                 if (c == '-') c = '_';
-                             return name;
-                         });
+// The aligned super-ellipsoid (even axes, no missing values) and the hurricane (uneven levels, land
+// as missing values shared by every time-step).
+INSTANTIATE_TEST_SUITE_P(
+    BenchmarkScenes, PackedAlignedEquivalence,
+    ::testing::Values(PackedCase{"figure4-temporal-mip", "superellipsoid-aligned"},
+                      PackedCase{"figure4-temporal-average", "superellipsoid-aligned"},
+                      PackedCase{"figure4-max-density-change", "superellipsoid-aligned"},
+                      PackedCase{"figure1-styled-focus-step3", "superellipsoid-aligned"},
+                      PackedCase{"figure4-styled-max-density-change", "superellipsoid-aligned"},
+                      PackedCase{"figure5-focus-step5", "hurricane"},
+                      PackedCase{"figure6-left-max-density-change", "hurricane"}),
+    [](const auto& parameter) {
+        std::string name = parameter.param.scene + "_on_" + parameter.param.dataset;
+        for (char& c : name)
+            if (c == '-') c = '_';
+        return name;
+    });
 
 }  // namespace
 }  // namespace tstyles::testing

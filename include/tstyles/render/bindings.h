@@ -14,6 +14,7 @@ inline constexpr unsigned kOccupancyUnit = 7;
 inline constexpr unsigned kInverseMapUnit = 8;
 inline constexpr unsigned kPackedAtlasUnit = 9;
 inline constexpr unsigned kPackedOccupancyUnit = 10;
+inline constexpr unsigned kPackedValidityUnit = 11;
 
 inline constexpr unsigned kTimeStepBuffer = 0;
 inline constexpr unsigned kProxyBuffer = 1;

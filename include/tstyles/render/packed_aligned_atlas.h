@@ -1,8 +1,13 @@
 // Fully aligned series (every time-step on the same grid with the same placement): the densities
 // of four consecutive time-steps share one RGBA16 texel, so one filtered fetch gives four
-// time-steps at a sample (shaders/packed_time_steps.glsl). All time-steps also share one brick
-// grid, so empty-space skipping needs one occupancy texel per brick: visible where any time-step
-// is. Built next to the ordinary atlas, which the naive raycaster and the gradients still read.
+// time-steps at a sample (shaders/packed_time_steps.glsl). With missing values the densities are
+// premultiplied by validity and a second texture at the same place holds the validities, so that a
+// density and its validity are filtered with the same weights (as the RG atlas does for one time-
+// step): one R16 validity for all time-steps when they all miss the same voxels (land in a weather
+// model: one extra fetch per sample), else four per RGBA16 texel (one extra fetch per group). All
+// time-steps also share one brick grid, so empty-space skipping needs one occupancy texel per
+// brick: visible where any time-step is. Built next to the ordinary atlas, which the naive
+// raycaster and the gradients still read.
 #pragma once
 
 #include <cstddef>
@@ -19,14 +24,30 @@ namespace tstyles {
 
 inline constexpr int kTimeStepsPerTexel = 4;
 
-// Whether the packed path can render the series: at least two time-steps, all on one grid with one
-// placement (isFullyAligned), evenly spaced rectilinear, stored at 16 bits (the packed atlas is
-// RGBA16), without masks and without missing values (whose validity would need a channel of its own).
+// Whether the packed path can render the series: at least two time-steps, all on one rectilinear
+// grid (even or uneven axes) with one placement (isFullyAligned), stored at 16 bits (the packed
+// atlas is RGBA16), without masks.
 bool suitsPackedAtlas(const Series& series);
 
 // The RGBA texels of one group of four time-steps (x fastest, four uint16 per voxel, time-step
-// 4 * group + channel; channels past the last time-step are 0). GL-free.
-std::vector<std::uint16_t> packedGroupTexels(const Series& series, std::size_t group);
+// 4 * group + channel; channels past the last time-step are 0). With `withValidity` the densities
+// are premultiplied by validity (0 where a value is missing), as densityTexels gives them. GL-free.
+std::vector<std::uint16_t> packedGroupTexels(const Series& series, std::size_t group, bool withValidity = false);
+
+// The validities of the same group: 65535 where the time-step has data, 0 where its value is
+// missing and in channels past the last time-step. GL-free.
+std::vector<std::uint16_t> packedGroupValidities(const Series& series, std::size_t group);
+
+// How the packed atlas holds the validity of a series' values.
+enum class PackedValidity {
+    None,      // no value is missing
+    Shared,    // every time-step misses the same voxels: one validity per voxel for all of them
+    PerGroup,  // four validities per texel, like the densities
+};
+PackedValidity packedValidityOf(const Series& series);
+
+// One validity per voxel (65535: data, 0: missing) of a time-step. GL-free.
+std::vector<std::uint16_t> validityTexels(const TimeStep& step);
 
 // Per brick: visible (255) where any of the per-time-step visibilities (0 or 255, brickVisibility)
 // is. All have the same length.
@@ -40,17 +61,24 @@ public:
 
     int groupCount() const { return int(layout_.brickOrigins.size()); }
     const AtlasLayout& layout() const { return layout_; }
+    PackedValidity validity() const { return validity_; }
+    // The size of the shared validity texture (the grid's dims; PackedValidity::Shared).
+    glm::ivec3 sharedValiditySize() const { return sharedValiditySize_; }
     std::size_t textureBytes() const;
 
     // The union of the time-steps' brick visibilities, per transfer-function change.
     void updateOccupancy(const std::vector<std::uint8_t>& unionVisibility);
-    // Binds the packed atlas, its occupancy and the table of group origins.
+    // Binds the packed atlas, its validities, its occupancy and the table of group origins.
     void bind() const;
 
 private:
     AtlasLayout layout_;
     glm::ivec3 brickCounts_;
+    PackedValidity validity_;
+    glm::ivec3 sharedValiditySize_{1};
     Texture atlas_;
+    // PerGroup: RGBA16 in atlas_'s layout; Shared: R16 of the grid's dims; None: one texel.
+    Texture validityTexture_;
     Texture occupancy_;
     Buffer groupOrigins_;
 };

@@ -11,6 +11,7 @@
 
 #include "tstyles/gl/objects.h"
 #include "tstyles/gl/program.h"
+#include "tstyles/render/packed_aligned_atlas.h"
 #include "tstyles/scene/scene.h"
 
 namespace tstyles {
@@ -35,6 +36,9 @@ struct RaycastParameters {
     bool structuredGrids = false;  // the series has structured time-steps (inverse-map lookups compiled in)
     // Fully aligned series: read four time-steps per fetch from the packed atlas (PackedAlignedAtlas).
     bool packedAligned = false;
+    // With missing values the packed validities are read too (PackedAlignedAtlas::validity()).
+    PackedValidity packedValidity = PackedValidity::None;
+    glm::ivec3 sharedValiditySize{1};
     int packedGroupCount = 0;
     glm::ivec3 packedAtlasSize{1};
     // Lit-sphere styles: whether any track is styled, each track's node range, the view rotation
@@ -67,9 +71,9 @@ private:
 
     const ShaderLibrary& shaders_;
     // Keyed by compositor, statistics on/off, styled or not, naive or not, masks or not, all
-    // affine or not, structured grids or not, packed or not and the time-step capacity of the
-    // shader's arrays.
-    std::map<std::tuple<int, bool, bool, bool, bool, bool, bool, bool, int>, Program> programs_;
+    // affine or not, structured grids or not, packed or not, how packed validity is held and the
+    // time-step capacity of the shader's arrays.
+    std::map<std::tuple<int, bool, bool, bool, bool, bool, bool, bool, PackedValidity, int>, Program> programs_;
     VertexArray emptyVertexArray_;
     Buffer statistics_;
 };
