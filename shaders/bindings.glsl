@@ -1,8 +1,7 @@
 // Binding points shared by the C++ side (render/bindings.h) and every shader.
 const int ATLAS_UNIT = 0;
 const int MASK_ATLAS_UNIT = 1;
-const int ENTRY_UNIT = 2;
-const int EXIT_UNIT = 3;
+const int ENTRY_EXIT_UNIT = 2;
 const int STF_UNIT = 4;
 const int GRADIENT_TSTF_UNIT = 5;
 const int STYLE_UNIT = 6;

@@ -1,7 +1,7 @@
 #version 450 core
 // Entry/exit buffer generation, step 3: each fragment writes its ray parameter t. Faces turned to
-// the viewer are entries, the others exits; MIN blending on the entry target and MAX blending on
-// the exit target keep the nearest entry and the farthest exit of each box.
+// the viewer are entries (red), the others exits (green, negated); MIN blending keeps the nearest
+// entry and the farthest exit of each proxy.
 #include "bindings.glsl"
 #include "ray.glsl"
 
@@ -10,13 +10,11 @@ in FragmentData {
     vec3 worldNormal;
 } fragmentIn;
 
-layout(location = 0) out float entryDepth;
-layout(location = 1) out float exitDepth;
+layout(location = 0) out vec2 entryAndNegatedExit;
 
 void main() {
     Ray ray = rayForPixel(gl_FragCoord.xy);
     float t = dot(fragmentIn.worldPosition - ray.origin, ray.direction);
     bool facesViewer = dot(fragmentIn.worldNormal, ray.direction) < 0.0;
-    entryDepth = facesViewer ? t : NO_ENTRY;
-    exitDepth = facesViewer ? NO_EXIT : t;
+    entryAndNegatedExit = facesViewer ? vec2(t, -NO_EXIT) : vec2(NO_ENTRY, -t);
 }

@@ -1,8 +1,8 @@
 // Volume overlap extraction (paper 5.1): per pixel, read every time-step's entry and exit depth,
 // keep the time-steps the ray meets (sorted by entry depth) and the ray depth, the minimum entry
 // and maximum exit over all of them.
-layout(binding = ENTRY_UNIT) uniform sampler2DArray entryDepths;
-layout(binding = EXIT_UNIT) uniform sampler2DArray exitDepths;
+// Per time-step layer: entry depth in red, the negated exit depth in green (entry_exit.frag).
+layout(binding = ENTRY_EXIT_UNIT) uniform sampler2DArray entryExitDepths;
 uniform int timeStepCount;
 uniform int soloTimeStep;  // >= 0: only this time-step takes part (plain playback)
 
@@ -36,9 +36,10 @@ vec2 extractVolumeOverlap(ivec2 pixel) {
     for (int step = firstStep; step < lastStep; ++step) {
         if (soloTimeStep >= 0 && step != soloTimeStep) continue;
         int layer = timeSteps.steps[step].layer.x;
-        float exitDepth = texelFetch(exitDepths, ivec3(pixel, layer), 0).r;
+        vec2 depths = texelFetch(entryExitDepths, ivec3(pixel, layer), 0).rg;
+        float exitDepth = -depths.y;
         if (exitDepth <= 0.0) continue;  // missed, or the whole box lies behind the near plane
-        float entryDepth = texelFetch(entryDepths, ivec3(pixel, layer), 0).r;
+        float entryDepth = depths.x;
         // No entry face but an exit: the near plane cuts the box, the ray starts inside it.
         if (entryDepth >= NO_ENTRY) entryDepth = 0.0;
         entryDepth = max(entryDepth, 0.0);

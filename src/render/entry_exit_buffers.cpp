@@ -1,4 +1,4 @@
-// Rasterising the proxy boxes into layered entry and exit depth textures.
+// Rasterising the proxies into a layered texture of entry and exit depths.
 #include "tstyles/render/entry_exit_buffers.h"
 
 #include <array>
@@ -19,18 +19,13 @@ EntryExitBuffers::EntryExitBuffers(const ShaderLibrary& shaders)
 
 void EntryExitBuffers::resize(glm::ivec2 viewport, int layers) {
     if (viewport == size_ && layers == layers_) return;
-    auto makeLayers = [&] {
-        Texture texture = Texture::create(GL_TEXTURE_2D_ARRAY);
-        glTextureStorage3D(texture.id(), 1, GL_R32F, viewport.x, viewport.y, layers);
-        texture.setFilter(GL_NEAREST, GL_NEAREST);
-        return texture;
-    };
-    entry_.emplace(makeLayers());
-    exit_.emplace(makeLayers());
+    Texture depths = Texture::create(GL_TEXTURE_2D_ARRAY);
+    glTextureStorage3D(depths.id(), 1, GL_RG32F, viewport.x, viewport.y, layers);
+    depths.setFilter(GL_NEAREST, GL_NEAREST);
+    depths_.emplace(std::move(depths));
     framebuffer_.emplace(Framebuffer::create());
-    framebuffer_->attachTexture(GL_COLOR_ATTACHMENT0, *entry_);
-    framebuffer_->attachTexture(GL_COLOR_ATTACHMENT1, *exit_);
-    const std::array<GLenum, 2> drawBuffers = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    framebuffer_->attachTexture(GL_COLOR_ATTACHMENT0, *depths_);
+    const std::array<GLenum, 1> drawBuffers = {GL_COLOR_ATTACHMENT0};
     framebuffer_->setDrawBuffers(drawBuffers);
     framebuffer_->requireComplete("entry/exit buffers");
     size_ = viewport;
@@ -43,22 +38,18 @@ void EntryExitBuffers::render(const GpuSeries& series, const glm::mat4& viewProj
     resize(viewport, layers);
     framebuffer_->bind();
     glViewport(0, 0, viewport.x, viewport.y);
-    const float noEntry[4] = {binding::kNoEntry, 0, 0, 0};
-    const float noExit[4] = {binding::kNoExit, 0, 0, 0};
-    glClearNamedFramebufferfv(framebuffer_->id(), GL_COLOR, 0, noEntry);
-    glClearNamedFramebufferfv(framebuffer_->id(), GL_COLOR, 1, noExit);
+    // Entry in red, the negated exit in green: one MIN blend keeps the nearest entry and the
+    // farthest exit where faces overlap on screen, and the raycaster reads both with one fetch.
+    const float nothing[4] = {binding::kNoEntry, -binding::kNoExit, 0, 0};
+    glClearNamedFramebufferfv(framebuffer_->id(), GL_COLOR, 0, nothing);
 
-    // Faces are classified in the shader, so no culling; MIN/MAX blending keeps the nearest entry
-    // and the farthest exit where faces overlap on screen.
+    // Faces are classified in the shader, so no culling.
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
     glDisable(GL_SCISSOR_TEST);
     glEnablei(GL_BLEND, 0);
-    glEnablei(GL_BLEND, 1);
     glBlendEquationi(0, GL_MIN);
-    glBlendEquationi(1, GL_MAX);
     glBlendFunci(0, GL_ONE, GL_ONE);
-    glBlendFunci(1, GL_ONE, GL_ONE);
 
     emptyVertexArray_.bind();
     for (const Program* program : {&program_, &meshProgram_}) {
@@ -76,14 +67,11 @@ void EntryExitBuffers::render(const GpuSeries& series, const glm::mat4& viewProj
     }
 
     glDisablei(GL_BLEND, 0);
-    glDisablei(GL_BLEND, 1);
     glBlendEquationi(0, GL_FUNC_ADD);
-    glBlendEquationi(1, GL_FUNC_ADD);
 }
 
 void EntryExitBuffers::bind() const {
-    entry_->bindToUnit(binding::kEntryUnit);
-    exit_->bindToUnit(binding::kExitUnit);
+    depths_->bindToUnit(binding::kEntryExitUnit);
 }
 
 std::size_t EntryExitBuffers::textureBytes() const {

@@ -5,8 +5,7 @@ namespace tstyles::binding {
 
 inline constexpr unsigned kAtlasUnit = 0;
 inline constexpr unsigned kMaskAtlasUnit = 1;
-inline constexpr unsigned kEntryUnit = 2;
-inline constexpr unsigned kExitUnit = 3;
+inline constexpr unsigned kEntryExitUnit = 2;
 inline constexpr unsigned kStfUnit = 4;
 inline constexpr unsigned kGradientTstfUnit = 5;
 inline constexpr unsigned kStyleUnit = 6;

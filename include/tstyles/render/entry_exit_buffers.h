@@ -1,6 +1,7 @@
 // Entry and exit buffers (paper 5.1): for every distinct time-step placement, the ray parameter at
-// which each pixel's ray enters and leaves its proxy box, in layered textures (one layer each) so
-// that the number of time-steps is not bounded by texture units.
+// which each pixel's ray enters and leaves its proxy, in one layered RG32F texture (one layer
+// each, so that the number of time-steps is not bounded by texture units): entry in red, the
+// negated exit in green, so that one fetch gives both.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -30,8 +31,7 @@ private:
     VertexArray emptyVertexArray_;
     glm::ivec2 size_{0};
     int layers_ = 0;
-    std::optional<Texture> entry_;
-    std::optional<Texture> exit_;
+    std::optional<Texture> depths_;
     std::optional<Framebuffer> framebuffer_;
 };
 
