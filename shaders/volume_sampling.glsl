@@ -94,7 +94,11 @@ bool insideMask(int step, vec3 atlasPosition) {
 // Empty-space skipping: one texel per brick of BRICK_SIZE³ cells in the occupancy atlas, non-zero
 // where the STF can give the brick's densities some opacity (render/brick_occupancy.h).
 layout(binding = OCCUPANCY_UNIT) uniform sampler3D occupancyAtlas;
-const float BRICK_SIZE = 8.0;
+// Cells per brick edge: kBrickSize of render/brick_occupancy.h, given by the renderer.
+#ifndef BRICK_CELLS
+#define BRICK_CELLS 4
+#endif
+const float BRICK_SIZE = float(BRICK_CELLS);
 
 vec3 brickCount(int step) {
     return max(ceil((timeSteps.steps[step].dims.xyz - 1.0) / BRICK_SIZE), vec3(1.0));

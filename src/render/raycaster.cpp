@@ -5,6 +5,7 @@
 #include <string>
 
 #include "tstyles/render/bindings.h"
+#include "tstyles/render/brick_occupancy.h"
 #include "tstyles/render/transfer_tables.h"
 
 namespace tstyles {
@@ -69,6 +70,7 @@ const Program& Raycaster::programFor(const RaycastParameters& parameters) {
         {"ALL_AFFINE", parameters.allAffine ? "1" : "0"},
         {"STRUCTURED_GRIDS", parameters.structuredGrids ? "1" : "0"},
         {"PACKED_ALIGNED", parameters.packedAligned ? "1" : "0"},
+        {"BRICK_CELLS", std::to_string(kBrickSize)},
         {"PACKED_VALIDITY", std::to_string(packedValidityDefine(parameters.packedValidity))},
     };
     auto program = Program::build(shaders_, {{GL_VERTEX_SHADER, "fullscreen.vert"},

@@ -179,16 +179,17 @@ namespace {
 // Empty-space skipping must not count missing voxels as densities: a brick's range is that of
 // its valid samples, and a brick without any is never visible.
 TEST(MissingValuesOccupancy, BrickRangesIgnoreMissingVoxels) {
+    constexpr int k = kBrickSize;
     TimeStep step;
     RectilinearGrid grid;
-    grid.dims = {17, 9, 9};  // two bricks along x: samples 0..8 and 8..16
+    grid.dims = {2 * k + 1, k + 1, k + 1};  // two bricks along x: samples 0..k and k..2k
     grid.spacing = glm::dvec3(0.1);
     step.grid = grid;
     step.density.assign(grid.voxelCount(), 0.25f);
+    const std::size_t row = std::size_t(grid.dims.x);
+    // The second brick has no data, its first face (x = k) included.
     for (std::size_t i = 0; i < step.density.size(); ++i)
-        if (i % 17 > 8) step.density[i] = missingDensity();  // the second brick has no data past its first face
-    for (int z = 0; z < 9; ++z)
-        for (int y = 0; y < 9; ++y) step.density[std::size_t((z * 9 + y) * 17 + 8)] = missingDensity();
+        if (i % row >= std::size_t(k)) step.density[i] = missingDensity();
     step.density[0] = 0.75f;
     const BrickGrid bricks = computeBrickGrid(step);
     ASSERT_EQ(bricks.minMax.size(), 2u);
