@@ -259,6 +259,9 @@ GpuSeries::GpuSeries(const Series& series)
     proxyMeshTable_.setData(std::as_bytes(std::span(mesh)), GL_STATIC_DRAW);
     proxyTable_.setData(std::as_bytes(std::span(boxes)), GL_STATIC_DRAW);
     const UnevenAxisTable uneven = buildUnevenAxisTable(series);
+    hasUnevenAxes_ = std::any_of(uneven.firstNode.begin(), uneven.firstNode.end(), [](const glm::ivec4& first) {
+        return glm::any(glm::greaterThanEqual(first, glm::ivec4(0)));
+    });
     unevenAxisTable_.setData(std::as_bytes(std::span(uneven.firstNode)), GL_STATIC_DRAW);
     axisNodeTable_.setData(std::as_bytes(std::span(uneven.positions)), GL_STATIC_DRAW);
 }

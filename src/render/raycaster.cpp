@@ -46,7 +46,7 @@ const Program& Raycaster::programFor(const RaycastParameters& parameters) {
     const auto key = std::make_tuple(compositorDefine(parameters.compositor), parameters.collectStatistics,
                                      parameters.styled, parameters.naive, parameters.masks,
                                      parameters.allAffine, parameters.structuredGrids, parameters.packedAligned,
-                                     capacity);
+                                     capacity, parameters.unevenAxes);
     auto found = programs_.find(key);
     if (found != programs_.end()) return found->second;
     const ShaderDefines defines = {
@@ -59,6 +59,7 @@ const Program& Raycaster::programFor(const RaycastParameters& parameters) {
         {"ALL_AFFINE", parameters.allAffine ? "1" : "0"},
         {"STRUCTURED_GRIDS", parameters.structuredGrids ? "1" : "0"},
         {"PACKED_ALIGNED", parameters.packedAligned ? "1" : "0"},
+        {"UNEVEN_AXES", parameters.unevenAxes ? "1" : "0"},
     };
     auto program = Program::build(shaders_, {{GL_VERTEX_SHADER, "fullscreen.vert"},
                                              {GL_FRAGMENT_SHADER, "raycast.frag"}},
