@@ -7,7 +7,8 @@
 #define GRID_BEAM 1
 
 // Every beam grid's beam angles in radians, one run per axis and time-step (TimeStepInfo.grid.yz
-// says where each run starts): uneven beam spacing needs the list, not just the extent.
+// says where each run starts): uneven beam spacing needs the list, not just the extent. Each run is
+// followed by its bucket lookup (render/beam_angle_table.h).
 layout(std430, binding = BEAM_ANGLE_BUFFER) readonly buffer BeamAngles {
     float angles[];
 } beamAngles;
@@ -17,19 +18,24 @@ bool isBeamGrid(int step) {
 }
 
 // The fractional index of `angle` among `count` increasing angles from `first` on; -1 outside.
+// Mirrors lookUpBeamIndex (tstyles/render/beam_angle_table.h). After the angles: 1 / bucket width,
+// the bucket count, each bucket's lower beam; buckets are at most half the narrowest gap between
+// beams wide, so the beam pair is the bucket's or one step away. No loop here on purpose: llvmpipe
+// ends all loops of an invocation after 65535 iterations in all, and this runs several times per
+// time-step and sample (docs/performance.md, "Sonar").
 float fractionalBeamIndex(int first, int count, float angle) {
-    if (angle < beamAngles.angles[first] || angle > beamAngles.angles[first + count - 1]) return -1.0;
-    int low = 0;
-    int high = count - 1;
-    while (high - low > 1) {  // angles[low] <= angle <= angles[high]
-        int middle = (low + high) / 2;
-        if (beamAngles.angles[first + middle] <= angle)
-            low = middle;
-        else
-            high = middle;
-    }
+    float firstAngle = beamAngles.angles[first];
+    if (angle < firstAngle || angle > beamAngles.angles[first + count - 1]) return -1.0;
+    int lookup = first + count;
+    int buckets = int(beamAngles.angles[lookup + 1]);
+    int bucket = clamp(int((angle - firstAngle) * beamAngles.angles[lookup]), 0, buckets - 1);
+    int low = int(beamAngles.angles[lookup + 2 + bucket]);
+    if (low < count - 2 && beamAngles.angles[first + low + 1] <= angle)
+        low += 1;
+    else if (low > 0 && beamAngles.angles[first + low] > angle)
+        low -= 1;
     float lowAngle = beamAngles.angles[first + low];
-    float highAngle = beamAngles.angles[first + high];
+    float highAngle = beamAngles.angles[first + low + 1];
     return float(low) + clamp((angle - lowAngle) / (highAngle - lowAngle), 0.0, 1.0);
 }
 

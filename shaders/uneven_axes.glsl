@@ -8,8 +8,20 @@ layout(std430, binding = AXIS_NODE_BUFFER) readonly buffer AxisNodes {
     float positions[];  // the nodes of every uneven axis, each list increasing from 0
 } axisNodes;
 
+// 0 when no time-step of the series has an uneven axis: the node lookups are then left out of the
+// program. llvmpipe runs their loops, masked, wherever voxelCoordinate() is reached (beam grids
+// too), and every such pass counts against its limit of 65535 loop passes per invocation, which
+// bounds the samples a ray can take (docs/architecture.md, "Limits: samples per ray on llvmpipe").
+#ifndef UNEVEN_AXES
+#define UNEVEN_AXES 1
+#endif
+
 bool isUnevenAxis(int step, int axis) {
+#if !UNEVEN_AXES
+    return false;
+#else
     return unevenAxes.firstNode[step][axis] >= 0;
+#endif
 }
 
 // The fractional node index of grid-local `position` along an uneven axis; clamped to the grid.
@@ -43,8 +55,10 @@ float nodePositionOf(int step, int axis, float index) {
 // worldToVoxel's result -> voxel coordinates: even axes are already node indices.
 vec3 applyUnevenAxes(int step, vec3 gridCoordinate) {
     vec3 voxel = gridCoordinate;
+#if UNEVEN_AXES
     for (int axis = 0; axis < 3; ++axis)
         if (isUnevenAxis(step, axis)) voxel[axis] = nodeIndexOf(step, axis, gridCoordinate[axis]);
+#endif
     return voxel;
 }
 
@@ -52,20 +66,24 @@ vec3 applyUnevenAxes(int step, vec3 gridCoordinate) {
 // ray is a straight line with the same parameter t.
 vec3 unapplyUnevenAxes(int step, vec3 voxel) {
     vec3 gridCoordinate = voxel;
+#if UNEVEN_AXES
     for (int axis = 0; axis < 3; ++axis)
         if (isUnevenAxis(step, axis)) gridCoordinate[axis] = nodePositionOf(step, axis, voxel[axis]);
+#endif
     return gridCoordinate;
 }
 
 // Whole node indices -> grid-local positions (a brick's faces): one read per uneven axis, none
 // along even ones.
 void nodeBoundsToGrid(int step, inout vec3 lower, inout vec3 upper) {
+#if UNEVEN_AXES
     ivec4 firstNode = unevenAxes.firstNode[step];
     for (int axis = 0; axis < 3; ++axis) {
         if (firstNode[axis] < 0) continue;
         lower[axis] = axisNodes.positions[firstNode[axis] + int(lower[axis])];
         upper[axis] = axisNodes.positions[firstNode[axis] + int(upper[axis])];
     }
+#endif
 }
 
 // The largest coordinate worldToVoxel gives inside the grid: dims - 1, or the last node's position.

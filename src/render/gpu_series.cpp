@@ -10,7 +10,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "tstyles/core/errors.h"
+#include "tstyles/data/beam_geometry.h"
 #include "tstyles/data/read_options.h"
+#include "tstyles/render/beam_angle_table.h"
 #include "tstyles/render/bindings.h"
 #include "tstyles/render/density_texels.h"
 #include "tstyles/render/packed_aligned_atlas.h"
@@ -125,9 +127,17 @@ DensityTexelFormat densityTexelFormat(DensityPrecision precision, bool withValid
     return {GLenum(withValidity ? GL_RG32F : GL_R32F), GLenum(GL_FLOAT)};
 }
 
-// A time-step's row in the time-step table; beam grids also append their angles (radians).
-TimeStepInfo timeStepInfo(const TimeStep& step, const glm::ivec3& brickOrigin, int layer,
+// The manifest field that holds a beam axis' angles, for error messages.
+std::string beamAngleField(std::size_t index, const std::vector<double>& anglesDeg, const char* axis) {
+    return "time_steps[" + std::to_string(index) + "].grid." + axis +
+           (areEvenBeamAngles(anglesDeg) ? "_deg" : "_angles_deg");
+}
+
+// A time-step's row in the time-step table; beam grids also append their angles (radians) and the
+// angles' lookup (render/beam_angle_table.h).
+TimeStepInfo timeStepInfo(const Series& series, std::size_t index, const glm::ivec3& brickOrigin, int layer,
                           const glm::ivec3& occupancyOrigin, std::vector<float>& beamAngles) {
+    const TimeStep& step = series.steps[index];
     TimeStepInfo info{};
     const glm::ivec3 dims = step.dims();
     info.brickOrigin = glm::vec4(glm::vec3(brickOrigin), 0.0f);
@@ -137,9 +147,11 @@ TimeStepInfo timeStepInfo(const TimeStep& step, const glm::ivec3& brickOrigin, i
     if (step.isBeam()) {
         const BeamGrid& grid = step.beam();
         info.worldToVoxel = glm::mat4(glm::inverse(step.placement.gridToWorld()));
-        info.grid = glm::ivec4(kGridBeam, int(beamAngles.size()), int(beamAngles.size()) + dims.x, 0);
-        for (double angle : grid.azimuthDeg) beamAngles.push_back(float(glm::radians(angle)));
-        for (double angle : grid.elevationDeg) beamAngles.push_back(float(glm::radians(angle)));
+        const int azimuths = appendBeamAngleRun(grid.azimuthDeg, beamAngles, series.manifestPath,
+                                                beamAngleField(index, grid.azimuthDeg, "azimuth"));
+        const int elevations = appendBeamAngleRun(grid.elevationDeg, beamAngles, series.manifestPath,
+                                                  beamAngleField(index, grid.elevationDeg, "elevation"));
+        info.grid = glm::ivec4(kGridBeam, azimuths, elevations, 0);
         info.beamRange = glm::vec4(float(grid.minRange), float(grid.maxRange), float(grid.rangeSpacing()), 0.0f);
         return info;
     }
@@ -235,7 +247,7 @@ GpuSeries::GpuSeries(const Series& series)
     std::vector<TimeStepInfo> table;
     std::vector<float> beamAngles;
     for (std::size_t index = 0; index < series.size(); ++index) {
-        table.push_back(timeStepInfo(series.steps[index], layout_.brickOrigins[index], layers[index],
+        table.push_back(timeStepInfo(series, index, layout_.brickOrigins[index], layers[index],
                                      occupancyLayout_.brickOrigins[index], beamAngles));
     }
     // Buffers bound to a binding point must not be empty, even where no shader reads them.
@@ -247,6 +259,9 @@ GpuSeries::GpuSeries(const Series& series)
     proxyMeshTable_.setData(std::as_bytes(std::span(mesh)), GL_STATIC_DRAW);
     proxyTable_.setData(std::as_bytes(std::span(boxes)), GL_STATIC_DRAW);
     const UnevenAxisTable uneven = buildUnevenAxisTable(series);
+    hasUnevenAxes_ = std::any_of(uneven.firstNode.begin(), uneven.firstNode.end(), [](const glm::ivec4& first) {
+        return glm::any(glm::greaterThanEqual(first, glm::ivec4(0)));
+    });
     unevenAxisTable_.setData(std::as_bytes(std::span(uneven.firstNode)), GL_STATIC_DRAW);
     axisNodeTable_.setData(std::as_bytes(std::span(uneven.positions)), GL_STATIC_DRAW);
 }

@@ -57,7 +57,7 @@ const Program& Raycaster::programFor(const RaycastParameters& parameters) {
     const auto key = std::make_tuple(compositorDefine(parameters.compositor), parameters.collectStatistics,
                                      parameters.styled, parameters.naive, parameters.masks,
                                      parameters.allAffine, parameters.structuredGrids, parameters.packedAligned,
-                                     parameters.packedValidity, capacity);
+                                     parameters.packedValidity, capacity, parameters.unevenAxes);
     auto found = programs_.find(key);
     if (found != programs_.end()) return found->second;
     const ShaderDefines defines = {
@@ -72,6 +72,7 @@ const Program& Raycaster::programFor(const RaycastParameters& parameters) {
         {"PACKED_ALIGNED", parameters.packedAligned ? "1" : "0"},
         {"BRICK_CELLS", std::to_string(kBrickSize)},
         {"PACKED_VALIDITY", std::to_string(packedValidityDefine(parameters.packedValidity))},
+        {"UNEVEN_AXES", parameters.unevenAxes ? "1" : "0"},
     };
     auto program = Program::build(shaders_, {{GL_VERTEX_SHADER, "fullscreen.vert"},
                                              {GL_FRAGMENT_SHADER, "raycast.frag"}},

@@ -76,6 +76,7 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     parameters.naive = options.naive;
     parameters.masks = gpuSeries_->hasMasks();
     parameters.allAffine = gpuSeries_->allAffine();
+    parameters.unevenAxes = gpuSeries_->hasUnevenAxes();
     if (const PackedAlignedAtlas* packed = gpuSeries_->packedAtlas(); packed && options.packAligned && !options.naive) {
         parameters.packedAligned = true;
         parameters.packedValidity = packed->validity();

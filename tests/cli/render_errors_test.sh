@@ -116,6 +116,32 @@ case_dataset_nan() {
     expect_stderr_contains "(x, y, z) = (1, 0, 1)"
 }
 
+# A beam grid whose azimuths 0 and 0.0001 degrees lie closer than the renderer's loop-free beam
+# lookup can tell apart (at most 65536 buckets over the fan's 80 degrees): `info` reads it, `render`
+# refuses it, naming the manifest and the field (docs/dataset-format.md).
+case_beam_angles_too_close() {
+    mkdir -p "$SCRATCH/fan"
+    cat >"$SCRATCH/fan/series.json" <<'EOF'
+{
+  "format": "tstyles-series",
+  "version": 1,
+  "value_range": [0, 255],
+  "time_steps": [
+    {"time": 0,
+     "grid": {"type": "beam", "dims": [4, 2, 3], "azimuth_angles_deg": [-40, 0, 0.0001, 40],
+              "elevation_deg": [-10, 10], "range": [1, 2]},
+     "values": {"file": "t00.raw", "type": "uint8"}}
+  ]
+}
+EOF
+    head -c 24 /dev/zero >"$SCRATCH/fan/t00.raw"
+    run_tstyles -- info "$SCRATCH/fan/series.json"
+    expect_exit 0
+    write_scene "$SCRATCH/scene.json" "$SCRATCH/fan/series.json"
+    render_fails "$SCRATCH/scene.json" "$SCRATCH/fan/series.json" "time_steps[0].grid.azimuth_angles_deg" \
+        "neighbouring beams are too close together"
+}
+
 case_output_unsupported_extension() {
     write_scene "$SCRATCH/scene.json"
     OUTPUT="$SCRATCH/out.xyz"

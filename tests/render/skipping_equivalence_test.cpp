@@ -37,12 +37,6 @@ TEST_P(SkippingEquivalence, OptimisedAndNaiveRaycastersGiveTheSameImage) {
     // The hurricane-sized and sonar datasets of the benchmark arrive with their own features.
     if (!std::filesystem::exists(kSourceDir / "data" / c.dataset / "series.json"))
         GTEST_SKIP() << "dataset " << c.dataset << " is not there";
-    // Known and open: on the sonar survey's beam grids the optimised and the naive raycasters
-    // disagree on 3.6 % of the pixels (up to 78/255) along the seabed's crest behind the school,
-    // with or without empty-space skipping, and the naive image shows a thin bright crack there
-    // (docs/performance.md, "Sonar"). Skipped, not loosened, until the beam path is fixed.
-    if (c.dataset == "sonar")
-        GTEST_SKIP() << "open: optimised and naive raycasters differ on beam grids (3.6 % of pixels at the seabed crest)";
     Scene scene = loadScene(kSourceDir / "data/scenes" / (c.scene + ".json"));
     const Series& series = loadSeriesOnce(kSourceDir / "data" / c.dataset / "series.json");
     Renderer& renderer = testRenderer();

@@ -36,6 +36,8 @@ public:
     bool hasMasks() const { return hasMasks_; }
     // Whether every time-step's world -> voxel map is affine (TimeStepInfo.flags.x).
     bool allAffine() const { return allAffine_; }
+    // Whether any time-step has an uneven rectilinear axis (node lists in the uneven-axis table).
+    bool hasUnevenAxes() const { return hasUnevenAxes_; }
     // True when the density atlas holds (density * validity, validity) pairs.
     bool hasMissingValues() const { return hasMissingValues_; }
     // The density atlas' storage: R8, R16 or R32F (RG8, RG16, RG32F with missing values), from
@@ -61,6 +63,7 @@ private:
     std::size_t proxyMeshVertexCount_ = 0;
     bool hasMasks_ = false;
     bool allAffine_ = true;
+    bool hasUnevenAxes_ = true;
     bool hasMissingValues_ = false;
     DensityPrecision precision_ = DensityPrecision::Bits16;
     AtlasLayout layout_;

@@ -34,6 +34,7 @@ struct RaycastParameters {
     bool masks = false;     // whether any time-step has a segmentation mask
     bool allAffine = false; // whether every time-step's world -> voxel map is affine
     bool structuredGrids = false;  // the series has structured time-steps (inverse-map lookups compiled in)
+    bool unevenAxes = true;        // some time-step has an uneven axis (node lookups compiled in)
     // Fully aligned series: read four time-steps per fetch from the packed atlas (PackedAlignedAtlas).
     bool packedAligned = false;
     // With missing values the packed validities are read too (PackedAlignedAtlas::validity()).
@@ -71,9 +72,10 @@ private:
 
     const ShaderLibrary& shaders_;
     // Keyed by compositor, statistics on/off, styled or not, naive or not, masks or not, all
-    // affine or not, structured grids or not, packed or not, how packed validity is held and the
-    // time-step capacity of the shader's arrays.
-    std::map<std::tuple<int, bool, bool, bool, bool, bool, bool, bool, PackedValidity, int>, Program> programs_;
+    // affine or not, structured grids or not, packed or not, how packed validity is held, the
+    // time-step capacity of the shader's arrays and uneven axes or not.
+    std::map<std::tuple<int, bool, bool, bool, bool, bool, bool, bool, PackedValidity, int, bool>, Program>
+        programs_;
     VertexArray emptyVertexArray_;
     Buffer statistics_;
 };
