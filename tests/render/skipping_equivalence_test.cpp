@@ -3,6 +3,7 @@
 // tested at every sample, nothing skipped) gives the same picture.
 #include <iostream>
 #include <map>
+#include <ostream>
 
 #include <gtest/gtest.h>
 
@@ -29,6 +30,9 @@ struct Case {
     std::string scene;
     std::string dataset;
 };
+
+// What ctest lists and gtest reports as the parameter (instead of the struct's bytes).
+void PrintTo(const Case& c, std::ostream* out) { *out << c.scene << " on " << c.dataset; }
 
 class SkippingEquivalence : public ::testing::TestWithParam<Case> {};
 
