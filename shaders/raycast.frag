@@ -24,13 +24,16 @@ uniform vec4 background;        // straight (not premultiplied) colour and opaci
 #ifndef COLLECT_STATISTICS
 #define COLLECT_STATISTICS 0
 #endif
-#if COLLECT_STATISTICS
-// 64-bit counters as (low, high) pairs: GLSL 4.50 has only 32-bit atomics.
+// 64-bit counters as (low, high) pairs (GLSL 4.50 has only 32-bit atomics), filled with
+// COLLECT_STATISTICS; `cutShortRays` always.
 layout(std430, binding = STATISTICS_BUFFER) buffer Statistics {
     uvec2 rays;
     uvec2 samples;
     uvec2 fetches;
+    uint cutShortRays;
 } statistics;
+
+#if COLLECT_STATISTICS
 
 // A macro, not a function: atomics need the buffer variable itself, not a copy.
 #define ADD_TO_COUNTER(counter, amount)                           \
@@ -88,6 +91,12 @@ void main() {
         }
         t = segmentEnd;
     }
+
+    // The loop ends only at the exit or at the termination opacity. A ray that stopped before both
+    // was cut short by the driver: llvmpipe ends every loop of an invocation once 65535 loop passes
+    // have run in it (docs/architecture.md, "Limits: samples per ray on llvmpipe"). Counted, so
+    // that the front end can say that the image is incomplete.
+    if (t < rayDepth.y && accumulated.a < terminationOpacity) atomicAdd(statistics.cutShortRays, 1u);
 
 #if COLLECT_STATISTICS
     if (rayDepth.x < rayDepth.y) {

@@ -64,6 +64,10 @@ int runRender(const RenderOptions& options) {
     const double milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     writeImage(image, options.output);
+    if (const std::uint32_t cutShort = renderer.lastCutShortRays(); cutShort > 0)
+        std::cerr << "warning: " << options.scene.string() << ": " << cutShort << " of the image's rays were cut short "
+                  << "by the OpenGL driver's limit on loop passes per pixel (" << context->description()
+                  << "), so those pixels are incomplete; a larger raycast.step takes fewer samples per ray\n";
     std::cout << "wrote " << options.output.string() << " (" << scene.width << "x" << scene.height << ", "
               << toString(scene.compositor) << ", " << series.size() << " time-steps, " << milliseconds
               << " ms incl. shader compilation; " << context->description() << ")\n";

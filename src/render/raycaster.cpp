@@ -106,11 +106,10 @@ void Raycaster::draw(const RaycastParameters& parameters) {
         program.set("worldToView", parameters.worldToView);
         program.set("styleFootprint", parameters.styleFootprint);
     }
-    if (parameters.collectStatistics) {
-        const std::array<std::uint32_t, 6> zero = {0, 0, 0, 0, 0, 0};
-        statistics_.setData(std::as_bytes(std::span(zero)));
-        statistics_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kStatisticsBuffer);
-    }
+    // Counters: rays, samples, fetches (64-bit pairs, COLLECT_STATISTICS) and rays cut short.
+    const std::array<std::uint32_t, 7> zero = {0, 0, 0, 0, 0, 0, 0};
+    statistics_.setData(std::as_bytes(std::span(zero)));
+    statistics_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kStatisticsBuffer);
     glViewport(0, 0, parameters.viewport.x, parameters.viewport.y);
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);
@@ -129,6 +128,13 @@ RaycastStatistics Raycaster::lastStatistics() const {
         return std::uint64_t(counters[2 * index]) | (std::uint64_t(counters[2 * index + 1]) << 32);
     };
     return {counter(0), counter(1), counter(2)};
+}
+
+std::uint32_t Raycaster::lastCutShortRays() const {
+    std::uint32_t cutShort = 0;
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetNamedBufferSubData(statistics_.id(), 6 * sizeof(std::uint32_t), sizeof cutShort, &cutShort);
+    return cutShort;
 }
 
 }  // namespace tstyles

@@ -56,6 +56,22 @@ case_tc_average() {
     fi
 }
 
+# A step so fine that llvmpipe cuts rays short (it ends a pixel's loops after 65535 passes): the
+# image is still written, and the command warns on stderr, naming the scene and how many rays.
+# Drivers without that limit take every sample and say nothing.
+case_cut_short_rays_warning() {
+    write_scene "$SCRATCH/scene.json" "$DATASET" '"raycast": {"step": 0.00003, "termination": 1.0}'
+    run_tstyles -- render "$SCRATCH/scene.json" -o "$SCRATCH/out.png" --width 32 --height 32
+    expect_exit 0
+    expect_image "$SCRATCH/out.png" 32 32
+    if grep -qF llvmpipe "$OUT_FILE"; then
+        expect_stderr_contains "warning: $SCRATCH/scene.json: "
+        expect_stderr_contains "of the image's rays were cut short by the OpenGL driver's limit on loop passes"
+    elif grep -qF "cut short" "$ERR_FILE"; then
+        fail "a driver without llvmpipe's loop limit reported rays cut short"
+    fi
+}
+
 # A relative dataset path starts at the scene file's folder, not at the working directory.
 case_relative_dataset() {
     mkdir -p "$SCRATCH/scenes" "$SCRATCH/elsewhere"

@@ -66,6 +66,10 @@ public:
     void draw(const RaycastParameters& parameters);
     // Counters of the last draw with collectStatistics (waits for the GPU).
     RaycastStatistics lastStatistics() const;
+    // Rays of the last draw that stopped before their exit and below the termination opacity:
+    // cut short by the driver's limit on loop passes (llvmpipe), so their pixels are incomplete.
+    // Counted in every draw (waits for the GPU).
+    std::uint32_t lastCutShortRays() const;
 
 private:
     const Program& programFor(const RaycastParameters& parameters);

@@ -51,6 +51,8 @@ public:
     Image readFrame() const { return target_.read(); }
     // Counters of the last frame drawn with collectStatistics.
     RaycastStatistics lastStatistics() const { return raycaster_.lastStatistics(); }
+    // Rays of the last frame cut short by the driver (Raycaster::lastCutShortRays).
+    std::uint32_t lastCutShortRays() const { return raycaster_.lastCutShortRays(); }
     const RenderTarget& target() const { return target_; }
     // Texture memory of the series (atlases) and of the per-frame buffers.
     std::size_t seriesTextureBytes() const;
