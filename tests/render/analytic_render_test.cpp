@@ -11,9 +11,7 @@ namespace {
 
 constexpr int kSize = 64;
 constexpr double kViewHeight = 2.0;
-// Boxes are 8 samples 0.1 apart: 0.7 world units wide, and the reference length is 0.1.
-constexpr double kBoxWidth = 0.7;
-constexpr double kReferenceLength = 0.1;
+constexpr double kBoxWidth = kConstantBoxWidth;
 // Densities pass through 16-bit textures and the transfer functions through 1024-entry tables;
 // the remaining error is float arithmetic along the ray.
 constexpr float kTolerance = 2e-3f;
@@ -23,10 +21,6 @@ void expectPixel(const Image& image, glm::ivec2 pixel, glm::vec4 expected, const
     for (int c = 0; c < 4; ++c)
         EXPECT_NEAR(actual[c], expected[c], kTolerance)
             << what << " at pixel (" << pixel.x << ", " << pixel.y << ") channel " << c;
-}
-
-double slabOpacity(double opacityPerReference, double thickness) {
-    return 1.0 - std::pow(1.0 - opacityPerReference, thickness / kReferenceLength);
 }
 
 TEST(AnalyticRender, BeerLambertThroughAConstantSlab) {

@@ -14,9 +14,6 @@ namespace {
 
 constexpr int kSize = 16;
 constexpr double kViewHeight = 1.0;
-// Boxes are 8 samples 0.1 apart: 0.7 world units wide, and the reference length is 0.1.
-constexpr double kBoxWidth = 0.7;
-constexpr double kReferenceLength = 0.1;
 
 bool driverIsLlvmpipe() {
     const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
@@ -31,7 +28,7 @@ TEST(CutShortRays, AreCountedWhenTheDriverEndsTheRayMarchEarly) {
     const double alpha = 0.001;
     scene.stf.curve = constantFunction(glm::dvec3(1.0), alpha);
     scene.finalMode = FinalMode::Stf;
-    const double slabAlpha = 1.0 - std::pow(1.0 - alpha, kBoxWidth / kReferenceLength);
+    const double slabAlpha = slabOpacity(alpha, kConstantBoxWidth);
     const glm::ivec2 middle = pixelOf(centre, centre, kViewHeight, kSize);
 
     // Every ray of the slab reaches its exit: none is counted, and the slab has its full opacity.
@@ -41,7 +38,7 @@ TEST(CutShortRays, AreCountedWhenTheDriverEndsTheRayMarchEarly) {
     EXPECT_NEAR(complete.at(middle.x, middle.y).a, slabAlpha, 2e-4);
 
     // 300 000 samples per ray through the slab, far past llvmpipe's 65535 loop passes.
-    scene.raycast.step = kBoxWidth / 300000.0;
+    scene.raycast.step = kConstantBoxWidth / 300000.0;
     const Image cut = renderSeries(series, scene);
     if (!driverIsLlvmpipe()) {
         // Drivers without such a limit take every sample.
@@ -50,7 +47,7 @@ TEST(CutShortRays, AreCountedWhenTheDriverEndsTheRayMarchEarly) {
     }
     // Every pixel of the slab's interior is cut short, and it shows: the pixel has only part of
     // the slab's opacity.
-    const int covered = int(std::floor(kBoxWidth / kViewHeight * kSize)) - 1;
+    const int covered = int(std::floor(kConstantBoxWidth / kViewHeight * kSize)) - 1;
     EXPECT_GE(testRenderer().lastCutShortRays(), std::uint32_t(covered * covered));
     EXPECT_LT(cut.at(middle.x, middle.y).a, 0.5 * slabAlpha);
 }

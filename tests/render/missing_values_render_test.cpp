@@ -14,8 +14,7 @@ namespace {
 
 constexpr int kSize = 64;
 constexpr double kViewHeight = 2.0;
-constexpr double kBoxWidth = 0.7;  // 8 samples 0.1 apart
-constexpr double kReferenceLength = 0.1;
+constexpr double kBoxWidth = kConstantBoxWidth;
 // As in analytic_render_test.cpp: 16-bit densities, 1024-entry tables, float arithmetic.
 constexpr float kTolerance = 2e-3f;
 
@@ -24,10 +23,6 @@ void expectPixel(const Image& image, glm::ivec2 pixel, glm::vec4 expected, const
     for (int c = 0; c < 4; ++c)
         EXPECT_NEAR(actual[c], expected[c], kTolerance)
             << what << " at pixel (" << pixel.x << ", " << pixel.y << ") channel " << c;
-}
-
-double slabOpacity(double opacityPerReference, double thickness) {
-    return 1.0 - std::pow(1.0 - opacityPerReference, thickness / kReferenceLength);
 }
 
 // A constant box whose samples with x < 4 (world x < 0.35 from its origin) have no data.

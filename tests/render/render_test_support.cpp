@@ -95,6 +95,10 @@ Image renderSeries(const Series& series, const Scene& scene) {
     return renderImage(renderer, scene, series.worldBounds());
 }
 
+double slabOpacity(double opacityPerReference, double thickness, double referenceLength) {
+    return 1.0 - std::pow(1.0 - opacityPerReference, thickness / referenceLength);
+}
+
 glm::ivec2 pixelOf(glm::dvec2 world, glm::dvec2 centre, double viewHeight, int size) {
     const glm::dvec2 normalized = (world - centre) / viewHeight + 0.5;  // 0..1, y up
     return {int(std::floor(normalized.x * size)), int(std::floor((1.0 - normalized.y) * size))};

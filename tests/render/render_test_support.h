@@ -30,7 +30,15 @@ struct BoxSpec {
     std::optional<std::function<bool(glm::ivec3)>> mask;
 };
 
+// A box of 8x8x8 samples 0.1 apart with one density everywhere: kConstantBoxWidth wide, and its
+// series' reference length (the finest spacing) is kConstantBoxSpacing.
 BoxSpec constantBox(glm::dvec3 origin, float density);
+inline constexpr double kConstantBoxWidth = 0.7;
+inline constexpr double kConstantBoxSpacing = 0.1;
+
+// The opacity of a slab `thickness` thick whose transfer function gives `opacityPerReference` per
+// reference length (Beer-Lambert with the renderer's opacity correction).
+double slabOpacity(double opacityPerReference, double thickness, double referenceLength = kConstantBoxSpacing);
 
 // A series with one time-step per box, value range [0, 1], times 0, 1, 2, ...
 Series makeSeries(const std::vector<BoxSpec>& boxes);
