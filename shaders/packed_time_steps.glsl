@@ -3,10 +3,8 @@
 // time-steps have the same grid, placement and entry/exit interval, so the ray's only slot gives
 // the voxel position of every one of them (one node lookup along uneven axes for all), and one
 // occupancy texel per brick (visible where any time-step is) decides empty-space skipping for all
-// of them at once.
-#ifndef PACKED_ALIGNED
-#define PACKED_ALIGNED 0
-#endif
+// of them at once. The switch PACKED_ALIGNED gets its default in overlap_extraction.glsl, which
+// uses it first.
 // With missing values the packed densities are premultiplied by validity (render::PackedValidity):
 // PER_GROUP: the group's four validities are a second RGBA16 texel at the same place; SHARED:
 // every time-step misses the same voxels, and one R16 texture of the grid holds their validity.

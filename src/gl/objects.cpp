@@ -1,6 +1,7 @@
 // Creation and the few operations of the RAII GL object types.
 #include "tstyles/gl/objects.h"
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -27,6 +28,11 @@ Buffer Buffer::create() {
     GLuint id = 0;
     glCreateBuffers(1, &id);
     return Buffer(id);
+}
+
+void Buffer::clearToZero() const {
+    const std::uint32_t zero = 0;
+    glClearNamedBufferData(id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
 }
 
 void Buffer::setData(std::span<const std::byte> bytes, GLenum usage) const {

@@ -49,8 +49,17 @@ int arrayCapacity(int timeStepCount) {
 
 }  // namespace
 
+namespace {
+// The Statistics block of shaders/raycast.frag: rays, samples, fetches (64-bit pairs, filled with
+// COLLECT_STATISTICS) and rays cut short.
+constexpr std::size_t kStatisticsWords = 7;
+}  // namespace
+
 Raycaster::Raycaster(const ShaderLibrary& shaders)
-    : shaders_(shaders), emptyVertexArray_(VertexArray::create()), statistics_(Buffer::create()) {}
+    : shaders_(shaders), emptyVertexArray_(VertexArray::create()), statistics_(Buffer::create()) {
+    const std::array<std::uint32_t, kStatisticsWords> zero{};
+    statistics_.setData(std::as_bytes(std::span(zero)), GL_DYNAMIC_READ);
+}
 
 const Program& Raycaster::programFor(const RaycastParameters& parameters) {
     const int capacity = arrayCapacity(parameters.timeStepCount);
@@ -106,9 +115,7 @@ void Raycaster::draw(const RaycastParameters& parameters) {
         program.set("worldToView", parameters.worldToView);
         program.set("styleFootprint", parameters.styleFootprint);
     }
-    // Counters: rays, samples, fetches (64-bit pairs, COLLECT_STATISTICS) and rays cut short.
-    const std::array<std::uint32_t, 7> zero = {0, 0, 0, 0, 0, 0, 0};
-    statistics_.setData(std::as_bytes(std::span(zero)));
+    statistics_.clearToZero();
     statistics_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kStatisticsBuffer);
     glViewport(0, 0, parameters.viewport.x, parameters.viewport.y);
     glDisable(GL_BLEND);

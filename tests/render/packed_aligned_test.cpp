@@ -2,25 +2,20 @@
 // (render/packed_aligned_atlas.h). Packing must not change what a time-step contributes: a
 // known-answer test that needs every channel of both groups, and the benchmark scenes on the
 // aligned dataset rendered packed and through the general per-time-step path.
+#include <filesystem>
 #include <functional>
-#include <iostream>
 #include <limits>
 #include <variant>
 
 #include <gtest/gtest.h>
 
-#include "image_comparison.h"
+#include "bundled_scene_comparison.h"
 #include "render_test_support.h"
-#include "tstyles/data/manifest.h"
-#include "tstyles/image/image_io.h"
 #include "tstyles/render/packed_aligned_atlas.h"
-#include "tstyles/scene/scene_file.h"
 
 namespace tstyles::testing {
 namespace {
 
-const std::filesystem::path kSourceDir = TSTYLES_SOURCE_DIR;
-const std::filesystem::path kOutputDir = TSTYLES_TEST_OUTPUT_DIR;
 
 // Six aligned time-steps on a 24x4x4 grid (spacing 0.1): time-step k is dense (1) in the columns
 // x = 4k .. 4k + 3 and empty (0) elsewhere, so time-steps 4 and 5 live in the second group.
@@ -116,12 +111,16 @@ TEST(PackedAtlas, UnionOfVisibilitiesIsVisibleWhereAnyTimeStepIs) {
               (std::vector<std::uint8_t>{0, 255, 0, 255}));
 }
 
+// The column-block scenes look down z at the whole 24x4 grid, in a 96x96 image.
+constexpr int kColumnImageSize = 96;
+constexpr double kGridWidth = 23 * kSpacing;
+constexpr double kColumnViewHeight = kGridWidth * 1.1;
+const glm::dvec2 kColumnViewCentre(kGridWidth / 2.0, 1.5 * kSpacing);
+
 // Temporal MIP with the index TSTF alone (each time-step's own colour, opaque) over the STF
 // opacity given.
-Scene columnBlockScene(int size, const std::vector<OpacityNode>& stfOpacity) {
-    const double width = 23 * kSpacing;
-    const glm::dvec2 centre(width / 2.0, 1.5 * kSpacing);
-    Scene scene = orthographicSceneLookingDownZ(centre, width * 1.1, size);
+Scene columnBlockScene(const std::vector<OpacityNode>& stfOpacity) {
+    Scene scene = orthographicSceneLookingDownZ(kColumnViewCentre, kColumnViewHeight, kColumnImageSize);
     scene.compositor = TemporalCompositor::MaxIntensityProjection;
     scene.finalMode = FinalMode::Tstf;
     scene.stf.curve.opacity = stfOpacity;
@@ -136,20 +135,13 @@ Scene columnBlockScene(int size, const std::vector<OpacityNode>& stfOpacity) {
 // transparent where that is -1.
 void expectWinnerInEveryColumnBlock(const Series& series, const Scene& scene, bool packed, int solo,
                                     const std::function<int(int)>& expectedWinner) {
-    constexpr int kSize = 96;
-    const double width = 23 * kSpacing;
-    const glm::dvec2 centre(width / 2.0, 1.5 * kSpacing);
-    Renderer& renderer = testRenderer();
-    renderer.setSeries(series);
-    const View view = resolveView(scene.camera, series.worldBounds(), kSize, kSize);
     FrameOptions options;
-    options.size = {kSize, kSize};
     options.packAligned = packed;
     if (solo >= 0) options.soloTimeStep = solo;
-    renderer.draw(scene, view, options);
-    const Image image = renderer.readFrame();
+    const Image image = renderSeries(series, scene, options);
     for (int block = 0; block < kSteps; ++block) {
-        const glm::ivec2 pixel = pixelOf({(4 * block + 1.5) * kSpacing, centre.y}, centre, width * 1.1, kSize);
+        const glm::ivec2 pixel = pixelOf({(4 * block + 1.5) * kSpacing, kColumnViewCentre.y}, kColumnViewCentre,
+                                         kColumnViewHeight, kColumnImageSize);
         const glm::vec4 actual = image.at(pixel.x, pixel.y);
         const int winner = expectedWinner(block);
         const glm::vec4 expected = winner >= 0 ? glm::vec4(glm::vec3(indexColour(winner)), 1.0f) : glm::vec4(0.0f);
@@ -163,7 +155,7 @@ void expectWinnerInEveryColumnBlock(const Series& series, const Scene& scene, bo
 // Opaque above density 0.5: block k shows time-step k (with one time-step solo, only its block).
 TEST(PackedAlignedRender, EveryTimeStepShowsItsIndexColourInItsColumns) {
     const Series series = sixAlignedSteps();
-    const Scene scene = columnBlockScene(96, {{0.0, 0.0}, {0.5, 0.0}, {0.51, 1.0}, {1.0, 1.0}});
+    const Scene scene = columnBlockScene({{0.0, 0.0}, {0.5, 0.0}, {0.51, 1.0}, {1.0, 1.0}});
     for (const bool packed : {true, false})
         for (const int solo : {-1, 4})
             expectWinnerInEveryColumnBlock(series, scene, packed, solo,
@@ -174,7 +166,7 @@ TEST(PackedAlignedRender, EveryTimeStepShowsItsIndexColourInItsColumns) {
 // there: in block b every time-step but b is opaque where it has data, and the earliest of them
 // wins the tie. A missing value read as density 0 would be opaque and win instead.
 TEST(PackedAlignedRender, MissingValuesOnUnevenLevelsAreLeftOut) {
-    const Scene scene = columnBlockScene(96, {{0.0, 1.0}, {0.49, 1.0}, {0.5, 0.0}, {1.0, 0.0}});
+    const Scene scene = columnBlockScene({{0.0, 1.0}, {0.49, 1.0}, {0.5, 0.0}, {1.0, 0.0}});
     for (const auto hasData : {stepZeroMissesBlocksFourAndFive, everyStepMissesBlockFive}) {
         const Series series = sixAlignedStepsWithMissingValues(hasData);
         ASSERT_TRUE(suitsPackedAtlas(series));
@@ -194,64 +186,29 @@ constexpr int kPixelThreshold = 2;
 constexpr double kMaxFailingFraction = 0.001;
 constexpr double kMaxMeanDelta = 0.05;
 
-struct PackedCase {
-    std::string scene;
-    std::string dataset;
-};
-
-void PrintTo(const PackedCase& c, std::ostream* out) { *out << c.scene << " on " << c.dataset; }
-
-class PackedAlignedEquivalence : public ::testing::TestWithParam<PackedCase> {};
+class PackedAlignedEquivalence : public ::testing::TestWithParam<BundledScene> {};
 
 TEST_P(PackedAlignedEquivalence, PackedAndGeneralPathGiveTheSameImage) {
-    const PackedCase& c = GetParam();
-    const std::filesystem::path manifest = kSourceDir / "data" / c.dataset / "series.json";
-    if (!std::filesystem::exists(manifest)) GTEST_SKIP() << "dataset " << c.dataset << " is not there";
-    const Scene scene = loadScene(kSourceDir / "data/scenes" / (c.scene + ".json"));
-    const Series& series = loadSeriesOnce(manifest);
-    ASSERT_TRUE(suitsPackedAtlas(series));
-    constexpr int kSize = 160;
-    Renderer& renderer = testRenderer();
-    renderer.setSeries(series);
-    const View view = resolveView(scene.camera, series.worldBounds(), kSize, kSize);
-    FrameOptions options;
-    options.size = {kSize, kSize};
-    renderer.draw(scene, view, options);
-    const Image packed = renderer.readFrame();
-    options.packAligned = false;
-    renderer.draw(scene, view, options);
-    const Image general = renderer.readFrame();
-
-    const std::string name = c.scene + "-on-" + c.dataset;
-    const ImageDifference difference = compareImages(packed, general, kPixelThreshold);
-    const bool same = difference.failingFraction <= kMaxFailingFraction && difference.meanDelta <= kMaxMeanDelta;
-    if (!same) {
-        std::filesystem::create_directories(kOutputDir);
-        writeImage(packed, kOutputDir / (name + ".packed.png"));
-        writeImage(general, kOutputDir / (name + ".general.png"));
-        writeImage(differenceImage(packed, general, 8.0f), kOutputDir / (name + ".packed-difference.png"));
-    }
-    std::cout << "  " << name << ": " << describe(difference) << "\n";
-    EXPECT_TRUE(same) << name << ": " << describe(difference);
+    const BundledScene& bundled = GetParam();
+    if (!std::filesystem::exists(manifestOf(bundled))) GTEST_SKIP() << "dataset " << bundled.dataset << " is not there";
+    ASSERT_TRUE(suitsPackedAtlas(loadSeriesOnce(manifestOf(bundled))));
+    FrameOptions general;
+    general.packAligned = false;
+    expectSameImage(bundled, 160, {"packed", FrameOptions{}}, {"general", general},
+                    {kPixelThreshold, kMaxFailingFraction, kMaxMeanDelta});
 }
 
 // The aligned super-ellipsoid (even axes, no missing values) and the hurricane (uneven levels, land
 // as missing values shared by every time-step).
-INSTANTIATE_TEST_SUITE_P(
-    BenchmarkScenes, PackedAlignedEquivalence,
-    ::testing::Values(PackedCase{"figure4-temporal-mip", "superellipsoid-aligned"},
-                      PackedCase{"figure4-temporal-average", "superellipsoid-aligned"},
-                      PackedCase{"figure4-max-density-change", "superellipsoid-aligned"},
-                      PackedCase{"figure1-styled-focus-step3", "superellipsoid-aligned"},
-                      PackedCase{"figure4-styled-max-density-change", "superellipsoid-aligned"},
-                      PackedCase{"figure5-focus-step5", "hurricane"},
-                      PackedCase{"figure6-left-max-density-change", "hurricane"}),
-    [](const auto& parameter) {
-        std::string name = parameter.param.scene + "_on_" + parameter.param.dataset;
-        for (char& c : name)
-            if (c == '-') c = '_';
-        return name;
-    });
+INSTANTIATE_TEST_SUITE_P(BenchmarkScenes, PackedAlignedEquivalence,
+                         ::testing::Values(BundledScene{"figure4-temporal-mip", "superellipsoid-aligned"},
+                                           BundledScene{"figure4-temporal-average", "superellipsoid-aligned"},
+                                           BundledScene{"figure4-max-density-change", "superellipsoid-aligned"},
+                                           BundledScene{"figure1-styled-focus-step3", "superellipsoid-aligned"},
+                                           BundledScene{"figure4-styled-max-density-change", "superellipsoid-aligned"},
+                                           BundledScene{"figure5-focus-step5", "hurricane"},
+                                           BundledScene{"figure6-left-max-density-change", "hurricane"}),
+                         [](const auto& parameter) { return testNameOf(parameter.param); });
 
 }  // namespace
 }  // namespace tstyles::testing

@@ -95,6 +95,18 @@ Image renderSeries(const Series& series, const Scene& scene) {
     return renderImage(renderer, scene, series.worldBounds());
 }
 
+Image renderSeries(const Series& series, const Scene& scene, FrameOptions options) {
+    testRenderer().setSeries(series);
+    return drawWithCurrentSeries(scene, series.worldBounds(), options);
+}
+
+Image drawWithCurrentSeries(const Scene& scene, const Bounds& seriesBounds, FrameOptions options) {
+    Renderer& renderer = testRenderer();
+    options.size = {scene.width, scene.height};
+    renderer.draw(scene, resolveView(scene.camera, seriesBounds, scene.width, scene.height), options);
+    return renderer.readFrame();
+}
+
 double slabOpacity(double opacityPerReference, double thickness, double referenceLength) {
     return 1.0 - std::pow(1.0 - opacityPerReference, thickness / referenceLength);
 }

@@ -52,6 +52,11 @@ const Series& loadSeriesOnce(const std::filesystem::path& manifest);
 
 // Renders `series` with `scene` (uploads the series each call).
 Image renderSeries(const Series& series, const Scene& scene);
+// The same with frame options (packed or not, naive or not, solo...); the size is the scene's.
+Image renderSeries(const Series& series, const Scene& scene, FrameOptions options);
+// Draws `scene` with the series that testRenderer() already holds (`seriesBounds`: its world
+// bounds), at the scene's size, without uploading the series again.
+Image drawWithCurrentSeries(const Scene& scene, const Bounds& seriesBounds, FrameOptions options);
 
 // Pixel (column, row from the top) where world point (x, y) lands in a scene made by
 // orthographicSceneLookingDownZ.

@@ -32,6 +32,8 @@ public:
     GLuint id() const { return handle_.id(); }
     // Replaces the contents (the buffer grows or shrinks to `bytes`).
     void setData(std::span<const std::byte> bytes, GLenum usage = GL_DYNAMIC_DRAW) const;
+    // Sets every byte to 0 in place, on the GPU (no upload, no reallocation).
+    void clearToZero() const;
     void bindBase(GLenum target, GLuint index) const { glBindBufferBase(target, index, id()); }
 
 private:

@@ -1,0 +1,61 @@
+// Two renderings of a bundled scene compared (bundled_scene_comparison.h).
+#include "bundled_scene_comparison.h"
+
+#include <iostream>
+
+#include <gtest/gtest.h>
+
+#include "image_comparison.h"
+#include "render_test_support.h"
+#include "tstyles/image/image_io.h"
+#include "tstyles/scene/scene_file.h"
+
+namespace tstyles::testing {
+namespace {
+
+const std::filesystem::path kSourceDir = TSTYLES_SOURCE_DIR;
+const std::filesystem::path kOutputDir = TSTYLES_TEST_OUTPUT_DIR;
+
+}  // namespace
+
+void PrintTo(const BundledScene& bundled, std::ostream* out) { *out << bundled.scene << " on " << bundled.dataset; }
+
+std::string testNameOf(const BundledScene& bundled) {
+    std::string name = bundled.scene + "_on_" + bundled.dataset;
+    for (char& c : name)
+        if (c == '-') c = '_';
+    return name;
+}
+
+std::filesystem::path manifestOf(const BundledScene& bundled) {
+    return kSourceDir / "data" / bundled.dataset / "series.json";
+}
+
+void expectSameImage(const BundledScene& bundled, int size, const RenderingWay& first, const RenderingWay& second,
+                     const SameImageTolerance& tolerance) {
+    Scene scene = loadScene(kSourceDir / "data/scenes" / (bundled.scene + ".json"));
+    scene.width = size;
+    scene.height = size;
+    const Series& series = loadSeriesOnce(manifestOf(bundled));
+    testRenderer().setSeries(series);
+    const Image firstImage = drawWithCurrentSeries(scene, series.worldBounds(), first.options);
+    const Image secondImage = drawWithCurrentSeries(scene, series.worldBounds(), second.options);
+
+    const ImageDifference difference = compareImages(firstImage, secondImage, tolerance.pixelThreshold);
+    const bool same = difference.failingFraction <= tolerance.maxFailingFraction &&
+                      difference.meanDelta <= tolerance.maxMeanDelta;
+    const std::string name = bundled.scene + "." + bundled.dataset;
+    if (!same) {
+        std::filesystem::create_directories(kOutputDir);
+        writeImage(firstImage, kOutputDir / (name + "." + first.name + ".png"));
+        writeImage(secondImage, kOutputDir / (name + "." + second.name + ".png"));
+        writeImage(differenceImage(firstImage, secondImage, 8.0f),
+                   kOutputDir / (name + "." + first.name + "-" + second.name + ".difference.png"));
+    }
+    std::cout << "  " << bundled.scene << " on " << bundled.dataset << ", " << first.name << " against "
+              << second.name << ": " << describe(difference) << "\n";
+    EXPECT_TRUE(same) << bundled.scene << " on " << bundled.dataset << ", " << first.name << " against "
+                      << second.name << ": " << describe(difference);
+}
+
+}  // namespace tstyles::testing
