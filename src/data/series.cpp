@@ -35,6 +35,13 @@ std::string toString(ValueType type) {
     throw std::logic_error("toString: ValueType out of range");
 }
 
+std::string toString(AxisDirection direction) {
+    static constexpr const char* kNames[] = {"unknown", "east",     "west",      "north",    "south",
+                                             "up",      "down",     "right",     "left",     "anterior",
+                                             "posterior", "superior", "inferior"};
+    return kNames[static_cast<int>(direction)];
+}
+
 std::optional<ValueType> valueTypeFromString(const std::string& name) {
     for (ValueType type : {ValueType::UInt8, ValueType::UInt16, ValueType::Float32, ValueType::Int8,
                            ValueType::Int16, ValueType::Int32, ValueType::Float64}) {

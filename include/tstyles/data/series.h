@@ -139,6 +139,26 @@ struct Bounds {
     glm::dvec3 size() const { return upper - lower; }
 };
 
+// What the positive direction of a world axis points toward, where the file says so (CF
+// attributes, NIfTI and NRRD orientation). Opposites are separate values, so a reader states what
+// +axis means without flipping data; the automatic scene turns these into a display frame
+// (docs/automatic-scene.md).
+enum class AxisDirection {
+    Unknown,
+    East, West, North, South, Up, Down,                      // geographic
+    Right, Left, Anterior, Posterior, Superior, Inferior,   // anatomical (the patient's)
+};
+
+std::string toString(AxisDirection direction);  // "east", "anterior", "unknown", ...
+
+// One world axis of a series as the file describes it.
+struct SpatialAxis {
+    std::string name;  // the file's name for it ("lon", "depth"); empty: none given
+    std::string unit;  // as the file spells it ("degrees_east", "m", "hPa", "mm"); empty: unknown
+    AxisDirection direction = AxisDirection::Unknown;
+    bool operator==(const SpatialAxis&) const = default;
+};
+
 // Bits per density sample on the GPU: R8, R16 or R32F textures.
 enum class DensityPrecision { Bits8, Bits16, Bits32 };
 
@@ -153,6 +173,8 @@ struct Series {
     DensityPrecision precision = DensityPrecision::Bits16;
     // The file format it was read from ("tstyles manifest", "NetCDF-4", "NRRD", ...).
     std::string sourceFormat = "tstyles manifest";
+    // What world x, y and z mean, in that order, as far as the source says.
+    std::array<SpatialAxis, 3> axes;
 
     std::size_t size() const { return steps.size(); }
     bool hasMasks() const;
