@@ -62,5 +62,6 @@ Command addInfoCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);
 Command addViewCommand(CLI::App& app);
 Command addConvertCommand(CLI::App& app);
+Command addSceneCommand(CLI::App& app);
 
 }  // namespace tstyles::cli

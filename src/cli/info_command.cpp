@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "commands.h"
+#include "tstyles/scene/automatic_scene.h"
 #include "tstyles/data/series_summary.h"
 
 namespace tstyles::cli {
@@ -18,7 +19,11 @@ Command addInfoCommand(CLI::App& app) {
         ->required();
     addDatasetOptions(*command, *dataset);
     return {command, [inputs, dataset] {
-                std::cout << describeSeries(openDataset(*inputs, *dataset));
+                const Series series = openDataset(*inputs, *dataset);
+                std::cout << describeSeries(series);
+                std::cout << "\nautomatic scene (tstyles render/view/scene of this dataset; docs/automatic-scene.md):\n";
+                for (const std::string& line : automaticScene(series, inputs->front()).explanation)
+                    std::cout << "  " << line << "\n";
                 return kExitSuccess;
             }};
 }

@@ -4,6 +4,8 @@
 #include <memory>
 
 #include "commands.h"
+#include "scene_source.h"
+#include "tstyles/scene/automatic_scene.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/image/image_io.h"
 #include "tstyles/render/renderer.h"
@@ -13,11 +15,11 @@ namespace tstyles::cli {
 namespace {
 
 struct RenderOptions {
-    std::filesystem::path scene;
+    std::vector<std::filesystem::path> inputs;  // a scene file, or the files of one dataset
     std::filesystem::path output;
     std::optional<int> width;
     std::optional<int> height;
-    std::optional<std::string> compositor;
+    SceneOverrides overrides;
     std::vector<std::string> styleOverrides;  // NAME=FILE
     GlOptions gl;
     std::vector<std::filesystem::path> datasetFiles;  // --dataset: instead of the scene's dataset
@@ -46,30 +48,28 @@ void overrideStyles(Scene& scene, const std::vector<std::string>& overrides) {
 
 int runRender(const RenderOptions& options) {
     requireWritableImagePath(options.output);
-    Scene scene = loadScene(options.scene);
+    SceneAndSeries opened = openSceneOrDataset(options.inputs, options.datasetFiles, options.dataset);
+    Scene& scene = opened.scene;
     if (options.width) scene.width = *options.width;
     if (options.height) scene.height = *options.height;
-    if (options.compositor) {
-        scene.compositor = *temporalCompositorFromString(*options.compositor);
-    }
+    applySceneOverrides(scene, options.overrides);
     overrideStyles(scene, options.styleOverrides);
-    const Series series = openDataset(
-        options.datasetFiles.empty() ? std::vector<std::filesystem::path>{scene.dataset} : options.datasetFiles,
-        options.dataset);
+    const SceneOnSeries fitted = fitSceneToSeries(std::move(scene), std::move(opened.series));
+    const Series& series = fitted.series;
     const auto context = createHeadlessContext(parseBackend(options.gl.backend), glDebugOutputRequested());
     Renderer renderer(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
     renderer.setSeries(series);
     const auto start = std::chrono::steady_clock::now();
-    const Image image = renderImage(renderer, scene, series.worldBounds());
+    const Image image = renderImage(renderer, fitted.scene, fitted.framed, series.worldBounds());
     const double milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     writeImage(image, options.output);
     if (const std::uint32_t cutShort = renderer.lastCutShortRays(); cutShort > 0)
-        std::cerr << "warning: " << options.scene.string() << ": " << cutShort << " of the image's rays were cut short "
+        std::cerr << "warning: " << options.inputs.front().string() << ": " << cutShort << " of the image's rays were cut short "
                   << "by the OpenGL driver's limit on loop passes per pixel (" << context->description()
                   << "), so those pixels are incomplete; a larger raycast.step takes fewer samples per ray\n";
-    std::cout << "wrote " << options.output.string() << " (" << scene.width << "x" << scene.height << ", "
-              << toString(scene.compositor) << ", " << series.size() << " time-steps, " << milliseconds
+    std::cout << "wrote " << options.output.string() << " (" << fitted.scene.width << "x" << fitted.scene.height
+              << ", " << toString(fitted.scene.compositor) << ", " << series.size() << " time-steps, " << milliseconds
               << " ms incl. shader compilation; " << context->description() << ")\n";
     return kExitSuccess;
 }
@@ -78,16 +78,20 @@ int runRender(const RenderOptions& options) {
 
 Command addRenderCommand(CLI::App& app) {
     auto options = std::make_shared<RenderOptions>();
-    CLI::App* command = app.add_subcommand("render", "Render a scene file to an image (PNG, TIFF, EXR)");
-    command->add_option("scene", options->scene, "Scene file (JSON)")->required();
+    CLI::App* command = app.add_subcommand(
+        "render", "Render a scene file, or a dataset with the automatic scene, to an image (PNG, TIFF, EXR)");
+    command
+        ->add_option("input", options->inputs,
+                     "A scene file (JSON); or a dataset (a manifest or its folder, a NetCDF, NIfTI, NRRD or Plot3D "
+                     "grid file, or several files of one series), drawn with the automatic scene "
+                     "(docs/automatic-scene.md)")
+        ->required();
     command->add_option("-o,--output", options->output, "Image file to write; the format follows the extension")
         ->required();
     command->add_option("--width", options->width, "Image width (overrides the scene)")->check(CLI::Range(1, 16384));
     command->add_option("--height", options->height, "Image height (overrides the scene)")
         ->check(CLI::Range(1, 16384));
-    command->add_option("--tc", options->compositor,
-                        "Temporal compositor: temporal-mip, temporal-average, temporal-max-change")
-        ->check(CLI::IsMember(temporalCompositorNames()));
+    addSceneOverrides(*command, options->overrides);
     command->add_option("--style", options->styleOverrides,
                         "NAME=FILE: use this image (any format OpenImageIO reads) wherever the scene uses style NAME");
     addGlOptions(*command, options->gl);

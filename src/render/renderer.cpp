@@ -109,7 +109,11 @@ std::size_t Renderer::frameTextureBytes() const {
 }
 
 Image renderImage(Renderer& renderer, const Scene& scene, const Bounds& seriesBounds) {
-    const View view = resolveView(scene.camera, seriesBounds, scene.width, scene.height);
+    return renderImage(renderer, scene, seriesBounds, seriesBounds);
+}
+
+Image renderImage(Renderer& renderer, const Scene& scene, const Bounds& framed, const Bounds& seriesBounds) {
+    const View view = resolveView(scene.camera, framed, seriesBounds, scene.width, scene.height);
     FrameOptions options;
     options.size = {scene.width, scene.height};
     renderer.draw(scene, view, options);

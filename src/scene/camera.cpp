@@ -58,10 +58,14 @@ Pose lookAtPose(const LookAtCamera& lookAt) { return {lookAt.eye, lookAt.target,
 }  // namespace
 
 View resolveView(const Camera& camera, const Bounds& seriesBounds, int width, int height) {
+    return resolveView(camera, seriesBounds, seriesBounds, width, height);
+}
+
+View resolveView(const Camera& camera, const Bounds& framed, const Bounds& seriesBounds, int width, int height) {
     const double aspect = double(std::max(width, 1)) / double(std::max(height, 1));
     const double fovYRadians = camera.fovDeg * degreesToRadians;
     const Pose pose = std::holds_alternative<OrbitCamera>(camera.pose)
-                          ? orbitPose(std::get<OrbitCamera>(camera.pose), seriesBounds, fovYRadians, aspect)
+                          ? orbitPose(std::get<OrbitCamera>(camera.pose), framed, fovYRadians, aspect)
                           : lookAtPose(std::get<LookAtCamera>(camera.pose));
 
     View view;
@@ -105,5 +109,15 @@ std::optional<Projection> projectionFromString(const std::string& name) {
 std::vector<std::string> projectionNames() {
     return {toString(Projection::Perspective), toString(Projection::Orthographic)};
 }
+
+std::string toString(Framing framing) { return framing == Framing::Series ? "series" : "visible"; }
+
+std::optional<Framing> framingFromString(const std::string& name) {
+    if (name == "series") return Framing::Series;
+    if (name == "visible") return Framing::Visible;
+    return std::nullopt;
+}
+
+std::vector<std::string> framingNames() { return {toString(Framing::Series), toString(Framing::Visible)}; }
 
 }  // namespace tstyles

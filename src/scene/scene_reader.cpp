@@ -105,6 +105,7 @@ void readCurve(const JsonFieldReader& fields, const json& object, const std::str
 
 void readGradientRange(const JsonFieldReader& fields, const json& value, const std::string& path,
                        GradientTstf& tstf) {
+    if (!value.is_array()) fields.fail(path, "expected [low, high] or \"auto\", got " + std::string(value.type_name()));
     const std::vector<double> range = fields.numbers(value, path, 2, nonNegative);
     if (!(range[0] < range[1])) {
         fields.fail(path, "must be [low, high] with 0 <= low < high, got [" + formatNumber(range[0]) + ", " +
@@ -126,7 +127,10 @@ void readTstf(const JsonFieldReader& fields, const json& value, Scene& scene) {
         const std::string gradientPath = childPath(path, "gradient");
         fields.expectObject(*gradient, gradientPath, {"range", "opacity", "color"});
         if (const json* range = JsonFieldReader::member(*gradient, "range")) {
-            readGradientRange(fields, *range, childPath(gradientPath, "range"), scene.gradientTstf);
+            if (range->is_string() && range->get<std::string>() == "auto")
+                scene.gradientTstf.automaticRange = true;
+            else
+                readGradientRange(fields, *range, childPath(gradientPath, "range"), scene.gradientTstf);
         }
         readCurve(fields, *gradient, gradientPath, unitInterval, scene.gradientTstf.curve);
     }
@@ -208,18 +212,84 @@ LookAtCamera readLookAt(const JsonFieldReader& fields, const json& value, const 
 
 void readCamera(const JsonFieldReader& fields, const json& value, Camera& camera) {
     const std::string path = "camera";
-    fields.expectObject(value, path, {"orbit", "look_at", "fov_deg", "projection"});
+    fields.expectObject(value, path, {"orbit", "look_at", "frame", "fov_deg", "projection"});
     const json* orbit = JsonFieldReader::member(value, "orbit");
     const json* lookAt = JsonFieldReader::member(value, "look_at");
     if (orbit && lookAt) fields.fail(path, "has both orbit and look_at; give exactly one");
     if (orbit) camera.pose = readOrbit(fields, *orbit, childPath(path, "orbit"));
     if (lookAt) camera.pose = readLookAt(fields, *lookAt, childPath(path, "look_at"));
+    if (const json* frame = JsonFieldReader::member(value, "frame")) {
+        camera.framing = fields.name<Framing>(*frame, childPath(path, "frame"), framingFromString, framingNames());
+    }
     if (const json* fov = JsonFieldReader::member(value, "fov_deg")) {
         camera.fovDeg = fields.numberIn(*fov, childPath(path, "fov_deg"), {0.0, 180.0, false, false});
     }
     if (const json* projection = JsonFieldReader::member(value, "projection")) {
         camera.projection = fields.name<Projection>(*projection, childPath(path, "projection"),
                                                     projectionFromString, projectionNames());
+    }
+}
+
+// "orientation": "data", "auto" or three signed axes ["+x", "+z", "-y"] that make a rotation.
+Orientation readOrientation(const JsonFieldReader& fields, const json& value) {
+    const std::string path = "orientation";
+    Orientation orientation;
+    if (value.is_string()) {
+        const std::string mode = value.get<std::string>();
+        if (mode == "data") return orientation;
+        if (mode == "auto") {
+            orientation.mode = Orientation::Mode::Auto;
+            return orientation;
+        }
+        fields.fail(path, "unknown value \"" + mode + "\"; allowed: \"data\", \"auto\" or three axes such as "
+                          "[\"+x\", \"+z\", \"-y\"]");
+    }
+    fields.expectArray(value, path);
+    if (value.size() != 3) fields.fail(path, "expected three axes (display x, y, z), got " + std::to_string(value.size()));
+    orientation.mode = Orientation::Mode::Axes;
+    std::array<bool, 3> used{};
+    for (std::size_t i = 0; i < 3; ++i) {
+        const std::string text = fields.string(value[i], elementPath(path, i));
+        const auto axis = signedAxisFromString(text);
+        if (!axis) fields.fail(elementPath(path, i), "expected +x, -x, +y, -y, +z or -z, got \"" + text + "\"");
+        if (used[std::size_t(axis->axis)]) fields.fail(path, "names an axis twice");
+        used[std::size_t(axis->axis)] = true;
+        orientation.axes[i] = *axis;
+    }
+    if (glm::determinant(rotationOf(orientation.axes)) < 0.0)
+        fields.fail(path, "mirrors the data (a left-handed frame); negate one axis");
+    return orientation;
+}
+
+// "aspect": "physical", "cubic", "auto" or a scale per display axis [sx, sy, sz].
+Aspect readAspect(const JsonFieldReader& fields, const json& value) {
+    Aspect aspect;
+    if (value.is_string()) {
+        const std::string mode = value.get<std::string>();
+        if (mode == "physical") return aspect;
+        aspect.mode = mode == "cubic" ? Aspect::Mode::Cubic : mode == "auto" ? Aspect::Mode::Auto : Aspect::Mode::Scale;
+        if (aspect.mode == Aspect::Mode::Scale)
+            fields.fail("aspect", "unknown value \"" + mode + "\"; allowed: \"physical\", \"cubic\", \"auto\" or "
+                                  "a scale per axis [sx, sy, sz]");
+        return aspect;
+    }
+    aspect.mode = Aspect::Mode::Scale;
+    aspect.scale = fields.vec3(value, "aspect", positive);
+    return aspect;
+}
+
+void readDisplay(const JsonFieldReader& fields, const json& root, DisplaySettings& display) {
+    if (const json* orientation = JsonFieldReader::member(root, "orientation"))
+        display.orientation = readOrientation(fields, *orientation);
+    if (const json* aspect = JsonFieldReader::member(root, "aspect")) display.aspect = readAspect(fields, *aspect);
+    if (const json* exaggeration = JsonFieldReader::member(root, "vertical_exaggeration")) {
+        if (exaggeration->is_string() && exaggeration->get<std::string>() == "auto")
+            display.verticalExaggeration.reset();
+        else if (exaggeration->is_string())
+            fields.fail("vertical_exaggeration", "expected a number > 0 or \"auto\", got \"" +
+                                                     exaggeration->get<std::string>() + "\"");
+        else
+            display.verticalExaggeration = fields.numberIn(*exaggeration, "vertical_exaggeration", positive);
     }
 }
 
@@ -252,10 +322,12 @@ Scene parseScene(const std::string& text, const std::filesystem::path& origin) {
     const JsonFieldReader fields(origin);
     const json root = parseJson(text, origin);
     fields.expectObject(root, "",
-                        {"dataset", "image", "camera", "raycast", "stf", "compositor", "tstf", "final"});
+                        {"dataset", "orientation", "aspect", "vertical_exaggeration", "image", "camera", "raycast",
+                         "stf", "compositor", "tstf", "final"});
 
     Scene scene;
     scene.dataset = readDataset(fields, root, origin);
+    readDisplay(fields, root, scene.display);
     if (const json* image = JsonFieldReader::member(root, "image")) readImage(fields, *image, scene);
     if (const json* camera = JsonFieldReader::member(root, "camera"))
         readCamera(fields, *camera, scene.camera);

@@ -116,6 +116,7 @@ ordered_json cameraJson(const Camera& camera) {
     } else {
         result["look_at"] = lookAtJson(std::get<LookAtCamera>(camera.pose));
     }
+    if (camera.framing != Framing::Series) result["frame"] = toString(camera.framing);
     result["fov_deg"] = camera.fovDeg;
     result["projection"] = toString(camera.projection);
     return result;
@@ -127,6 +128,22 @@ ordered_json cameraJson(const Camera& camera) {
 std::string sceneToJson(const Scene& scene, const std::filesystem::path& sceneFolder) {
     ordered_json root;
     root["dataset"] = pathJson(scene.dataset, sceneFolder);
+    if (scene.display != DisplaySettings{}) {
+        const Orientation& orientation = scene.display.orientation;
+        if (orientation.mode == Orientation::Mode::Auto) root["orientation"] = "auto";
+        if (orientation.mode == Orientation::Mode::Axes) {
+            root["orientation"] = ordered_json::array();
+            for (const SignedAxis& axis : orientation.axes) root["orientation"].push_back(toString(axis));
+        }
+        const Aspect& aspect = scene.display.aspect;
+        root["aspect"] = aspect.mode == Aspect::Mode::Scale ? vectorJson(aspect.scale)
+                         : aspect.mode == Aspect::Mode::Cubic ? ordered_json("cubic")
+                         : aspect.mode == Aspect::Mode::Auto  ? ordered_json("auto")
+                                                              : ordered_json("physical");
+        root["vertical_exaggeration"] = scene.display.verticalExaggeration
+                                            ? ordered_json(*scene.display.verticalExaggeration)
+                                            : ordered_json("auto");
+    }
 
     ordered_json& image = root["image"];
     image["width"] = scene.width;
@@ -146,7 +163,9 @@ std::string sceneToJson(const Scene& scene, const std::filesystem::path& sceneFo
     ordered_json& tstf = root["tstf"];
     tstf["index"] = curveJson(scene.indexTstf.curve, sceneFolder);
     ordered_json gradient;
-    gradient["range"] = ordered_json::array({scene.gradientTstf.rangeLow, scene.gradientTstf.rangeHigh});
+    gradient["range"] = scene.gradientTstf.automaticRange
+                            ? ordered_json("auto")
+                            : ordered_json::array({scene.gradientTstf.rangeLow, scene.gradientTstf.rangeHigh});
     gradient.update(curveJson(scene.gradientTstf.curve, sceneFolder));
     tstf["gradient"] = gradient;
 

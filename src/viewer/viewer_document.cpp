@@ -1,15 +1,11 @@
 // Opening scenes and datasets for the viewer.
 #include "viewer_document.h"
 
-#include <cctype>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
-
-#include <nlohmann/json.hpp>
 
 #include "tstyles/core/errors.h"
 #include "tstyles/data/series_opener.h"
+#include "tstyles/scene/input_kind.h"
 #include "tstyles/scene/scene_file.h"
 
 namespace tstyles::viewer {
@@ -31,32 +27,13 @@ std::shared_ptr<const Series> seriesFor(const std::vector<std::filesystem::path>
 
 }  // namespace
 
-ViewerInputKind classifyViewerInput(const std::filesystem::path& path) {
-    if (std::filesystem::is_directory(path)) return ViewerInputKind::Dataset;
-    std::ifstream stream(path, std::ios::binary);
-    if (!stream) return ViewerInputKind::Scene;  // let the scene reader say what is wrong
-    char first = 0;
-    while (stream.get(first) && std::isspace(static_cast<unsigned char>(first))) {
-    }
-    // Not JSON (which starts with an object or a comment): a data file, left to the opener.
-    if (!isManifestInput(path) && (!stream || (first != '{' && first != '/'))) return ViewerInputKind::Dataset;
-    stream.clear();
-    stream.seekg(0);
-    std::stringstream text;
-    text << stream.rdbuf();
-    const nlohmann::json json = nlohmann::json::parse(text.str(), nullptr, false, true);
-    if (json.is_object() && !json.contains("dataset") && (json.contains("time_steps") || json.contains("format")))
-        return ViewerInputKind::Dataset;
-    return ViewerInputKind::Scene;
-}
-
 ViewerDocument openDocument(const std::vector<std::filesystem::path>& paths, const ViewerDocument* current,
                             const ReadOptions& readOptions) {
     if (paths.empty()) throw std::invalid_argument("openDocument: no path");
     for (const auto& path : paths)
         if (!std::filesystem::exists(path)) throwInputError(path, "", "no such file or folder");
     ViewerDocument document;
-    if (paths.size() > 1 || classifyViewerInput(paths.front()) == ViewerInputKind::Dataset) {
+    if (paths.size() > 1 || classifyInput(paths.front()) == InputKind::Dataset) {
         document.series = seriesFor(paths, current, readOptions);
         document.scene.dataset = document.series->manifestPath;
     } else {

@@ -25,12 +25,6 @@ struct ViewerDocument {
     Camera openedCamera;
 };
 
-enum class ViewerInputKind { Scene, Dataset };
-
-// A folder, a JSON file that is a series manifest, or a file that is not JSON (NetCDF, NIfTI,
-// NRRD, Plot3D, Isabel: docs/readers.md) is a dataset; a JSON file naming a dataset is a scene.
-ViewerInputKind classifyViewerInput(const std::filesystem::path& path);
-
 // Opens a scene file or a dataset (with a default scene); several paths are the files of one
 // series. The dataset is read with `readOptions` (the command line's --var, --steps, ...). A
 // series already held by `current` is reused rather than read again. Throws InputError naming the

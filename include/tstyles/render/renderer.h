@@ -77,5 +77,7 @@ private:
 // Renders one scene headless: loads nothing, just draws and reads back. Convenience for the CLI
 // and the tests.
 Image renderImage(Renderer& renderer, const Scene& scene, const Bounds& seriesBounds);
+// The same where an automatic camera frames `framed` (the visible part) rather than the series.
+Image renderImage(Renderer& renderer, const Scene& scene, const Bounds& framed, const Bounds& seriesBounds);
 
 }  // namespace tstyles

@@ -35,8 +35,17 @@ struct LookAtCamera {
     bool operator==(const LookAtCamera&) const = default;
 };
 
+// What an orbit camera without target or distance frames: the bounds of the whole series, or of
+// the part the STF leaves visible (visibleBounds in tstyles/scene/visible_bounds.h).
+enum class Framing { Series, Visible };
+
+std::string toString(Framing framing);  // "series", "visible"
+std::optional<Framing> framingFromString(const std::string& name);
+std::vector<std::string> framingNames();
+
 struct Camera {
     std::variant<OrbitCamera, LookAtCamera> pose = OrbitCamera{};
+    Framing framing = Framing::Series;
     // Vertical field of view. An orthographic camera shows the height that this field of view
     // spans at the target's distance, so switching projection keeps the framing.
     double fovDeg = 30.0;
@@ -58,5 +67,8 @@ struct View {
 };
 
 View resolveView(const Camera& camera, const Bounds& seriesBounds, int width, int height);
+// The same, with the bounds an automatic orbit frames (`framed`, the visible part) apart from the
+// bounds the clip planes must hold (`all`, the whole series).
+View resolveView(const Camera& camera, const Bounds& framed, const Bounds& all, int width, int height);
 
 }  // namespace tstyles

@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include "tstyles/data/display_frame.h"
 #include "tstyles/scene/camera.h"
 #include "tstyles/scene/transfer_function.h"
 
@@ -44,6 +45,9 @@ struct Scene {
     // holds the resolved absolute, normalized path. A relative path in memory means relative to the
     // current directory.
     std::filesystem::path dataset;
+    // How the series' axes are turned and scaled for display (orientation, aspect, vertical
+    // exaggeration); the default shows the data as stored.
+    DisplaySettings display;
     Camera camera;
     int width = 512;
     int height = 512;

@@ -66,6 +66,9 @@ struct GradientTstf {
     TransferFunction1D curve;
     double rangeLow = 0.0;
     double rangeHigh = 1.0;
+    // Scene value "auto": the range is fitted to the change present in the data each time the scene
+    // meets a series (resolveAutomaticParts, tstyles/scene/automatic_scene.h).
+    bool automaticRange = false;
     double normalize(double change) const;
     bool operator==(const GradientTstf&) const = default;
 };

@@ -1,0 +1,48 @@
+// The automatic scene: what `tstyles render DATASET`, `tstyles view DATASET` and `tstyles scene`
+// make of a dataset with no scene file, and how the automatic parts of any scene are fitted to the
+// series it meets. A documented, deterministic function of the data (docs/automatic-scene.md).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "tstyles/data/display_frame.h"
+#include "tstyles/data/series.h"
+#include "tstyles/scene/scene.h"
+
+namespace tstyles {
+
+// What the file says the data is, from its axes' directions.
+enum class DataKind { Geographic, Anatomical, Other };
+DataKind dataKindOf(const Series& series);
+
+struct AutomaticScene {
+    Scene scene;
+    // One line per choice, for `tstyles info`, `tstyles scene` and the viewer.
+    std::vector<std::string> explanation;
+};
+
+// The scene for a series as read (before any display frame): display frame, opacity from the
+// histogram, a neutral lit-sphere style, time in colour, the compositor and the camera.
+AutomaticScene automaticScene(const Series& series, const std::filesystem::path& dataset);
+
+// A scene fitted to a series: the series turned and scaled into the display frame the scene asks
+// for, the automatic gradient range filled in, and the bounds an automatic camera frames.
+struct SceneOnSeries {
+    Scene scene;
+    Series series;  // in display coordinates
+    DisplayFrame frame;
+    Bounds framed;  // visible or whole-series bounds, as the camera's framing says
+};
+
+SceneOnSeries fitSceneToSeries(Scene scene, Series series);
+
+// The bounds an automatic orbit camera frames for this scene on this (display) series.
+Bounds framedBounds(const Scene& scene, const Series& series);
+
+// The change (max - min density over time-steps) below which 99 % of the visible voxels' changes
+// lie: the automatic gradient TSTF range is [0, this].
+double typicalLargestChange(const Series& series, const Stf& stf);
+
+}  // namespace tstyles

@@ -1,0 +1,91 @@
+// Scene files or automatic scenes, and command-line overrides (scene_source.h).
+#include "scene_source.h"
+
+#include <cstdlib>
+
+#include <nlohmann/json.hpp>
+
+#include "tstyles/core/errors.h"
+#include "tstyles/scene/automatic_scene.h"
+#include "tstyles/scene/input_kind.h"
+#include "tstyles/scene/scene_file.h"
+
+namespace tstyles::cli {
+namespace {
+
+// "auto" stays a string, "1.5" a number, "1,2,0.5" and "+x,+z,-y" arrays of numbers or strings.
+nlohmann::json valueFromText(const std::string& text) {
+    auto element = [](const std::string& part) -> nlohmann::json {
+        char* end = nullptr;
+        const double number = std::strtod(part.c_str(), &end);
+        if (!part.empty() && end == part.c_str() + part.size()) return number;
+        return part;
+    };
+    if (text.find(',') == std::string::npos) return element(text);
+    nlohmann::json array = nlohmann::json::array();
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t comma = text.find(',', start);
+        array.push_back(element(text.substr(start, comma - start)));
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return array;
+}
+
+// The scene reader checks an override exactly as it checks the key in a file.
+DisplaySettings displayFromOptions(const std::string& key, const std::string& option, const std::string& text) {
+    const nlohmann::json snippet = {{"dataset", "-"}, {key, valueFromText(text)}};
+    try {
+        return parseScene(snippet.dump(), "").display;
+    } catch (const InputError& error) {
+        std::string message = error.what();
+        if (message.rfind(key + ": ", 0) == 0) message.erase(0, key.size() + 2);
+        throwInputError("", option, message);
+    }
+}
+
+}  // namespace
+
+void addSceneOverrides(CLI::App& command, SceneOverrides& overrides) {
+    command.add_option("--tc", overrides.compositor, "Temporal compositor: temporal-mip, temporal-average, temporal-max-change")
+        ->check(CLI::IsMember(temporalCompositorNames()));
+    command.add_option("--orientation", overrides.orientation,
+                       "Which data axes show as right, up and toward the viewer: auto (from the file's axis meaning), "
+                       "data (as stored), or three signed axes such as +x,+z,-y");
+    command.add_option("--aspect", overrides.aspect,
+                       "Proportions: auto, physical, cubic (each axis the same length), or a scale per display axis SX,SY,SZ");
+    command.add_option("--vertical-exaggeration", overrides.verticalExaggeration,
+                       "Stretch the vertical (display up) axis by this factor, or auto");
+}
+
+void applySceneOverrides(Scene& scene, const SceneOverrides& overrides) {
+    if (overrides.compositor) scene.compositor = *temporalCompositorFromString(*overrides.compositor);
+    if (overrides.orientation)
+        scene.display.orientation = displayFromOptions("orientation", "--orientation", *overrides.orientation).orientation;
+    if (overrides.aspect) scene.display.aspect = displayFromOptions("aspect", "--aspect", *overrides.aspect).aspect;
+    if (overrides.verticalExaggeration)
+        scene.display.verticalExaggeration =
+            displayFromOptions("vertical_exaggeration", "--vertical-exaggeration", *overrides.verticalExaggeration)
+                .verticalExaggeration;
+}
+
+SceneAndSeries openSceneOrDataset(const std::vector<std::filesystem::path>& inputs,
+                                  const std::vector<std::filesystem::path>& datasetFiles,
+                                  const DatasetOptions& datasetOptions) {
+    if (inputs.size() == 1 && classifyInput(inputs.front()) == InputKind::Scene) {
+        Scene scene = loadScene(inputs.front());
+        Series series = openDataset(datasetFiles.empty() ? std::vector<std::filesystem::path>{scene.dataset} : datasetFiles,
+                                    datasetOptions);
+        return {std::move(scene), std::move(series), {}};
+    }
+    if (!datasetFiles.empty())
+        throwInputError(inputs.front(), "--dataset", "replaces a scene file's dataset, but this input is a dataset itself");
+    for (const auto& input : inputs)
+        if (!std::filesystem::exists(input)) throwInputError(input, "", "no such file or folder");
+    Series series = openDataset(inputs, datasetOptions);
+    AutomaticScene automatic = automaticScene(series, std::filesystem::absolute(inputs.front()).lexically_normal());
+    return {std::move(automatic.scene), std::move(series), std::move(automatic.explanation)};
+}
+
+}  // namespace tstyles::cli

@@ -1,0 +1,40 @@
+// What `render`, `view` and `scene` draw: a scene file with its dataset, or datasets with the
+// automatic scene (docs/automatic-scene.md), and the command-line overrides of a scene's choices.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "commands.h"
+#include "tstyles/scene/scene.h"
+
+namespace tstyles::cli {
+
+// Overrides of what a scene (automatic or from a file) says, spelled as the scene keys are.
+struct SceneOverrides {
+    std::optional<std::string> compositor;             // --tc
+    std::optional<std::string> orientation;            // --orientation data|auto|+x,+z,-y
+    std::optional<std::string> aspect;                 // --aspect physical|cubic|auto|SX,SY,SZ
+    std::optional<std::string> verticalExaggeration;   // --vertical-exaggeration X|auto
+};
+void addSceneOverrides(CLI::App& command, SceneOverrides& overrides);
+void applySceneOverrides(Scene& scene, const SceneOverrides& overrides);
+
+struct SceneAndSeries {
+    Scene scene;
+    Series series;  // as read, before the scene's display frame
+    // The automatic scene's choices, one line each; empty for a scene file.
+    std::vector<std::string> explanation;
+};
+
+// One scene file (its dataset, or `datasetFiles` instead), else the inputs are the files of one
+// dataset and the scene is the automatic one.
+SceneAndSeries openSceneOrDataset(const std::vector<std::filesystem::path>& inputs,
+                                  const std::vector<std::filesystem::path>& datasetFiles,
+                                  const DatasetOptions& datasetOptions);
+
+}  // namespace tstyles::cli

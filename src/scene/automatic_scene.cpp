@@ -1,0 +1,198 @@
+// The automatic scene and the fitting of a scene's automatic parts (automatic_scene.h).
+#include "tstyles/scene/automatic_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "automatic_opacity.h"
+#include "tstyles/data/density_sampling.h"
+#include "tstyles/scene/visible_bounds.h"
+#include "time_colours.h"
+
+namespace tstyles {
+namespace {
+
+// The percentile of the visible voxels' temporal change that the gradient TSTF's range reaches.
+constexpr double kChangePercentile = 0.99;
+// A lattice of this many points per axis samples the change of series whose time-steps do not share
+// one grid.
+constexpr int kChangeLattice = 32;
+// Where the gradient TSTF leaves unchanging voxels faint, so that change stands out.
+constexpr double kUnchangedOpacity = 0.15;
+// The neutral lit-sphere style that gives the first picture its shading.
+constexpr const char* kNeutralStyle = "matte-white";
+
+std::string number(double value) {
+    std::ostringstream text;
+    text << std::setprecision(3) << value;
+    return text.str();
+}
+
+bool isGeographic(AxisDirection direction) {
+    return direction >= AxisDirection::East && direction <= AxisDirection::Down;
+}
+
+bool isAnatomical(AxisDirection direction) {
+    return direction >= AxisDirection::Right && direction <= AxisDirection::Inferior;
+}
+
+// The values of the series' value range at a density, for messages.
+double rawValue(const Series& series, double density) {
+    return series.valueRange[0] + density * (series.valueRange[1] - series.valueRange[0]);
+}
+
+std::string windowText(const Series& series, const OpacityWindow& window) {
+    std::string text = "opacity: 0 at " + number(rawValue(series, window.low)) + " (5th percentile) rising to " +
+                       number(window.peak) + " at " + number(rawValue(series, window.high)) + " (99th percentile)";
+    if (window.background)
+        text += "; background " + number(rawValue(series, (*window.background)[0])) + " .. " +
+                number(rawValue(series, (*window.background)[1])) + " (" +
+                number(100.0 * window.backgroundFraction) + " % of the values) transparent";
+    return text;
+}
+
+// Geographic data from above at an oblique angle with north up; anatomical data from the front,
+// head up; anything else from an oblique three-quarter view.
+OrbitCamera automaticOrbit(DataKind kind) {
+    OrbitCamera orbit;
+    if (kind == DataKind::Geographic) {
+        orbit.azimuthDeg = 0.0;
+        orbit.elevationDeg = 50.0;
+    } else if (kind == DataKind::Anatomical) {
+        orbit.azimuthDeg = 0.0;
+        orbit.elevationDeg = 0.0;
+    }
+    return orbit;
+}
+
+std::string kindText(DataKind kind) {
+    switch (kind) {
+        case DataKind::Geographic: return "geographic: seen from above, north up";
+        case DataKind::Anatomical: return "anatomical: seen from the front, head up";
+        case DataKind::Other: return "no axis meaning in the file: an oblique three-quarter view";
+    }
+    return "";
+}
+
+bool sharesOneGrid(const Series& series) {
+    const TimeStep& first = series.steps.front();
+    if (!std::holds_alternative<RectilinearGrid>(first.grid)) return false;
+    return std::all_of(series.steps.begin(), series.steps.end(), [&](const TimeStep& step) {
+        return std::holds_alternative<RectilinearGrid>(step.grid) && step.dims() == first.dims() &&
+               step.placement == first.placement;
+    });
+}
+
+// One change per place, where the STF shows at least one time-step and two have data.
+void addChange(const std::vector<double>& densities, const Stf& stf, std::vector<double>& changes) {
+    double lowest = 2.0;
+    double highest = -1.0;
+    bool visible = false;
+    int valid = 0;
+    for (double density : densities) {
+        if (isMissing(float(density))) continue;
+        ++valid;
+        lowest = std::min(lowest, density);
+        highest = std::max(highest, density);
+        visible = visible || stf.curve.evaluate(density).opacity > 0.0;
+    }
+    if (visible && valid >= 2) changes.push_back(highest - lowest);
+}
+
+std::vector<double> temporalChanges(const Series& series, const Stf& stf) {
+    std::vector<double> changes;
+    std::vector<double> densities(series.size());
+    if (sharesOneGrid(series)) {
+        const std::size_t voxels = series.steps.front().density.size();
+        const std::size_t stride = std::max<std::size_t>(1, voxels / (std::size_t(1) << 20));
+        for (std::size_t voxel = 0; voxel < voxels; voxel += stride) {
+            for (std::size_t step = 0; step < series.size(); ++step)
+                densities[step] = series.steps[step].density[voxel];
+            addChange(densities, stf, changes);
+        }
+        return changes;
+    }
+    const Bounds bounds = visibleBounds(series, stf);
+    for (int k = 0; k < kChangeLattice; ++k)
+        for (int j = 0; j < kChangeLattice; ++j)
+            for (int i = 0; i < kChangeLattice; ++i) {
+                const glm::dvec3 at = bounds.lower + (glm::dvec3(i, j, k) + 0.5) / double(kChangeLattice) * bounds.size();
+                densities.clear();
+                for (const auto& density : temporalProfile(series, at))
+                    if (density) densities.push_back(*density);
+                addChange(densities, stf, changes);
+            }
+    return changes;
+}
+
+}  // namespace
+
+DataKind dataKindOf(const Series& series) {
+    bool geographic = false;
+    bool anatomical = false;
+    for (const SpatialAxis& axis : series.axes) {
+        geographic = geographic || isGeographic(axis.direction);
+        anatomical = anatomical || isAnatomical(axis.direction);
+    }
+    return geographic ? DataKind::Geographic : anatomical ? DataKind::Anatomical : DataKind::Other;
+}
+
+double typicalLargestChange(const Series& series, const Stf& stf) {
+    if (series.size() < 2) return 1.0;
+    std::vector<double> changes = temporalChanges(series, stf);
+    if (changes.empty()) return 1.0;
+    const auto at = changes.begin() + std::ptrdiff_t(kChangePercentile * double(changes.size() - 1));
+    std::nth_element(changes.begin(), at, changes.end());
+    return std::clamp(*at, 1e-3, 1.0);
+}
+
+AutomaticScene automaticScene(const Series& series, const std::filesystem::path& dataset) {
+    AutomaticScene result;
+    Scene& scene = result.scene;
+    scene.dataset = dataset;
+    scene.display.orientation.mode = Orientation::Mode::Auto;
+    scene.display.aspect.mode = Aspect::Mode::Auto;
+    scene.display.verticalExaggeration.reset();
+    const DisplayFrame frame = chooseDisplayFrame(scene.display, series);
+    result.explanation = frame.explanation;
+
+    const DataKind kind = dataKindOf(series);
+    scene.camera.pose = automaticOrbit(kind);
+    scene.camera.framing = Framing::Visible;
+    result.explanation.push_back("camera: " + kindText(kind) + ", framed on the visible data");
+
+    const OpacityWindow window = automaticOpacityWindow(series);
+    scene.stf.curve.opacity = opacityNodes(window);
+    scene.stf.curve.color = {ColorNode{0.0, glm::dvec3(1.0), kNeutralStyle}};
+    result.explanation.push_back(windowText(series, window));
+    result.explanation.push_back(std::string("shading: the lit-sphere style ") + kNeutralStyle + " on the STF");
+
+    scene.compositor = TemporalCompositor::MaxIntensityProjection;
+    scene.finalMode = FinalMode::Modulate;
+    scene.indexTstf.curve.opacity = {OpacityNode{0.0, 1.0}};
+    scene.gradientTstf.curve.opacity = {OpacityNode{0.0, kUnchangedOpacity}, OpacityNode{1.0, 1.0}};
+    scene.gradientTstf.automaticRange = true;
+    applyTimeColours(scene, series.size());
+    result.explanation.push_back("time: " + timeColoursText(series.size()) +
+                                 "; compositor temporal-mip (each place shows the time-step where it is most opaque)");
+    return result;
+}
+
+Bounds framedBounds(const Scene& scene, const Series& series) {
+    return scene.camera.framing == Framing::Visible ? visibleBounds(series, scene.stf) : series.worldBounds();
+}
+
+SceneOnSeries fitSceneToSeries(Scene scene, Series series) {
+    const DisplayFrame frame = chooseDisplayFrame(scene.display, series);
+    Series display = applyDisplayFrame(std::move(series), frame);
+    if (scene.gradientTstf.automaticRange) {
+        scene.gradientTstf.rangeLow = 0.0;
+        scene.gradientTstf.rangeHigh = typicalLargestChange(display, scene.stf);
+    }
+    const Bounds framed = framedBounds(scene, display);
+    return {std::move(scene), std::move(display), frame, framed};
+}
+
+}  // namespace tstyles

@@ -1,0 +1,33 @@
+// Scene or dataset (input_kind.h): by the first character, then by the JSON's keys.
+#include "tstyles/scene/input_kind.h"
+
+#include <cctype>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "tstyles/data/series_opener.h"
+
+namespace tstyles {
+
+InputKind classifyInput(const std::filesystem::path& path) {
+    if (std::filesystem::is_directory(path)) return InputKind::Dataset;
+    std::ifstream stream(path, std::ios::binary);
+    if (!stream) return InputKind::Scene;
+    char first = 0;
+    while (stream.get(first) && std::isspace(static_cast<unsigned char>(first))) {
+    }
+    // Not JSON (which starts with an object or a comment): a data file, left to the opener.
+    if (!isManifestInput(path) && (!stream || (first != '{' && first != '/'))) return InputKind::Dataset;
+    stream.clear();
+    stream.seekg(0);
+    std::stringstream text;
+    text << stream.rdbuf();
+    const nlohmann::json json = nlohmann::json::parse(text.str(), nullptr, false, true);
+    if (json.is_object() && !json.contains("dataset") && (json.contains("time_steps") || json.contains("format")))
+        return InputKind::Dataset;
+    return InputKind::Scene;
+}
+
+}  // namespace tstyles
