@@ -71,6 +71,14 @@ void zoomCamera(Camera& camera, double notches, const Bounds& bounds, glm::ivec2
     camera.pose = orbit;
 }
 
+Camera frameExplicitly(const Camera& camera, const Bounds& framed, glm::ivec2 viewport) {
+    const auto* orbit = std::get_if<OrbitCamera>(&camera.pose);
+    if (orbit == nullptr || (orbit->target && orbit->distance)) return camera;
+    Camera framedCamera = camera;
+    framedCamera.pose = explicitOrbit(camera, framed, viewport);
+    return framedCamera;
+}
+
 Camera fitCameraToData(const Camera& camera) {
     Camera fitted = camera;
     OrbitCamera orbit = asOrbit(camera);

@@ -32,4 +32,10 @@ void zoomCamera(Camera& camera, double notches, const Bounds& bounds, glm::ivec2
 // The same direction of view, target and distance left to frame the whole series.
 Camera fitCameraToData(const Camera& camera);
 
+// An orbit camera without target or distance made explicit: aimed at the centre of `framed` and
+// backed off until `framed` fits the viewport, as the renderer frames an automatic orbit (the
+// viewer frames the visible data this way on opening and on F; docs/automatic-scene.md). Other
+// cameras come back unchanged.
+Camera frameExplicitly(const Camera& camera, const Bounds& framed, glm::ivec2 viewport);
+
 }  // namespace tstyles::viewer

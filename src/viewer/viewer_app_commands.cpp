@@ -6,6 +6,8 @@
 #include "tstyles/scene/scene_file.h"
 #include "viewer_app.h"
 
+#include "tstyles/scene/visible_bounds.h"
+
 namespace tstyles::viewer {
 
 void ViewerApp::execute(ViewerCommand command) {
@@ -48,7 +50,8 @@ void ViewerApp::execute(ViewerCommand command) {
             scene.camera = document_.openedCamera;
             break;
         case ViewerCommand::FitCamera:
-            scene.camera = fitCameraToData(scene.camera);
+            scene.camera = frameExplicitly(fitCameraToData(scene.camera), visibleBounds(*document_.series, scene.stf),
+                                           frameSize());
             break;
         case ViewerCommand::TogglePlay:
             time_.togglePlay();

@@ -5,6 +5,8 @@
 
 #include "tstyles/core/errors.h"
 #include "tstyles/data/series_opener.h"
+#include "camera_controller.h"
+#include "tstyles/scene/automatic_scene.h"
 #include "tstyles/scene/input_kind.h"
 #include "tstyles/scene/scene_file.h"
 
@@ -17,12 +19,21 @@ bool sameFile(const std::filesystem::path& a, const std::filesystem::path& b) {
     return !error && same;
 }
 
-std::shared_ptr<const Series> seriesFor(const std::vector<std::filesystem::path>& paths,
-                                        const ViewerDocument* current, const ReadOptions& readOptions) {
-    if (paths.size() == 1 && current != nullptr && current->series &&
-        sameFile(paths.front(), current->series->manifestPath))
+// The series in the scene's display frame, with the scene's automatic parts fitted to it; the
+// current document's series when it is the same file shown the same way.
+std::shared_ptr<const Series> fitSeries(Scene& scene, const std::vector<std::filesystem::path>& paths,
+                                        const ViewerDocument* current, Series* opened, const ReadOptions& readOptions) {
+    if (opened == nullptr && paths.size() == 1 && current != nullptr && current->series &&
+        sameFile(paths.front(), current->series->manifestPath) && current->scene.display == scene.display) {
+        if (scene.gradientTstf.automaticRange) scene.gradientTstf.rangeHigh = current->scene.gradientTstf.rangeHigh;
         return current->series;
-    return std::make_shared<const Series>(openSeries(paths, readOptions));
+    }
+    SceneOnSeries fitted = fitSceneToSeries(scene, opened ? std::move(*opened) : openSeries(paths, readOptions));
+    // The viewer's camera code frames the whole series; what frames the visible part is made explicit.
+    if (fitted.scene.camera.framing == Framing::Visible)
+        fitted.scene.camera = frameExplicitly(fitted.scene.camera, fitted.framed, {scene.width, scene.height});
+    scene = std::move(fitted.scene);
+    return std::make_shared<const Series>(std::move(fitted.series));
 }
 
 }  // namespace
@@ -34,11 +45,12 @@ ViewerDocument openDocument(const std::vector<std::filesystem::path>& paths, con
         if (!std::filesystem::exists(path)) throwInputError(path, "", "no such file or folder");
     ViewerDocument document;
     if (paths.size() > 1 || classifyInput(paths.front()) == InputKind::Dataset) {
-        document.series = seriesFor(paths, current, readOptions);
-        document.scene.dataset = document.series->manifestPath;
+        Series raw = openSeries(paths, readOptions);
+        document.scene = automaticScene(raw, raw.manifestPath).scene;
+        document.series = fitSeries(document.scene, paths, current, &raw, readOptions);
     } else {
         document.scene = loadScene(paths.front());
-        document.series = seriesFor({document.scene.dataset}, current, readOptions);
+        document.series = fitSeries(document.scene, {document.scene.dataset}, current, nullptr, readOptions);
         document.sceneFile = std::filesystem::absolute(paths.front()).lexically_normal();
     }
     if (document.series->size() == 0) throwInputError(document.series->manifestPath, "", "the series has no time-steps");
