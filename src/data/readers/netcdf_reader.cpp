@@ -93,15 +93,64 @@ struct AxisFrame {
     double spacing = 1.0;
     std::vector<double> positions;  // uneven axes only
     bool reversed = false;
+    SpatialAxis meaning;
 };
+
+bool startsWith(const std::string& text, const std::string& prefix) { return text.rfind(prefix, 0) == 0; }
+
+bool isPressureUnit(const std::string& unit) {
+    for (const char* name : {"pa", "hpa", "kpa", "mbar", "millibar", "millibars", "bar", "dbar", "decibar", "atm"})
+        if (unit == name) return true;
+    return false;
+}
+
+// CF: longitude and latitude by standard_name or units (degrees_east, degrees_north), the vertical
+// by axis = "Z", a vertical standard_name, a pressure unit or a `positive` attribute. Vertical
+// coordinates that grow downward (depth, pressure) are negated by the reader, so +axis is up.
+AxisDirection cfDirection(const NetcdfFile& nc, int id, bool& down) {
+    const std::string units = lowercase(nc.textAttribute(id, "units").value_or(""));
+    const std::string standardName = lowercase(nc.textAttribute(id, "standard_name").value_or(""));
+    const std::string axis = lowercase(nc.textAttribute(id, "axis").value_or(""));
+    const std::string positive = lowercase(nc.textAttribute(id, "positive").value_or(""));
+    const bool pressure = isPressureUnit(units) || standardName.find("pressure") != std::string::npos;
+    down = positive == "down" || (positive.empty() && pressure);
+    if (standardName == "longitude" || startsWith(units, "degrees_e") || startsWith(units, "degree_e") ||
+        units == "degreese")
+        return AxisDirection::East;
+    if (standardName == "latitude" || startsWith(units, "degrees_n") || startsWith(units, "degree_n") ||
+        units == "degreesn")
+        return AxisDirection::North;
+    const bool vertical = axis == "z" || !positive.empty() || pressure || standardName == "depth" ||
+                          standardName == "altitude" || standardName == "height" ||
+                          standardName.find("model_level") != std::string::npos;
+    return vertical ? AxisDirection::Up : AxisDirection::Unknown;
+}
+
+AxisDirection opposite(AxisDirection direction) {
+    switch (direction) {
+        case AxisDirection::East: return AxisDirection::West;
+        case AxisDirection::North: return AxisDirection::South;
+        case AxisDirection::Up: return AxisDirection::Down;
+        default: return direction;
+    }
+}
 
 AxisFrame axisFrame(const NetcdfFile& nc, const NetcdfDimension& dimension, bool indexAxes) {
     AxisFrame frame;
+    frame.meaning.name = dimension.name;
     const auto id = nc.findVariable(dimension.name);
-    if (indexAxes || !id || !nc.isCoordinateVariable(*id)) return frame;
+    if (!id || !nc.isCoordinateVariable(*id)) return frame;
+    bool down = false;
+    frame.meaning.direction = cfDirection(nc, *id, down);
+    if (indexAxes) {
+        // Unit spacing in index order, nothing negated or reversed: +axis follows the file's order.
+        const std::vector<double> values = nc.readAll(*id);
+        const bool decreasing = values.size() >= 2 && values[1] < values[0];
+        if (down != decreasing) frame.meaning.direction = opposite(frame.meaning.direction);
+        return frame;
+    }
+    frame.meaning.unit = nc.textAttribute(*id, "units").value_or("");
     std::vector<double> world = nc.readAll(*id);
-    // CF "positive: down" (depth, pressure): larger values are lower, so the world axis is negated.
-    const bool down = lowercase(nc.textAttribute(*id, "positive").value_or("")) == "down";
     for (double& value : world) {
         if (!std::isfinite(value))
             throwInputError(nc.path(), dimension.name, "coordinate variable holds a non-finite value");
@@ -187,16 +236,17 @@ SourceSeries openNetcdf(const std::filesystem::path& file, const ReadOptions& op
         dims[axis] = int(dimension.length);
         frames[std::size_t(axis)] = axisFrame(*nc, dimension, options.indexAxes);
     }
+    SourceSeries source;
     RectilinearGrid grid;
     grid.dims = dims;
     Placement placement;
     for (int axis = 0; axis < 3; ++axis) {
+        source.axes[std::size_t(axis)] = frames[std::size_t(axis)].meaning;
         grid.spacing[axis] = frames[std::size_t(axis)].spacing;
         grid.axisPositions[std::size_t(axis)] = frames[std::size_t(axis)].positions;
         placement.origin[axis] = frames[std::size_t(axis)].origin;
     }
 
-    SourceSeries source;
     source.name = variable.name;
     source.file = file;
     source.format = nc->formatName();

@@ -66,6 +66,22 @@ OrientedAxes niftiFrame(const nifti_image& image, const glm::ivec3& dims, const 
     return orientAxes(origin, axes, dims, file, image.sform_code > 0 ? "sform" : "qform");
 }
 
+// With an sform or qform the world is RAS+ (x toward the patient's right, y anterior, z superior);
+// without either, nothing is known of the orientation. Units from xyzt_units.
+std::array<SpatialAxis, 3> niftiAxes(const nifti_image& image) {
+    const bool oriented = image.sform_code > 0 || image.qform_code > 0;
+    const std::string unit = image.xyz_units == NIFTI_UNITS_MM       ? "mm"
+                             : image.xyz_units == NIFTI_UNITS_METER  ? "m"
+                             : image.xyz_units == NIFTI_UNITS_MICRON ? "um"
+                                                                     : "";
+    const AxisDirection directions[3] = {AxisDirection::Right, AxisDirection::Anterior, AxisDirection::Superior};
+    std::array<SpatialAxis, 3> axes;
+    for (int axis = 0; axis < 3; ++axis)
+        axes[std::size_t(axis)] = {std::string(1, char('x' + axis)), unit,
+                                   oriented ? directions[axis] : AxisDirection::Unknown};
+    return axes;
+}
+
 NiftiImage readHeader(const std::filesystem::path& file) {
     std::error_code error;
     if (!std::filesystem::is_regular_file(file, error)) throwInputError(file, "", "not found");
@@ -107,6 +123,7 @@ SourceSeries openNifti(const std::filesystem::path& file) {
     source.name = file.filename().string();
     source.file = file;
     source.format = image->nifti_type >= NIFTI_FTYPE_NIFTI2_1 ? "NIfTI-2" : "NIfTI-1";
+    source.axes = niftiAxes(*image);
     for (std::size_t index = 0; index < stepCount; ++index) {
         SourceStep timeStep;
         timeStep.time = image->toffset + double(index) * step;

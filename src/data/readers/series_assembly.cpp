@@ -165,6 +165,7 @@ Series assembleRawSeries(const SourceSeries& source, const ReadOptions& options)
     Series series;
     series.name = source.name;
     series.manifestPath = source.file;
+    series.axes = source.axes;
     for (std::size_t kept = 0; kept < plan.steps.size(); ++kept) {
         const SourceStep& from = source.steps[plan.steps[kept]];
         TimeStep step;

@@ -3,6 +3,7 @@
 // selects steps, checks memory, resamples and maps values to density the same way for every format.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <filesystem>
 #include <functional>
@@ -26,6 +27,8 @@ struct SourceSeries {
     std::filesystem::path file;  // what the user named (the first file of a list)
     std::string format;          // "NetCDF", "NIfTI-1", "NRRD", ... for messages and `info`
     std::vector<SourceStep> steps;
+    // What world x, y and z mean, as far as the file says (Series::axes).
+    std::array<SpatialAxis, 3> axes;
     // The raw values of a time-step, x fastest, after the file's scale and offset; declared missing
     // values are missingDensity() (NaN). Undeclared NaN or Inf is an InputError naming the file.
     std::function<std::vector<float>(std::size_t step)> readStep;
