@@ -126,10 +126,12 @@ bool shareKind(const DisplayAxes& axes) {
     return axes.units[0].sameKind(axes.units[1]) && axes.units[1].sameKind(axes.units[2]);
 }
 
-// Each axis in its own unit; lengths (or pressures, or angles) of different units in one base unit.
+// Each axis in its own unit; lengths (or pressures, or angles) of different units in the smallest
+// of them (km and m in m), so that data in one unit keeps its coordinates.
 glm::dvec3 physicalScale(const DisplayAxes& axes) {
     if (!shareKind(axes)) return glm::dvec3(1.0);
-    return {axes.units[0].toBase, axes.units[1].toBase, axes.units[2].toBase};
+    const glm::dvec3 toBase{axes.units[0].toBase, axes.units[1].toBase, axes.units[2].toBase};
+    return toBase / std::min({toBase.x, toBase.y, toBase.z});
 }
 
 glm::dvec3 cubicScale(const DisplayAxes& axes) {

@@ -181,10 +181,10 @@ void writeOceanEddy(const std::filesystem::path& file) {
 }
 
 void writeMovingBlobNifti(const std::filesystem::path& file) {
-    writeNifti<float>(file, {48, 40, 36, 4, DT_FLOAT32, {3.0, 3.0, 3.0}, 2.0},
+    writeNifti<float>(file, {56, 40, 36, 4, DT_FLOAT32, {3.0, 3.0, 3.0}, 2.0},
                       [](int x, int y, int z, int t, std::size_t) {
-                          const double dx = x - (12.0 + 8.0 * t), dy = y - 20.0, dz = z - 18.0;
-                          return dx * dx + dy * dy + dz * dz <= 25.0 ? 100.0f : 0.0f;
+                          const double dx = x - (10.0 + 12.0 * t), dy = y - 20.0, dz = z - 18.0;
+                          return dx * dx + dy * dy + dz * dz <= 16.0 ? 100.0f : 0.0f;
                       });
 }
 

@@ -19,9 +19,9 @@ void writeOceanAnomalies(const std::filesystem::path& file);
 // warm eddy drifting east, land in the north-west; monthly on the noleap calendar.
 void writeOceanEddy(const std::filesystem::path& file);
 
-// NIfTI-1 (.nii), 48 x 40 x 36 voxels of 3 mm, RAS sform, 4 volumes with TR 2 s (xyzt_units mm and
-// s): zero everywhere but a sphere of value 100, radius 5 voxels, that moves 8 voxels along +x (the
-// patient's right in RAS) each volume: time-step i is centred on voxel (12 + 8 i, 20, 18).
+// NIfTI-1 (.nii), 56 x 40 x 36 voxels of 3 mm, RAS sform, 4 volumes with TR 2 s (xyzt_units mm and
+// s): zero everywhere but a sphere of value 100, radius 4 voxels, that moves 12 voxels along +x (the
+// patient's right in RAS) each volume: time-step i is centred on voxel (10 + 12 i, 20, 18).
 void writeMovingBlobNifti(const std::filesystem::path& file);
 
 // NIfTI-1 int16 CT: 96 x 96 x 64 voxels of 0.8 x 0.8 x 1.5 mm, RAS; air at -1000 HU outside a body
