@@ -81,7 +81,9 @@ OpacityWindow automaticOpacityWindow(const Series& series) {
     const double rest = total - window.backgroundFraction * total;
     if (rest > 0.0) {
         window.low = percentile(counts, rest, kLowPercentile);
-        window.high = std::max(percentile(counts, rest, kHighPercentile), window.low + 1.0 / kBins);
+        // A window at least a bin wide, inside [0, 1] (one value everywhere fills the top bin).
+        window.high = std::min(1.0, std::max(percentile(counts, rest, kHighPercentile), window.low + 1.0 / kBins));
+        window.low = std::min(window.low, window.high - 1.0 / kBins);
     }
     // A ray crosses about the cube root of the visible voxels; spread the target opacity over them.
     // The ramp averages about half its peak, hence the factor 2.

@@ -173,7 +173,9 @@ void writeOceanEddy(const std::filesystem::path& file) {
     writeOcean(file, shape, [](std::size_t t, double depth, double lat, double lon, std::size_t index) {
         if (lon < -62.0 + 0.4 * (lat - 25.0) && lat > 33.0) return kFill;  // a coast in the north-west
         if (depth > 900.0 - 8.0 * (lon + 70.0) && lon < -55.0) return kFill;  // the continental slope
-        const double thermocline = 4.0 + 18.0 * std::exp(-depth / 250.0) * (1.0 - 0.02 * (lat - 25.0));
+        // Spring warms the surface month by month.
+        const double thermocline = 4.0 + 18.0 * std::exp(-depth / 250.0) * (1.0 - 0.02 * (lat - 25.0)) +
+                                   0.6 * double(t) * std::exp(-depth / 60.0);
         const double eddyLon = -64.0 + 4.0 * double(t);
         const double eddy = 6.0 * blob((lon - eddyLon) / 2.5, (lat - 36.0) / 2.0, depth / 450.0);
         return float(thermocline + eddy + 0.05 * jitter(index));
@@ -194,6 +196,8 @@ void writeCtPhantom(const std::filesystem::path& file) {
                                  const double bx = (x - 47.5) / 40.0, by = (y - 47.5) / 30.0;
                                  if (bx * bx + by * by > 1.0 || z < 4 || z > 59)
                                      return std::int16_t(-1000 + 8.0 * jitter(index));
+                                 // Subcutaneous fat (-100 HU) in the outer sixth of the body.
+                                 if (bx * bx + by * by > 0.7) return std::int16_t(-100 + 10.0 * jitter(index));
                                  const double sx = (x - 47.5) / 6.0, sy = (y - 27.0) / 6.0;
                                  if (sx * sx + sy * sy <= 1.0) return std::int16_t(700 + 20.0 * jitter(index));
                                  const double lx = (x - 62.0), ly = (y - 55.0), lz = (z - 32.0);

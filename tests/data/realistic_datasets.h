@@ -16,7 +16,8 @@ namespace tstyles::testdata {
 void writeOceanAnomalies(const std::filesystem::path& file);
 
 // A larger ocean for the gallery: thetao(time 6, depth 20, lat 60, lon 80), a thermocline and a
-// warm eddy drifting east, land in the north-west; monthly on the noleap calendar.
+// warm eddy drifting east, a surface warming month by month, land in the north-west; monthly on the
+// noleap calendar.
 void writeOceanEddy(const std::filesystem::path& file);
 
 // NIfTI-1 (.nii), 56 x 40 x 36 voxels of 3 mm, RAS sform, 4 volumes with TR 2 s (xyzt_units mm and
@@ -25,7 +26,8 @@ void writeOceanEddy(const std::filesystem::path& file);
 void writeMovingBlobNifti(const std::filesystem::path& file);
 
 // NIfTI-1 int16 CT: 96 x 96 x 64 voxels of 0.8 x 0.8 x 1.5 mm, RAS; air at -1000 HU outside a body
-// (an elliptic cylinder of soft tissue at 40 HU) with a spine of bone (700 HU); 3 time-steps in
+// (an elliptic cylinder of soft tissue at 40 HU under a layer of fat at -100 HU) with a spine of bone
+// (700 HU); 3 time-steps in
 // which a lesion (120 HU) grows in the body. xyzt_units mm and s, TR 60 s.
 void writeCtPhantom(const std::filesystem::path& file);
 

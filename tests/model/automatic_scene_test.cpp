@@ -1,0 +1,84 @@
+// The automatic scene's choices on realistic files (tests/data/realistic_datasets.h), read through
+// the readers: the opacity window from the histogram, the camera by data kind, and a scene that
+// survives being written and read back.
+#include <filesystem>
+#include <string>
+
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include "../data/realistic_datasets.h"
+#include "tstyles/data/series_opener.h"
+#include "tstyles/scene/automatic_scene.h"
+#include "tstyles/scene/scene_file.h"
+
+namespace tstyles {
+namespace {
+
+std::filesystem::path sampleFolder() {
+    static const auto folder = [] {
+        auto path = std::filesystem::temp_directory_path() / ("tstyles_automatic_model_" + std::to_string(::getpid()));
+        std::filesystem::create_directories(path);
+        return path;
+    }();
+    return folder;
+}
+
+double densityOf(const Series& series, double value) {
+    return (value - series.valueRange[0]) / (series.valueRange[1] - series.valueRange[0]);
+}
+
+TEST(AutomaticScene, CtAirIsTransparentAndBoneOpaqueFromTheFront) {
+    const auto file = sampleFolder() / "ct.nii";
+    testdata::writeCtPhantom(file);
+    const Series series = openSeries(file, ReadOptions{});
+    const AutomaticScene automatic = automaticScene(series, file);
+    const TransferFunction1D& stf = automatic.scene.stf.curve;
+    EXPECT_EQ(stf.evaluate(densityOf(series, -1000.0)).opacity, 0.0) << "air";
+    EXPECT_EQ(stf.evaluate(densityOf(series, -990.0)).opacity, 0.0) << "air with noise";
+    EXPECT_GT(stf.evaluate(densityOf(series, 40.0)).opacity, 0.0) << "soft tissue";
+    EXPECT_GT(stf.evaluate(densityOf(series, 700.0)).opacity, stf.evaluate(densityOf(series, 40.0)).opacity)
+        << "bone over soft tissue";
+    EXPECT_EQ(dataKindOf(series), DataKind::Anatomical);
+    const auto& orbit = std::get<OrbitCamera>(automatic.scene.camera.pose);
+    EXPECT_EQ(orbit.azimuthDeg, 0.0);
+    EXPECT_EQ(orbit.elevationDeg, 0.0);
+    EXPECT_EQ(automatic.scene.camera.framing, Framing::Visible);
+}
+
+TEST(AutomaticScene, VisibleBoundsLeaveTheAirOut) {
+    const auto file = sampleFolder() / "blob.nii";
+    testdata::writeMovingBlobNifti(file);
+    const Series series = openSeries(file, ReadOptions{});
+    const Scene scene = automaticScene(series, file).scene;
+    const Bounds visible = framedBounds(scene, series);
+    const Bounds all = series.worldBounds();
+    // The blobs span x 6 .. 50 voxels of 3 mm and y, z 16 .. 24 around the middle: far less than the volume.
+    EXPECT_LT(visible.size().y, 0.3 * all.size().y);
+    EXPECT_NEAR(visible.size().x, 44.0 * 3.0, 3.0 * 3.0);
+}
+
+TEST(AutomaticScene, WrittenAndReadBackIsTheSameScene) {
+    const auto file = sampleFolder() / "ocean.nc";
+    testdata::writeOceanAnomalies(file);
+    const Series series = openSeries(file, ReadOptions{});
+    const Scene scene = automaticScene(series, std::filesystem::absolute(file)).scene;
+    const auto sceneFile = sampleFolder() / "ocean.json";
+    saveScene(scene, sceneFile);
+    EXPECT_EQ(loadScene(sceneFile), scene);
+    EXPECT_EQ(dataKindOf(series), DataKind::Geographic);
+}
+
+TEST(AutomaticScene, GradientRangeIsFittedToTheChangePresent) {
+    const auto file = sampleFolder() / "blob-change.nii";
+    testdata::writeMovingBlobNifti(file);
+    const SceneOnSeries fitted = fitSceneToSeries(automaticScene(openSeries(file, ReadOptions{}), file).scene,
+                                                  openSeries(file, ReadOptions{}));
+    // Where a blob is, one time-step holds 100 and the others 0: the change is the whole range.
+    EXPECT_DOUBLE_EQ(fitted.scene.gradientTstf.rangeLow, 0.0);
+    EXPECT_DOUBLE_EQ(fitted.scene.gradientTstf.rangeHigh, 1.0);
+}
+
+}  // namespace
+}  // namespace tstyles
