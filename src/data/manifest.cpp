@@ -256,6 +256,34 @@ std::array<double, 2> valueRangeFromData(const std::filesystem::path& manifest,
     return range;
 }
 
+// "time_units" (CF, "days since 1950-01-01") and "calendar", both optional.
+TimeAxis readTimeAxis(const std::filesystem::path& manifest, const ManifestField& root) {
+    const auto units = root.optionalMember("time_units");
+    const auto calendar = root.optionalMember("calendar");
+    return parseTimeUnits(units ? units->string() : "", calendar ? calendar->string() : "", manifest, "time");
+}
+
+// "axes": three objects {"name", "unit", "direction"}, each key optional.
+std::array<SpatialAxis, 3> readAxes(const ManifestField& field) {
+    if (field.arraySize() != 3) field.fail("expected three axes (x, y, z), got " + std::to_string(field.arraySize()));
+    std::array<SpatialAxis, 3> axes;
+    for (std::size_t index = 0; index < 3; ++index) {
+        const ManifestField axis = field.element(index);
+        axis.allowOnlyKeys({"name", "unit", "direction"});
+        if (const auto name = axis.optionalMember("name")) axes[index].name = name->string();
+        if (const auto unit = axis.optionalMember("unit")) axes[index].unit = unit->string();
+        if (const auto direction = axis.optionalMember("direction")) {
+            const auto parsed = axisDirectionFromString(direction->string());
+            if (!parsed)
+                direction->fail("unknown direction \"" + direction->string() +
+                                "\"; allowed: east, west, north, south, up, down, right, left, anterior, posterior, "
+                                "superior, inferior, unknown");
+            axes[index].direction = *parsed;
+        }
+    }
+    return axes;
+}
+
 std::string defaultName(const std::filesystem::path& manifest) {
     std::error_code error;
     const std::filesystem::path absolute = std::filesystem::absolute(manifest, error);
@@ -279,7 +307,8 @@ Series loadSeries(const std::filesystem::path& manifestPath) {
         version.fail("unsupported version " + std::to_string(version.integer()) + " (this build reads " +
                      std::to_string(kManifestVersion) + ")");
     }
-    root.allowOnlyKeys({"format", "version", "name", "value_range", "missing_value", "time_steps"});
+    root.allowOnlyKeys(
+        {"format", "version", "name", "value_range", "missing_value", "time_units", "calendar", "axes", "time_steps"});
 
     Series series;
     series.manifestPath = manifest;
@@ -288,6 +317,8 @@ Series loadSeries(const std::filesystem::path& manifestPath) {
     const auto explicitRange = readValueRange(root.optionalMember("value_range"));
     const std::optional<double> missingMarker = readMissingValue(root.optionalMember("missing_value"));
     std::vector<StepEntry> entries = readStepEntries(root.member("time_steps"));
+    series.time = readTimeAxis(manifest, root);
+    if (const auto axes = root.optionalMember("axes")) series.axes = readAxes(*axes);
 
     for (std::size_t index = 0; index < entries.size(); ++index) {
         readStepFiles(manifest, index, entries[index], missingMarker);

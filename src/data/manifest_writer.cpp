@@ -222,6 +222,15 @@ void writeSeries(const RawSeries& series, const std::filesystem::path& directory
         if (std::isnan(*series.missingValue)) manifest["missing_value"] = "NaN";
         else manifest["missing_value"] = *series.missingValue;
     }
+    if (series.time.unit != TimeUnit::None) {
+        manifest["time_units"] = toCfUnits(series.time);
+        manifest["calendar"] = toString(series.time.calendar);
+    }
+    if (series.axes != std::array<SpatialAxis, 3>{}) {
+        manifest["axes"] = OrderedJson::array();
+        for (const SpatialAxis& axis : series.axes)
+            manifest["axes"].push_back({{"name", axis.name}, {"unit", axis.unit}, {"direction", toString(axis.direction)}});
+    }
     manifest["time_steps"] = OrderedJson::array();
     std::vector<const std::vector<glm::vec3>*> writtenGrids;
     for (std::size_t index = 0; index < series.steps.size(); ++index) {

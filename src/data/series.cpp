@@ -42,6 +42,12 @@ std::string toString(AxisDirection direction) {
     return kNames[static_cast<int>(direction)];
 }
 
+std::optional<AxisDirection> axisDirectionFromString(const std::string& name) {
+    for (int value = 0; value <= static_cast<int>(AxisDirection::Inferior); ++value)
+        if (toString(static_cast<AxisDirection>(value)) == name) return static_cast<AxisDirection>(value);
+    return std::nullopt;
+}
+
 std::optional<ValueType> valueTypeFromString(const std::string& name) {
     for (ValueType type : {ValueType::UInt8, ValueType::UInt16, ValueType::Float32, ValueType::Int8,
                            ValueType::Int16, ValueType::Int32, ValueType::Float64}) {

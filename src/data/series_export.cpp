@@ -65,6 +65,8 @@ RawSeries toRawSeries(const Series& rawValues, const std::filesystem::path& sour
     RawSeries raw;
     raw.name = rawValues.name;
     raw.valueRange = rawValues.valueRange;
+    raw.axes = rawValues.axes;
+    raw.time = rawValues.time;
     bool missing = false;
     for (std::size_t index = 0; index < rawValues.size(); ++index) {
         const TimeStep& step = rawValues.steps[index];

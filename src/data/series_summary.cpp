@@ -105,11 +105,11 @@ std::array<std::string, 2> gridText(const TimeStep& step) {
     return {"rectilinear " + dimsText(grid.dims), spacingText(grid)};
 }
 
-Row stepRow(const Series& series, std::size_t index) {
+Row stepRow(const Series& series, std::size_t index, const std::string& time) {
     const TimeStep& step = series.steps[index];
     const auto [grid, spacing] = gridText(step);
     return {std::to_string(index),
-            number(step.time),
+            time,
             grid,
             spacing,
             vec3Text(step.placement.origin),
@@ -257,10 +257,26 @@ std::string describeSeries(const Series& series) {
         const Bounds bounds = series.worldBounds();
         out << "World bounds: " << vec3Text(bounds.lower) << " to " << vec3Text(bounds.upper) << "\n";
     }
-    out << "\n";
 
+    if (series.axes != std::array<SpatialAxis, 3>{}) {
+        out << "Axes:";
+        for (int axis = 0; axis < 3; ++axis) {
+            const SpatialAxis& described = series.axes[std::size_t(axis)];
+            out << (axis ? "," : "") << " " << char('x' + axis) << " = " << (described.name.empty() ? "-" : described.name)
+                << " (" << (described.unit.empty() ? "no unit" : described.unit) << ", " << toString(described.direction)
+                << ")";
+        }
+        out << "\n";
+    }
+    if (series.time.unit != TimeUnit::None)
+        out << "Time: " << toCfUnits(series.time)
+            << (series.time.reference ? " (" + toString(series.time.calendar) + " calendar)" : "") << "\n";
+    out << "\n";
+    std::vector<double> times;
+    for (const TimeStep& step : series.steps) times.push_back(step.time);
+    const std::vector<std::string> labels = formatTimes(times, series.time);
     std::vector<Row> rows{{"#", "time", "grid", "spacing", "origin", "rotation", "raw min .. max", "mask"}};
-    for (std::size_t index = 0; index < series.size(); ++index) rows.push_back(stepRow(series, index));
+    for (std::size_t index = 0; index < series.size(); ++index) rows.push_back(stepRow(series, index, labels[index]));
     printTable(out, rows);
     out << "\n";
 

@@ -43,13 +43,17 @@ double luminance(const glm::dvec3& color) { return 0.2126 * color.r + 0.7152 * c
 
 void drawSections(ImDrawList& drawList, const CurveCanvas& canvas, const TransferFunction1D& curve,
                   const CurveEditorConfig& config) {
-    // With many time-steps (or a narrow window) only every k-th section is numbered.
-    char widest[32];
-    std::snprintf(widest, sizeof widest, "%zu", config.stepTimes.size());
+    // Sections show their time stamps where they fit, else their numbers; with many time-steps (or a
+    // narrow window) only every k-th section is labelled.
     const float sectionWidth = canvas.xOf(1.0) - canvas.xOf(0.0);
+    float widestStamp = 0.0f;
+    for (const std::string& stamp : config.stepLabels) widestStamp = std::max(widestStamp, ImGui::CalcTextSize(stamp.c_str()).x);
+    const bool stamps = widestStamp + 6.0f <= sectionWidth;
+    char widest[32];
+    std::snprintf(widest, sizeof widest, "%zu", config.stepLabels.size());
     const std::size_t labelEvery =
         std::max<std::size_t>(1, std::size_t(std::ceil((ImGui::CalcTextSize(widest).x + 4.0f) / sectionWidth)));
-    for (std::size_t step = 0; step < config.stepTimes.size(); ++step) {
+    for (std::size_t step = 0; step < config.stepLabels.size(); ++step) {
         const double at = double(step);
         const float left = canvas.xOf(at - 0.5);
         const float right = canvas.xOf(at + 0.5);
@@ -61,8 +65,8 @@ void drawSections(ImDrawList& drawList, const CurveCanvas& canvas, const Transfe
         drawList.AddRectFilled({left + 1.0f, canvas.sectionRow.min.y}, {right - 1.0f, canvas.sectionRow.max.y},
                                colorOf(value.color, 0.15 + 0.85 * value.opacity));
         if (step % labelEvery == 0) {
-            char label[32];
-            std::snprintf(label, sizeof label, "%zu", step);
+            char label[64];
+            std::snprintf(label, sizeof label, "%s", stamps ? config.stepLabels[step].c_str() : std::to_string(step).c_str());
             const ImVec2 textSize = ImGui::CalcTextSize(label);
             const bool dark = luminance(value.color) * (0.15 + 0.85 * value.opacity) > 0.45;
             drawList.AddText({0.5f * (left + right - textSize.x), canvas.sectionRow.min.y + 1.0f},
@@ -164,7 +168,7 @@ void drawColorStrip(ImDrawList& drawList, const CurveCanvas& canvas, const Trans
 
 void drawAxis(ImDrawList& drawList, const CurveCanvas& canvas, const CurveEditorConfig& config) {
     const float y = canvas.axisRow.min.y;
-    if (config.stepTimes.empty()) {
+    if (config.stepLabels.empty()) {
         for (const double at : {config.axis.min, 0.5 * (config.axis.min + config.axis.max), config.axis.max}) {
             char label[32];
             std::snprintf(label, sizeof label, "%g", at);
@@ -174,7 +178,7 @@ void drawAxis(ImDrawList& drawList, const CurveCanvas& canvas, const CurveEditor
         }
     }
     const float width = ImGui::CalcTextSize(config.axisLabel.c_str()).x;
-    const float x = config.stepTimes.empty() ? canvas.xOf(0.25 * (3.0 * config.axis.min + config.axis.max)) - 0.5f * width
+    const float x = config.stepLabels.empty() ? canvas.xOf(0.25 * (3.0 * config.axis.min + config.axis.max)) - 0.5f * width
                                              : canvas.area.center().x - 0.5f * width;
     drawList.AddText({x, y}, IM_COL32(150, 150, 160, 255), config.axisLabel.c_str());
 }
@@ -206,7 +210,7 @@ double CurveCanvas::scale() const {
 CurveCanvas layoutCurveCanvas(const ScreenRect& area, const CurveEditorConfig& config) {
     CurveCanvas canvas;
     canvas.area = area;
-    const bool sections = !config.stepTimes.empty();
+    const bool sections = !config.stepLabels.empty();
     float top = area.min.y;
     if (sections) {
         canvas.sectionRow = {{area.min.x, top}, {area.max.x, top + kSectionRowHeight}};
@@ -220,7 +224,7 @@ CurveCanvas layoutCurveCanvas(const ScreenRect& area, const CurveEditorConfig& c
     if (sections) {
         // Each time-step owns the section [i - 0.5, i + 0.5], so nodes on whole steps sit mid-section.
         canvas.displayMin = -0.5;
-        canvas.displayMax = double(config.stepTimes.size()) - 0.5;
+        canvas.displayMax = double(config.stepLabels.size()) - 0.5;
     } else {
         canvas.displayMin = config.axis.min;
         canvas.displayMax = config.axis.max > config.axis.min ? config.axis.max : config.axis.min + 1.0;
@@ -272,7 +276,7 @@ void drawCurveCanvas(ImDrawList& drawList, const CurveCanvas& canvas, const Tran
     drawList.AddRectFilled(toImVec(canvas.plot.min), toImVec(canvas.plot.max), kPlotBackground);
     if (config.histogram != nullptr) drawHistogram(drawList, canvas, *config.histogram);
     drawCurve(drawList, canvas, curve);
-    if (!config.stepTimes.empty()) drawSections(drawList, canvas, curve, config);
+    if (!config.stepLabels.empty()) drawSections(drawList, canvas, curve, config);
     drawColorStrip(drawList, canvas, curve, selection, config.thumbnails);
     drawOpacityNodes(drawList, canvas, curve, selection);
     drawAxis(drawList, canvas, config);

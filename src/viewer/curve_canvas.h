@@ -22,7 +22,7 @@ struct CurveEditorConfig {
     std::string anchor;  // anchor name for scripts: "stf", "tstf", "gradient"
     CurveAxis axis;
     // Index TSTF: the time of each time-step; one section per entry. Empty for other curves.
-    std::vector<double> stepTimes;
+    std::vector<std::string> stepLabels;  // the index TSTF: each time-step's stamp (sections when non-empty)
     const DensityHistogram* histogram = nullptr;  // drawn behind the STF
     StyleThumbnails* thumbnails = nullptr;        // styled nodes drawn as their lit sphere
     std::string axisLabel;

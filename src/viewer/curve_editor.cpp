@@ -190,11 +190,11 @@ void CurveEditor::drawTooltip(const TransferFunction1D& curve, const CurveCanvas
         }
         return;
     }
-    if (!config.stepTimes.empty() && canvas.sectionRow.contains(mouse)) {
-        const int step = std::clamp(int(std::lround(canvas.atOf(mouse.x))), 0, int(config.stepTimes.size()) - 1);
+    if (!config.stepLabels.empty() && canvas.sectionRow.contains(mouse)) {
+        const int step = std::clamp(int(std::lround(canvas.atOf(mouse.x))), 0, int(config.stepLabels.size()) - 1);
         const ColorOpacity value = curve.evaluate(double(step));
-        ImGui::SetTooltip("time-step %d (t = %g)\nopacity %.3f, colour (%.2f, %.2f, %.2f)", step,
-                          config.stepTimes[std::size_t(step)], value.opacity, value.color.r, value.color.g,
+        ImGui::SetTooltip("time-step %d (%s)\nopacity %.3f, colour (%.2f, %.2f, %.2f)", step,
+                          config.stepLabels[std::size_t(step)].c_str(), value.opacity, value.color.r, value.color.g,
                           value.color.b);
     }
 }

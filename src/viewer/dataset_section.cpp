@@ -37,7 +37,7 @@ bool sameGrid(const Series& series) {
     });
 }
 
-void drawStepTable(const Series& series) {
+void drawStepTable(const Series& series, const std::vector<std::string>& timeLabels) {
     constexpr ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
                                       ImGuiTableFlags_SizingFixedFit;
     const float height = std::min(8.0f, float(series.size()) + 1.0f) * ImGui::GetTextLineHeightWithSpacing();
@@ -53,7 +53,7 @@ void drawStepTable(const Series& series) {
         ImGui::TableNextColumn();
         ImGui::Text("%zu", i);
         ImGui::TableNextColumn();
-        ImGui::Text("%.3g", step.time);
+        ImGui::TextUnformatted(timeLabels[i].c_str());
         ImGui::TableNextColumn();
         ImGui::Text("%s%dx%dx%d", step.isBeam() ? "beam " : step.structured() ? "struct. " : "", dims.x, dims.y,
                     dims.z);
@@ -75,7 +75,8 @@ void drawDatasetSection(SidePanelState& state, UiAnchors&) {
     ImGui::TextDisabled("%s", series.manifestPath.filename().string().c_str());
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", series.manifestPath.string().c_str());
     const TimeStep& first = series.steps.front();
-    ImGui::Text("%zu time-steps, t = %.3g .. %.3g", series.size(), first.time, series.steps.back().time);
+    ImGui::Text("%zu time-steps, %s .. %s", series.size(), state.timeLabels.front().c_str(),
+                state.timeLabels.back().c_str());
     const glm::ivec3 dims = first.dims();
     if (sameGrid(series) && first.isBeam())
         ImGui::Text("beam grid %dx%dx%d, range %.3g .. %.3g", dims.x, dims.y, dims.z, first.beam().minRange,
@@ -94,7 +95,7 @@ void drawDatasetSection(SidePanelState& state, UiAnchors&) {
         ImGui::SetTooltip("GPU textures: series atlas %s, per-frame buffers %s",
                           bytesText(state.memory.seriesBytes).c_str(), bytesText(state.memory.frameBytes).c_str());
     if (ImGui::TreeNode("Time-steps")) {
-        drawStepTable(series);
+        drawStepTable(series, state.timeLabels);
         ImGui::TreePop();
     }
 }
@@ -104,7 +105,7 @@ void drawTimeSection(SidePanelState& state, ViewerCommands& commands, UiAnchors&
     const int last = int(state.series.size()) - 1;
     time.step = std::clamp(time.step, 0, std::max(last, 0));
     char label[48];
-    std::snprintf(label, sizeof label, "%d  (t = %.3g)", time.step, state.series.steps[std::size_t(time.step)].time);
+    std::snprintf(label, sizeof label, "%d  (%s)", time.step, state.timeLabels[std::size_t(time.step)].c_str());
     if (ImGui::SliderInt("time-step", &time.step, 0, std::max(last, 0), label)) time.solo = true;
     const ImVec2 min = ImGui::GetItemRectMin();
     const ImVec2 max = ImGui::GetItemRectMax();

@@ -18,12 +18,6 @@ void placeWindow(const ScreenRect& rect) {
     ImGui::SetNextWindowSize({rect.size().x, rect.size().y});
 }
 
-std::vector<double> stepTimes(const Series& series) {
-    std::vector<double> times;
-    for (const TimeStep& step : series.steps) times.push_back(step.time);
-    return times;
-}
-
 }  // namespace
 
 CurveAxis stfAxis() { return {0.0, 1.0, false}; }
@@ -34,10 +28,11 @@ CurveAxis indexTstfAxis(const Series& series) {
 
 CurveAxis gradientTstfAxis() { return {0.0, 1.0, false}; }
 
-void EditorPanels::draw(Scene& scene, const Series& series, const DensityHistogram& histogram,
+void EditorPanels::draw(Scene& scene, const Series& series, const std::vector<std::string>& timeLabels,
+                        const DensityHistogram& histogram,
                         const ViewerLayout& layout, UiAnchors& anchors) {
     drawStf(scene, histogram, layout.stfEditor, anchors);
-    drawTstf(scene, series, layout.tstfEditor, anchors);
+    drawTstf(scene, series, timeLabels, layout.tstfEditor, anchors);
 }
 
 void EditorPanels::drawEditor(CurveEditor& editor, TransferFunction1D& curve, const CurveEditorConfig& config,
@@ -68,7 +63,8 @@ void EditorPanels::drawStf(Scene& scene, const DensityHistogram& histogram, cons
     ImGui::End();
 }
 
-void EditorPanels::drawTstf(Scene& scene, const Series& series, const ScreenRect& rect, UiAnchors& anchors) {
+void EditorPanels::drawTstf(Scene& scene, const Series& series, const std::vector<std::string>& timeLabels,
+                            const ScreenRect& rect, UiAnchors& anchors) {
     placeWindow(rect);
     const bool focusedHere = focused_ == &index_ || focused_ == &gradient_;
     const std::string title = std::string(focusedHere ? "> " : "") + "TSTF: temporal style transfer function###tstf";
@@ -94,7 +90,7 @@ void EditorPanels::drawTstf(Scene& scene, const Series& series, const ScreenRect
             CurveEditorConfig config;
             config.anchor = "tstf";
             config.axis = indexTstfAxis(series);
-            config.stepTimes = stepTimes(series);
+            config.stepLabels = timeLabels;
             config.axisLabel = "time-step";
             drawEditor(index_, scene.indexTstf.curve, config, anchors);
         } else {

@@ -18,7 +18,8 @@ public:
     EditorPanels(const EditorPanels&) = delete;
     EditorPanels& operator=(const EditorPanels&) = delete;
 
-    void draw(Scene& scene, const Series& series, const DensityHistogram& histogram, const ViewerLayout& layout,
+    void draw(Scene& scene, const Series& series, const std::vector<std::string>& timeLabels,
+              const DensityHistogram& histogram, const ViewerLayout& layout,
               UiAnchors& anchors);
 
     // The editor that has the keyboard, with the curve it edits in `scene` and that curve's axis.
@@ -33,7 +34,8 @@ private:
     enum class TstfView { Index, Gradient };
 
     void drawStf(Scene& scene, const DensityHistogram& histogram, const ScreenRect& rect, UiAnchors& anchors);
-    void drawTstf(Scene& scene, const Series& series, const ScreenRect& rect, UiAnchors& anchors);
+    void drawTstf(Scene& scene, const Series& series, const std::vector<std::string>& timeLabels, const ScreenRect& rect,
+                  UiAnchors& anchors);
     // Toolbar, canvas and inspector of one editor inside the current window.
     void drawEditor(CurveEditor& editor, TransferFunction1D& curve, const CurveEditorConfig& config,
                     UiAnchors& anchors);

@@ -30,11 +30,11 @@ void drawProfileSection(SidePanelState& state) {
     if (ImGui::TreeNode("values")) {
         for (std::size_t i = 0; i < pick.densities.size(); ++i) {
             if (pick.densities[i] && isMissing(*pick.densities[i]))
-                ImGui::TextDisabled("%2zu  t = %-8.3g no data", i, state.series.steps[i].time);
+                ImGui::TextDisabled("%2zu  %-10s no data", i, state.timeLabels[i].c_str());
             else if (pick.densities[i])
-                ImGui::Text("%2zu  t = %-8.3g %.4f", i, state.series.steps[i].time, *pick.densities[i]);
+                ImGui::Text("%2zu  %-10s %.4f", i, state.timeLabels[i].c_str(), *pick.densities[i]);
             else
-                ImGui::TextDisabled("%2zu  t = %-8.3g outside", i, state.series.steps[i].time);
+                ImGui::TextDisabled("%2zu  %-10s outside", i, state.timeLabels[i].c_str());
         }
         ImGui::TreePop();
     }

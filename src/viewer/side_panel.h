@@ -24,6 +24,7 @@ struct GpuMemory {
 struct SidePanelState {
     Scene& scene;
     const Series& series;
+    const std::vector<std::string>& timeLabels;  // ViewerDocument::timeLabels
     TimeControl& time;
     const std::optional<Pick>& pick;
     bool pickIsNew = false;  // scroll the profile into view

@@ -102,13 +102,14 @@ void ViewerApp::buildUi(double seconds) {
 
     SidePanelState side{document_.scene,
                         *document_.series,
+                        document_.timeLabels,
                         time_,
                         pick_,
                         std::exchange(pickIsNew_, false),
                         {renderer_.seriesTextureBytes(), renderer_.frameTextureBytes()},
                         0.5 * document_.series->finestSpacing()};
     drawSidePanel(layout_.sidePanel, side, commands_, anchors_);
-    editors_.draw(document_.scene, *document_.series, *document_.histogram, layout_, anchors_);
+    editors_.draw(document_.scene, *document_.series, document_.timeLabels, *document_.histogram, layout_, anchors_);
     drawVolumeArea();
 
     collectShortcuts(commands_);

@@ -58,6 +58,9 @@ ViewerDocument openDocument(const std::vector<std::filesystem::path>& paths, con
                              ? current->histogram
                              : std::make_shared<const DensityHistogram>(computeDensityHistogram(*document.series));
     document.openedCamera = document.scene.camera;
+    std::vector<double> times;
+    for (const TimeStep& step : document.series->steps) times.push_back(step.time);
+    document.timeLabels = formatTimes(times, document.series->time);
     return document;
 }
 

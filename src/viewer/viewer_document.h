@@ -23,6 +23,8 @@ struct ViewerDocument {
     std::optional<std::filesystem::path> sceneFile;
     // The camera as opened: what "reset camera" returns to.
     Camera openedCamera;
+    // Each time-step's stamp as a person reads it ("2009-07-15", "12.2 s"; formatTimes).
+    std::vector<std::string> timeLabels;
 };
 
 // Opens a scene file or a dataset (with a default scene); several paths are the files of one

@@ -35,6 +35,8 @@ struct RawSeries {
     // value is data.
     std::optional<double> missingValue;
     std::vector<RawTimeStep> steps;
+    std::array<SpatialAxis, 3> axes;  // written when any is known
+    TimeAxis time;                    // written when it has a unit
 };
 
 // Writes `directory`/series.json and one raw file per time-step (and mask). Every file goes

@@ -15,6 +15,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "tstyles/data/structured_grid.h"
+#include "tstyles/data/time_axis.h"
 
 namespace tstyles {
 
@@ -150,6 +151,7 @@ enum class AxisDirection {
 };
 
 std::string toString(AxisDirection direction);  // "east", "anterior", "unknown", ...
+std::optional<AxisDirection> axisDirectionFromString(const std::string& name);
 
 // One world axis of a series as the file describes it.
 struct SpatialAxis {
@@ -175,6 +177,8 @@ struct Series {
     std::string sourceFormat = "tstyles manifest";
     // What world x, y and z mean, in that order, as far as the source says.
     std::array<SpatialAxis, 3> axes;
+    // What TimeStep::time means: its unit and, where the file gives one, the date it counts from.
+    TimeAxis time;
 
     std::size_t size() const { return steps.size(); }
     bool hasMasks() const;

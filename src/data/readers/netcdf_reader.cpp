@@ -184,6 +184,16 @@ void reverseAxis(std::vector<float>& values, const glm::ivec3& dims, int axis) {
     }
 }
 
+// CF: the time coordinate's units ("days since 1950-01-01") and calendar.
+TimeAxis timeAxisOf(const NetcdfFile& nc, const NetcdfVariable& variable, int timeDimension) {
+    if (timeDimension < 0) return {};
+    const std::string name = variable.dimensions[std::size_t(timeDimension)].name;
+    const auto id = nc.findVariable(name);
+    if (!id || !nc.isCoordinateVariable(*id)) return {};
+    return parseTimeUnits(nc.textAttribute(*id, "units").value_or(""), nc.textAttribute(*id, "calendar").value_or(""),
+                          nc.path(), name);
+}
+
 std::vector<double> stepTimes(const NetcdfFile& nc, const NetcdfVariable& variable, int timeDimension) {
     if (timeDimension < 0) return {0.0};
     const NetcdfDimension& dimension = variable.dimensions[std::size_t(timeDimension)];
@@ -250,6 +260,7 @@ SourceSeries openNetcdf(const std::filesystem::path& file, const ReadOptions& op
     source.name = variable.name;
     source.file = file;
     source.format = nc->formatName();
+    source.time = timeAxisOf(*nc, variable, timeDimension);
     for (double time : stepTimes(*nc, variable, timeDimension)) {
         source.steps.push_back({time, grid, placement, type, file});
     }

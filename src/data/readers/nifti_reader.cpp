@@ -124,6 +124,11 @@ SourceSeries openNifti(const std::filesystem::path& file) {
     source.file = file;
     source.format = image->nifti_type >= NIFTI_FTYPE_NIFTI2_1 ? "NIfTI-2" : "NIfTI-1";
     source.axes = niftiAxes(*image);
+    // xyzt_units: seconds, milliseconds or microseconds; Hz, ppm and rad/s are not times.
+    source.time.unit = image->time_units == NIFTI_UNITS_SEC    ? TimeUnit::Seconds
+                       : image->time_units == NIFTI_UNITS_MSEC ? TimeUnit::Milliseconds
+                       : image->time_units == NIFTI_UNITS_USEC ? TimeUnit::Microseconds
+                                                               : TimeUnit::None;
     for (std::size_t index = 0; index < stepCount; ++index) {
         SourceStep timeStep;
         timeStep.time = image->toffset + double(index) * step;

@@ -166,6 +166,7 @@ Series assembleRawSeries(const SourceSeries& source, const ReadOptions& options)
     series.name = source.name;
     series.manifestPath = source.file;
     series.axes = source.axes;
+    series.time = source.time;
     for (std::size_t kept = 0; kept < plan.steps.size(); ++kept) {
         const SourceStep& from = source.steps[plan.steps[kept]];
         TimeStep step;

@@ -29,6 +29,7 @@ struct SourceSeries {
     std::vector<SourceStep> steps;
     // What world x, y and z mean, as far as the file says (Series::axes).
     std::array<SpatialAxis, 3> axes;
+    TimeAxis time;  // Series::time
     // The raw values of a time-step, x fastest, after the file's scale and offset; declared missing
     // values are missingDensity() (NaN). Undeclared NaN or Inf is an InputError naming the file.
     std::function<std::vector<float>(std::size_t step)> readStep;

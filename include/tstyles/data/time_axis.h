@@ -1,0 +1,58 @@
+// What the time stamps of a series mean: a unit, and where the file gives one, a reference date on
+// a calendar (CF "days since 1950-01-01", calendar "noleap"). Turns stamps into text a person reads
+// ("2009-07-15", "12.2 s") for `tstyles info`, the viewer's time slider and the TSTF sections. GL-free.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tstyles {
+
+// The CF calendars. Standard (= gregorian) is Julian before 1582-10-15 and Gregorian from then.
+enum class Calendar { Standard, ProlepticGregorian, NoLeap, AllLeap, Day360, Julian };
+
+std::string toString(Calendar calendar);  // the CF name: "standard", "noleap", "360_day", ...
+// Every CF spelling, lower case ("gregorian", "365_day", "none" is not a calendar).
+std::optional<Calendar> calendarFromString(const std::string& name);
+
+struct CalendarDate {
+    int year = 1970;
+    int month = 1;  // 1 .. 12
+    int day = 1;    // 1 .. the month's length in the calendar
+    int hour = 0;
+    int minute = 0;
+    double second = 0.0;
+    bool operator==(const CalendarDate&) const = default;
+};
+
+enum class TimeUnit { None, Microseconds, Milliseconds, Seconds, Minutes, Hours, Days };
+
+struct TimeAxis {
+    TimeUnit unit = TimeUnit::None;  // None: plain numbers (time-step indices, an unknown unit)
+    std::optional<CalendarDate> reference;  // "<unit> since <reference>"
+    Calendar calendar = Calendar::Standard;
+    bool operator==(const TimeAxis&) const = default;
+};
+
+// CF units such as "days since 1950-01-01", "hours since 2009-07-01T06:00:00Z", "seconds"; an
+// empty text is TimeUnit::None. What cannot be read (an unknown unit, a bad date, months or years,
+// which CF discourages because their length varies, an unknown calendar) is an InputError naming
+// `file` and `field`.
+TimeAxis parseTimeUnits(const std::string& units, const std::string& calendar, const std::filesystem::path& file,
+                        const std::string& field);
+
+// The CF spelling back ("days since 1950-01-01 00:00:00"); empty for TimeUnit::None.
+std::string toCfUnits(const TimeAxis& axis);
+
+// The date `value` units after the reference (the axis must have one).
+CalendarDate dateAt(const TimeAxis& axis, double value);
+
+// Labels for a series' stamps, as short as keeps neighbours apart: dates ("2009-07-15", with
+// "06:00" or seconds only where needed), values with their unit ("12.2 s", "3 days"), or plain
+// numbers.
+std::vector<std::string> formatTimes(const std::vector<double>& values, const TimeAxis& axis);
+std::string formatTime(double value, const TimeAxis& axis);
+
+}  // namespace tstyles

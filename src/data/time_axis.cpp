@@ -1,0 +1,326 @@
+// CF time units, calendars and labels (time_axis.h). Day numbers: Julian day numbers for the
+// Gregorian and Julian calendars (the integer algorithms of Richards, "Mapping Time", as in the
+// Explanatory Supplement to the Astronomical Almanac), plain counts for the fixed-length calendars.
+#include "tstyles/data/time_axis.h"
+
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <iomanip>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "tstyles/core/errors.h"
+
+namespace tstyles {
+namespace {
+
+constexpr long kFirstGregorianDay = 2299161;  // Julian day number of 1582-10-15 (Gregorian)
+constexpr int kMonthDays[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+
+long floorDivide(long a, long b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0))); }
+
+long gregorianDayNumber(int year, int month, int day) {
+    const long a = (14 - month) / 12;
+    const long y = long(year) + 4800 - a;
+    const long m = month + 12 * a - 3;
+    return day + (153 * m + 2) / 5 + 365 * y + floorDivide(y, 4) - floorDivide(y, 100) + floorDivide(y, 400) - 32045;
+}
+
+long julianDayNumber(int year, int month, int day) {
+    const long a = (14 - month) / 12;
+    const long y = long(year) + 4800 - a;
+    const long m = month + 12 * a - 3;
+    return day + (153 * m + 2) / 5 + 365 * y + floorDivide(y, 4) - 32083;
+}
+
+CalendarDate fromGregorianDayNumber(long jdn) {
+    const long a = jdn + 32044;
+    const long b = floorDivide(4 * a + 3, 146097);
+    const long c = a - floorDivide(146097 * b, 4);
+    const long d = floorDivide(4 * c + 3, 1461);
+    const long e = c - floorDivide(1461 * d, 4);
+    const long m = floorDivide(5 * e + 2, 153);
+    CalendarDate date;
+    date.day = int(e - floorDivide(153 * m + 2, 5) + 1);
+    date.month = int(m + 3 - 12 * floorDivide(m, 10));
+    date.year = int(100 * b + d - 4800 + floorDivide(m, 10));
+    return date;
+}
+
+CalendarDate fromJulianDayNumber(long jdn) {
+    const long c = jdn + 32082;
+    const long d = floorDivide(4 * c + 3, 1461);
+    const long e = c - floorDivide(1461 * d, 4);
+    const long m = floorDivide(5 * e + 2, 153);
+    CalendarDate date;
+    date.day = int(e - floorDivide(153 * m + 2, 5) + 1);
+    date.month = int(m + 3 - 12 * floorDivide(m, 10));
+    date.year = int(d - 4800 + floorDivide(m, 10));
+    return date;
+}
+
+int daysBeforeMonth(int month, bool leap) {
+    int days = 0;
+    for (int m = 1; m < month; ++m) days += kMonthDays[m - 1] + (leap && m == 2 ? 1 : 0);
+    return days;
+}
+
+CalendarDate fromFixedYear(long dayNumber, int yearLength, bool leap) {
+    CalendarDate date;
+    date.year = int(floorDivide(dayNumber, yearLength));
+    long dayOfYear = dayNumber - long(date.year) * yearLength;
+    date.month = 1;
+    while (true) {
+        const int length = yearLength == 360 ? 30 : kMonthDays[date.month - 1] + (leap && date.month == 2 ? 1 : 0);
+        if (dayOfYear < length || date.month == 12) break;
+        dayOfYear -= length;
+        ++date.month;
+    }
+    date.day = int(dayOfYear) + 1;
+    return date;
+}
+
+long dayNumber(Calendar calendar, const CalendarDate& date) {
+    switch (calendar) {
+        case Calendar::Standard: {
+            const long gregorian = gregorianDayNumber(date.year, date.month, date.day);
+            return gregorian >= kFirstGregorianDay ? gregorian : julianDayNumber(date.year, date.month, date.day);
+        }
+        case Calendar::ProlepticGregorian: return gregorianDayNumber(date.year, date.month, date.day);
+        case Calendar::Julian: return julianDayNumber(date.year, date.month, date.day);
+        case Calendar::NoLeap: return 365L * date.year + daysBeforeMonth(date.month, false) + date.day - 1;
+        case Calendar::AllLeap: return 366L * date.year + daysBeforeMonth(date.month, true) + date.day - 1;
+        case Calendar::Day360: return 360L * date.year + 30L * (date.month - 1) + date.day - 1;
+    }
+    return 0;
+}
+
+CalendarDate fromDayNumber(Calendar calendar, long number) {
+    switch (calendar) {
+        case Calendar::Standard:
+            return number >= kFirstGregorianDay ? fromGregorianDayNumber(number) : fromJulianDayNumber(number);
+        case Calendar::ProlepticGregorian: return fromGregorianDayNumber(number);
+        case Calendar::Julian: return fromJulianDayNumber(number);
+        case Calendar::NoLeap: return fromFixedYear(number, 365, false);
+        case Calendar::AllLeap: return fromFixedYear(number, 366, true);
+        case Calendar::Day360: return fromFixedYear(number, 360, false);
+    }
+    return {};
+}
+
+int monthLength(Calendar calendar, int year, int month) {
+    const long start = dayNumber(calendar, {year, month, 1});
+    const long next = month == 12 ? dayNumber(calendar, {year + 1, 1, 1}) : dayNumber(calendar, {year, month + 1, 1});
+    return int(next - start);
+}
+
+double secondsPer(TimeUnit unit) {
+    switch (unit) {
+        case TimeUnit::Microseconds: return 1e-6;
+        case TimeUnit::Milliseconds: return 1e-3;
+        case TimeUnit::Seconds: return 1.0;
+        case TimeUnit::Minutes: return 60.0;
+        case TimeUnit::Hours: return 3600.0;
+        case TimeUnit::Days: return 86400.0;
+        case TimeUnit::None: return 1.0;
+    }
+    return 1.0;
+}
+
+std::optional<TimeUnit> unitFromString(const std::string& text) {
+    static const std::pair<const char*, TimeUnit> kNames[] = {
+        {"days", TimeUnit::Days},       {"day", TimeUnit::Days},         {"d", TimeUnit::Days},
+        {"hours", TimeUnit::Hours},     {"hour", TimeUnit::Hours},       {"hrs", TimeUnit::Hours},
+        {"hr", TimeUnit::Hours},        {"h", TimeUnit::Hours},          {"minutes", TimeUnit::Minutes},
+        {"minute", TimeUnit::Minutes},  {"mins", TimeUnit::Minutes},     {"min", TimeUnit::Minutes},
+        {"seconds", TimeUnit::Seconds}, {"second", TimeUnit::Seconds},   {"secs", TimeUnit::Seconds},
+        {"sec", TimeUnit::Seconds},     {"s", TimeUnit::Seconds},        {"milliseconds", TimeUnit::Milliseconds},
+        {"millisecond", TimeUnit::Milliseconds}, {"msec", TimeUnit::Milliseconds}, {"ms", TimeUnit::Milliseconds},
+        {"microseconds", TimeUnit::Microseconds}, {"microsecond", TimeUnit::Microseconds},
+        {"usec", TimeUnit::Microseconds}, {"us", TimeUnit::Microseconds},
+    };
+    for (const auto& [name, unit] : kNames)
+        if (text == name) return unit;
+    return std::nullopt;
+}
+
+const char* unitSymbol(TimeUnit unit) {
+    switch (unit) {
+        case TimeUnit::Microseconds: return "us";
+        case TimeUnit::Milliseconds: return "ms";
+        case TimeUnit::Seconds: return "s";
+        case TimeUnit::Minutes: return "min";
+        case TimeUnit::Hours: return "h";
+        case TimeUnit::Days: return "days";
+        case TimeUnit::None: return "";
+    }
+    return "";
+}
+
+std::string lowercase(std::string text) {
+    for (char& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return text;
+}
+
+std::string trimmed(const std::string& text) {
+    const auto first = text.find_first_not_of(" \t");
+    if (first == std::string::npos) return "";
+    return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+}
+
+std::string twoDigits(int value) {
+    char text[16];
+    std::snprintf(text, sizeof text, "%02d", value);
+    return text;
+}
+
+std::string dateText(const CalendarDate& date, int precision) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%04d-%02d-%02d", date.year, date.month, date.day);
+    std::string result = text;
+    if (precision >= 1) result += " " + twoDigits(date.hour) + ":" + twoDigits(date.minute);
+    if (precision >= 2) result += ":" + twoDigits(int(std::floor(date.second)));
+    return result;
+}
+
+std::string numberText(double value, int digits) {
+    std::ostringstream text;
+    text << std::setprecision(digits) << (value + 0.0);
+    return text.str();
+}
+
+bool allDistinct(const std::vector<std::string>& labels) {
+    return std::set<std::string>(labels.begin(), labels.end()).size() == labels.size();
+}
+
+}  // namespace
+
+std::string toString(Calendar calendar) {
+    switch (calendar) {
+        case Calendar::Standard: return "standard";
+        case Calendar::ProlepticGregorian: return "proleptic_gregorian";
+        case Calendar::NoLeap: return "noleap";
+        case Calendar::AllLeap: return "all_leap";
+        case Calendar::Day360: return "360_day";
+        case Calendar::Julian: return "julian";
+    }
+    return "standard";
+}
+
+std::optional<Calendar> calendarFromString(const std::string& name) {
+    const std::string text = lowercase(trimmed(name));
+    if (text == "standard" || text == "gregorian" || text.empty()) return Calendar::Standard;
+    if (text == "proleptic_gregorian") return Calendar::ProlepticGregorian;
+    if (text == "noleap" || text == "365_day") return Calendar::NoLeap;
+    if (text == "all_leap" || text == "366_day") return Calendar::AllLeap;
+    if (text == "360_day") return Calendar::Day360;
+    if (text == "julian") return Calendar::Julian;
+    return std::nullopt;
+}
+
+TimeAxis parseTimeUnits(const std::string& units, const std::string& calendar, const std::filesystem::path& file,
+                        const std::string& field) {
+    TimeAxis axis;
+    const auto parsedCalendar = calendarFromString(calendar);
+    if (!parsedCalendar)
+        throwInputError(file, field + ":calendar",
+                        "unknown calendar \"" + calendar +
+                            "\"; CF calendars: standard, gregorian, proleptic_gregorian, noleap, 365_day, all_leap, "
+                            "366_day, 360_day, julian");
+    axis.calendar = *parsedCalendar;
+    const std::string text = lowercase(trimmed(units));
+    if (text.empty()) return axis;
+    const auto since = text.find(" since ");
+    const std::string unitText = trimmed(since == std::string::npos ? text : text.substr(0, since));
+    if (unitText == "months" || unitText == "month" || unitText == "years" || unitText == "year")
+        throwInputError(file, field + ":units",
+                        "\"" + units + "\": months and years have no fixed length; CF asks for days, hours, minutes "
+                        "or seconds");
+    const auto unit = unitFromString(unitText);
+    if (!unit)
+        throwInputError(file, field + ":units", "\"" + units + "\" is not a time unit (days, hours, minutes, seconds, "
+                                                "milliseconds, microseconds, optionally \"since\" a date)");
+    axis.unit = *unit;
+    if (since == std::string::npos) return axis;
+    // 1950-01-01, 1950-1-1 00:00:00, 2009-07-01T06:00:00Z, 1950-01-01 00:00:0.0, with an optional zone.
+    static const std::regex kDate(
+        R"(^(-?\d{1,4})-(\d{1,2})-(\d{1,2})(?:[ t](\d{1,2}):(\d{1,2})(?::(\d{1,2}(?:\.\d*)?))?)?\s*(?:z|utc|[+-]0{1,2}:?0{0,2})?$)");
+    const std::string dateTextIn = trimmed(text.substr(since + 7));
+    std::smatch match;
+    if (!std::regex_match(dateTextIn, match, kDate))
+        throwInputError(file, field + ":units", "\"" + units + "\": cannot read the reference date \"" + dateTextIn +
+                                                    "\" (expected YYYY-MM-DD, optionally with hh:mm:ss)");
+    CalendarDate date;
+    date.year = std::stoi(match[1]);
+    date.month = std::stoi(match[2]);
+    date.day = std::stoi(match[3]);
+    if (match[4].matched) date.hour = std::stoi(match[4]);
+    if (match[5].matched) date.minute = std::stoi(match[5]);
+    if (match[6].matched) date.second = std::stod(match[6]);
+    const bool valid = date.month >= 1 && date.month <= 12 && date.day >= 1 &&
+                       date.day <= monthLength(axis.calendar, date.year, date.month) && date.hour < 24 &&
+                       date.minute < 60 && date.second < 61.0;
+    if (!valid)
+        throwInputError(file, field + ":units", "\"" + units + "\": the reference date " + dateTextIn + " does not exist in the " +
+                                                    toString(axis.calendar) + " calendar");
+    axis.reference = date;
+    return axis;
+}
+
+std::string toCfUnits(const TimeAxis& axis) {
+    if (axis.unit == TimeUnit::None) return "";
+    static const char* kCfNames[] = {"", "microseconds", "milliseconds", "seconds", "minutes", "hours", "days"};
+    std::string text = kCfNames[static_cast<int>(axis.unit)];
+    if (!axis.reference) return text;
+    const CalendarDate& date = *axis.reference;
+    char buffer[96];
+    std::snprintf(buffer, sizeof buffer, " since %04d-%02d-%02d %02d:%02d:%02d", date.year, date.month, date.day,
+                  date.hour, date.minute, int(date.second));
+    return text + buffer;
+}
+
+CalendarDate dateAt(const TimeAxis& axis, double value) {
+    const CalendarDate& reference = axis.reference.value();
+    const double referenceSeconds = reference.hour * 3600.0 + reference.minute * 60.0 + reference.second;
+    // Whole days and the second of the day, rounded to a millisecond so that 0.25 days is 06:00.
+    const double seconds = std::round((referenceSeconds + value * secondsPer(axis.unit)) * 1000.0) / 1000.0;
+    const double days = std::floor(seconds / 86400.0);
+    double secondOfDay = seconds - days * 86400.0;
+    CalendarDate date = fromDayNumber(axis.calendar, dayNumber(axis.calendar, reference) + long(days));
+    date.hour = int(secondOfDay / 3600.0);
+    secondOfDay -= date.hour * 3600.0;
+    date.minute = int(secondOfDay / 60.0);
+    date.second = secondOfDay - date.minute * 60.0;
+    return date;
+}
+
+std::vector<std::string> formatTimes(const std::vector<double>& values, const TimeAxis& axis) {
+    std::vector<std::string> labels(values.size());
+    if (axis.reference) {
+        std::vector<CalendarDate> dates;
+        for (double value : values) dates.push_back(dateAt(axis, value));
+        int precision = 0;
+        for (const CalendarDate& date : dates) {
+            if (date.hour != 0 || date.minute != 0) precision = std::max(precision, 1);
+            if (date.second >= 0.5) precision = 2;
+        }
+        for (; precision <= 2; ++precision) {
+            for (std::size_t i = 0; i < dates.size(); ++i) labels[i] = dateText(dates[i], precision);
+            if (allDistinct(labels)) break;
+        }
+        return labels;
+    }
+    const std::string suffix = axis.unit == TimeUnit::None ? "" : std::string(" ") + unitSymbol(axis.unit);
+    for (int digits = 3; digits <= 12; ++digits) {
+        for (std::size_t i = 0; i < values.size(); ++i) labels[i] = numberText(values[i], digits) + suffix;
+        if (allDistinct(labels)) break;
+    }
+    return labels;
+}
+
+std::string formatTime(double value, const TimeAxis& axis) { return formatTimes({value}, axis).front(); }
+
+}  // namespace tstyles
