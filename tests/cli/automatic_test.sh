@@ -94,4 +94,17 @@ case_dataset_option_with_dataset_input() {
     expect_no_output "$SCRATCH/out.png"
 }
 
+# convert keeps what the axes and the times mean: the manifest folder shows the same dates and
+# gets the same automatic orientation as the NetCDF file.
+case_convert_keeps_meaning() {
+    write_samples
+    run_tstyles -- convert "$SCRATCH/data/ocean-anomalies.nc" -o "$SCRATCH/ocean"
+    expect_exit 0
+    run_tstyles -- info "$SCRATCH/ocean"
+    expect_exit 0
+    expect_stdout_contains "Time: days since 1950-01-01 00:00:00 (noleap calendar)"
+    expect_stdout_contains "1969-01-19"
+    expect_stdout_contains "orientation: right = +x (lon, east), up = +z (depth, up), toward the viewer = -y (lat, north)"
+}
+
 run_case

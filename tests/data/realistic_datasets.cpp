@@ -154,7 +154,7 @@ void writeNifti(const std::filesystem::path& file, const Nifti& shape, Fill valu
 void writeOceanAnomalies(const std::filesystem::path& file) {
     OceanShape shape{3, 12, 30, 40, {6939.0 + 14.0, 6939.0 + 45.0, 6939.0 + 73.0}, oceanLevels(12),
                      evenly(30.0, 45.0, 30), evenly(-40.0, -20.0, 40)};
-    // 6939 days after 1950-01-01 on the noleap calendar is 1969-01-04; plus 14 days -> 1969-01-18.
+    // 6935 days (19 years of 365) after 1950-01-01 on the noleap calendar is 1969-01-01: 1969-01-19, ...
     writeOcean(file, shape, [](std::size_t t, double depth, double lat, double lon, std::size_t index) {
         if (lon > -25.0 && lat < 34.0) return kFill;  // land in the south-east
         double anomaly = 0.0;

@@ -9,7 +9,7 @@ namespace tstyles::testdata {
 
 // CF-1.8 NetCDF-4, thetao(time 3, depth 12, lat 30, lon 40), degrees Celsius: longitude -40..-20
 // degrees_east, latitude 30..45 degrees_north, depth 0..1000 m (uneven, positive down), time "days
-// since 1950-01-01" on the noleap calendar (2009-01-15, 2009-02-15, 2009-03-15). Land (_FillValue
+// since 1950-01-01" on the noleap calendar (1969-01-19, 1969-02-19, 1969-03-19). Land (_FillValue
 // 1e20) in the south-east corner at every depth. An ocean at 4 degC with three warm anomalies, one
 // per time-step: time-step 0 at the surface in the north-west, 1 mid-basin at 300 m, 2 near the
 // bottom in the south-west.
