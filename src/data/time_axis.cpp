@@ -22,17 +22,24 @@ constexpr int kMonthDays[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
 
 long floorDivide(long a, long b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0))); }
 
-long gregorianDayNumber(int year, int month, int day) {
+// Both day-number formulas count years from March of 4801 BC, so that February is the last month.
+struct MarchYear {
+    long year;
+    long month;  // 0 for March .. 11 for February
+};
+
+MarchYear marchYear(int year, int month) {
     const long a = (14 - month) / 12;
-    const long y = long(year) + 4800 - a;
-    const long m = month + 12 * a - 3;
+    return {long(year) + 4800 - a, month + 12 * a - 3};
+}
+
+long gregorianDayNumber(int year, int month, int day) {
+    const auto [y, m] = marchYear(year, month);
     return day + (153 * m + 2) / 5 + 365 * y + floorDivide(y, 4) - floorDivide(y, 100) + floorDivide(y, 400) - 32045;
 }
 
 long julianDayNumber(int year, int month, int day) {
-    const long a = (14 - month) / 12;
-    const long y = long(year) + 4800 - a;
-    const long m = month + 12 * a - 3;
+    const auto [y, m] = marchYear(year, month);
     return day + (153 * m + 2) / 5 + 365 * y + floorDivide(y, 4) - 32083;
 }
 
@@ -245,9 +252,10 @@ TimeAxis parseTimeUnits(const std::string& units, const std::string& calendar, c
                                                 "milliseconds, microseconds, optionally \"since\" a date)");
     axis.unit = *unit;
     if (since == std::string::npos) return axis;
-    // 1950-01-01, 1950-1-1 00:00:00, 2009-07-01T06:00:00Z, 1950-01-01 00:00:0.0, with an optional zone.
+    // 1950-01-01, 1950-1-1 00:00:00, 2009-07-01T06:00:00Z, 1950-01-01 00:00:0.0, 2000-01-01 0 (UDUNITS
+    // takes an hour alone), with an optional zone of UTC.
     static const std::regex kDate(
-        R"(^(-?\d{1,4})-(\d{1,2})-(\d{1,2})(?:[ t](\d{1,2}):(\d{1,2})(?::(\d{1,2}(?:\.\d*)?))?)?\s*(?:z|utc|[+-]0{1,2}:?0{0,2})?$)");
+        R"(^(-?\d{1,4})-(\d{1,2})-(\d{1,2})(?:[ t](\d{1,2})(?::(\d{1,2})(?::(\d{1,2}(?:\.\d*)?))?)?)?\s*(?:z|utc|[+-]0{1,2}:?0{0,2})?$)");
     const std::string dateTextIn = trimmed(text.substr(since + 7));
     std::smatch match;
     if (!std::regex_match(dateTextIn, match, kDate))

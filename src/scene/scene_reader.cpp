@@ -322,8 +322,8 @@ Scene parseScene(const std::string& text, const std::filesystem::path& origin) {
     const JsonFieldReader fields(origin);
     const json root = parseJson(text, origin);
     fields.expectObject(root, "",
-                        {"dataset", "orientation", "aspect", "vertical_exaggeration", "image", "camera", "raycast",
-                         "stf", "compositor", "tstf", "final"});
+                        {"dataset", "image", "camera", "raycast", "stf", "compositor", "tstf", "final", "orientation",
+                         "aspect", "vertical_exaggeration"});
 
     Scene scene;
     scene.dataset = readDataset(fields, root, origin);
