@@ -1,6 +1,8 @@
 // Mouse interaction of the transfer-function editors: press, drag, release, double-click, menu.
 #include "curve_editor.h"
 
+#include "tstyles/scene/color_map.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -199,7 +201,7 @@ void CurveEditor::drawTooltip(const TransferFunction1D& curve, const CurveCanvas
     }
 }
 
-bool CurveEditor::drawToolbar(TransferFunction1D& curve, UiAnchors& anchors) {
+bool CurveEditor::drawToolbar(TransferFunction1D& curve, const CurveEditorConfig& config, UiAnchors& anchors) {
     bool pressed = false;
     auto button = [&](const char* label, const char* anchor, bool enabled) {
         ImGui::BeginDisabled(!enabled);
@@ -215,8 +217,44 @@ bool CurveEditor::drawToolbar(TransferFunction1D& curve, UiAnchors& anchors) {
     if (button("Group", "group", selection_.size() > 1)) groupSelection(curve);
     if (button("Ungroup", "ungroup", !selection_.empty())) ungroupSelection(curve);
     if (button("Delete", "delete", !selection_.empty())) deleteSelection(curve);
+    pressed = drawColorMapMenu(curve, config, anchors) || pressed;
     ImGui::NewLine();
     return pressed;
+}
+
+// One click recolours the curve with a named map (color_map.h): its colour nodes become the map's
+// samples over the axis, keeping the first node's lit-sphere style so shading stays.
+bool CurveEditor::drawColorMapMenu(TransferFunction1D& curve, const CurveEditorConfig& config, UiAnchors& anchors) {
+    const bool open = ImGui::SmallButton("Colour map...");
+    const ImVec2 min = ImGui::GetItemRectMin();
+    const ImVec2 max = ImGui::GetItemRectMax();
+    anchors.publish(id_ + ".colormap", ScreenRect{{min.x, min.y}, {max.x, max.y}});
+    if (open) ImGui::OpenPopup("colour maps");
+    bool applied = false;
+    if (ImGui::BeginPopup("colour maps")) {
+        ImDrawList& drawList = *ImGui::GetWindowDrawList();
+        for (const ColorMap& map : colorMaps()) {
+            const ImVec2 at = ImGui::GetCursorScreenPos();
+            if (ImGui::Selectable((map.name + "##map").c_str(), false, 0, {260.0f, 0.0f})) {
+                const std::string style = curve.color.empty() ? "" : curve.color.front().style;
+                curve.color = colorNodesFromMap(map, config.axis.min, config.axis.max, config.axis.timeSteps, style);
+                selection_.clear();
+                applied = true;
+            }
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", map.purpose.c_str());
+            // A preview strip of the map beside its name.
+            constexpr int kSwatches = 24;
+            const float left = at.x + 110.0f, width = 150.0f, height = ImGui::GetTextLineHeight();
+            for (int i = 0; i < kSwatches; ++i) {
+                const glm::dvec3 colour = colorAt(map, (i + 0.5) / kSwatches);
+                drawList.AddRectFilled({left + width * float(i) / kSwatches, at.y},
+                                       {left + width * float(i + 1) / kSwatches, at.y + height},
+                                       IM_COL32(int(colour.r * 255), int(colour.g * 255), int(colour.b * 255), 255));
+            }
+        }
+        ImGui::EndPopup();
+    }
+    return applied;
 }
 
 }  // namespace tstyles::viewer

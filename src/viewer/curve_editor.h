@@ -26,7 +26,8 @@ public:
     bool drawCanvas(TransferFunction1D& curve, const CurveEditorConfig& config, const ScreenRect& area,
                     UiAnchors& anchors);
     // Group / Ungroup / Delete buttons. Returns true when one was pressed.
-    bool drawToolbar(TransferFunction1D& curve, UiAnchors& anchors);
+    bool drawToolbar(TransferFunction1D& curve, const CurveEditorConfig& config, UiAnchors& anchors);
+    bool drawColorMapMenu(TransferFunction1D& curve, const CurveEditorConfig& config, UiAnchors& anchors);
     // One line: the selected node's position, value, colour, style and group, or a hint.
     void drawInspector(TransferFunction1D& curve, const CurveEditorConfig& config);
 

@@ -37,7 +37,7 @@ void EditorPanels::draw(Scene& scene, const Series& series, const std::vector<st
 
 void EditorPanels::drawEditor(CurveEditor& editor, TransferFunction1D& curve, const CurveEditorConfig& config,
                               UiAnchors& anchors) {
-    if (editor.drawToolbar(curve, anchors)) focused_ = &editor;
+    if (editor.drawToolbar(curve, config, anchors)) focused_ = &editor;
     const float inspectorHeight = ImGui::GetFrameHeightWithSpacing();
     const ImVec2 start = ImGui::GetCursorScreenPos();
     const ImVec2 available = ImGui::GetContentRegionAvail();
