@@ -43,31 +43,26 @@ long julianDayNumber(int year, int month, int day) {
     return day + (153 * m + 2) / 5 + 365 * y + floorDivide(y, 4) - 32083;
 }
 
-CalendarDate fromGregorianDayNumber(long jdn) {
-    const long a = jdn + 32044;
-    const long b = floorDivide(4 * a + 3, 146097);
-    const long c = a - floorDivide(146097 * b, 4);
-    const long d = floorDivide(4 * c + 3, 1461);
-    const long e = c - floorDivide(1461 * d, 4);
+// Both inverses end alike: `days` into a run of Julian four-year cycles that starts in March,
+// `centuries` hundred years after the era's start.
+CalendarDate fromMarchCycles(long days, long centuries) {
+    const long d = floorDivide(4 * days + 3, 1461);
+    const long e = days - floorDivide(1461 * d, 4);
     const long m = floorDivide(5 * e + 2, 153);
     CalendarDate date;
     date.day = int(e - floorDivide(153 * m + 2, 5) + 1);
     date.month = int(m + 3 - 12 * floorDivide(m, 10));
-    date.year = int(100 * b + d - 4800 + floorDivide(m, 10));
+    date.year = int(100 * centuries + d - 4800 + floorDivide(m, 10));
     return date;
 }
 
-CalendarDate fromJulianDayNumber(long jdn) {
-    const long c = jdn + 32082;
-    const long d = floorDivide(4 * c + 3, 1461);
-    const long e = c - floorDivide(1461 * d, 4);
-    const long m = floorDivide(5 * e + 2, 153);
-    CalendarDate date;
-    date.day = int(e - floorDivide(153 * m + 2, 5) + 1);
-    date.month = int(m + 3 - 12 * floorDivide(m, 10));
-    date.year = int(d - 4800 + floorDivide(m, 10));
-    return date;
+CalendarDate fromGregorianDayNumber(long jdn) {
+    const long a = jdn + 32044;
+    const long b = floorDivide(4 * a + 3, 146097);
+    return fromMarchCycles(a - floorDivide(146097 * b, 4), b);
 }
+
+CalendarDate fromJulianDayNumber(long jdn) { return fromMarchCycles(jdn + 32082, 0); }
 
 int daysBeforeMonth(int month, bool leap) {
     int days = 0;
