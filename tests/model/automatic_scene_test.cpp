@@ -1,7 +1,9 @@
 // The automatic scene's choices on realistic files (tests/data/realistic_datasets.h), read through
 // the readers: the opacity window from the histogram, the camera by data kind, and a scene that
 // survives being written and read back.
+#include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <unistd.h>
@@ -78,6 +80,30 @@ TEST(AutomaticScene, GradientRangeIsFittedToTheChangePresent) {
     // Where a blob is, one time-step holds 100 and the others 0: the change is the whole range.
     EXPECT_DOUBLE_EQ(fitted.scene.gradientTstf.rangeLow, 0.0);
     EXPECT_DOUBLE_EQ(fitted.scene.gradientTstf.rangeHigh, 1.0);
+}
+
+// NRRD's `space` names the world axes' directions: LPS (DICOM's) shows the patient facing the
+// viewer, their left on the image's right.
+TEST(AutomaticScene, NrrdSpaceGivesTheAnatomicalOrientation) {
+    const auto file = sampleFolder() / "lps.nrrd";
+    {
+        std::ofstream out(file, std::ios::binary);
+        out << "NRRD0004\ntype: short\ndimension: 3\nspace: left-posterior-superior\nsizes: 4 5 6\n"
+               "space directions: (1,0,0) (0,1,0) (0,0,2)\nspace units: \"mm\" \"mm\" \"mm\"\nencoding: raw\n"
+               "endian: little\n\n";
+        for (int i = 0; i < 4 * 5 * 6; ++i) {
+            const std::int16_t value = std::int16_t(i);
+            out.write(reinterpret_cast<const char*>(&value), sizeof value);
+        }
+    }
+    const Series series = openSeries(file, ReadOptions{});
+    EXPECT_EQ(series.axes[0].direction, AxisDirection::Left);
+    EXPECT_EQ(series.axes[1].direction, AxisDirection::Posterior);
+    EXPECT_EQ(series.axes[2].unit, "mm");
+    const DisplayFrame frame = chooseDisplayFrame(automaticScene(series, file).scene.display, series);
+    EXPECT_EQ(frame.rotation * glm::dvec3(1, 0, 0), glm::dvec3(1, 0, 0));   // left -> the image's right
+    EXPECT_EQ(frame.rotation * glm::dvec3(0, 1, 0), glm::dvec3(0, 0, -1));  // posterior -> away from the viewer
+    EXPECT_EQ(frame.rotation * glm::dvec3(0, 0, 1), glm::dvec3(0, 1, 0));   // superior -> up
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 // fields fit together (sizes per axis, an endian for multi-byte types, a data file that exists).
 #include "nrrd_header.h"
 
+#include <algorithm>
+
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -140,6 +142,12 @@ void readDirections(const HeaderFields& fields, NrrdHeader& header) {
     for (std::size_t axis = 0; axis < parts.size(); ++axis)
         if (parts[axis] != "none") header.directions[axis] = fields.vector("space directions", parts[axis]);
     if (const auto origin = fields.get({"space origin"})) header.origin = fields.vector("space origin", *origin);
+    if (const auto space = fields.get({"space"})) header.space = *space;
+    if (const auto units = fields.get({"space units"}))
+        for (std::string unit : words(*units)) {
+            unit.erase(std::remove(unit.begin(), unit.end(), '"'), unit.end());
+            header.spaceUnits.push_back(unit);
+        }
 }
 
 void readDataLocation(const HeaderFields& fields, const RawHeader& raw, NrrdHeader& header) {

@@ -33,6 +33,8 @@ struct NrrdHeader {
     std::vector<double> spacings;    // per axis, NaN where not given
     std::vector<double> axisMins;    // per axis, NaN where not given
     std::vector<std::string> kinds;  // per axis, empty when not given
+    std::string space;               // "right-anterior-superior", "LPS", ...; empty when not given
+    std::vector<std::string> spaceUnits;  // per world axis ("mm"), empty when not given
 };
 
 // Reads and checks the header of a .nrrd (attached data) or .nhdr (detached data) file.

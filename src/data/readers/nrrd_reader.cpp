@@ -2,6 +2,8 @@
 #include "nrrd_reader.h"
 
 #include <algorithm>
+#include <array>
+#include <cctype>
 #include <cmath>
 #include <memory>
 #include <set>
@@ -106,6 +108,30 @@ double stepTime(const NrrdHeader& header, int timeAxis, std::size_t index) {
     return first + double(index) * (std::isnan(spacing) || spacing <= 0.0 ? 1.0 : spacing);
 }
 
+// The world axes' meaning from the `space` field (anatomical spaces only) and `space units`.
+std::array<SpatialAxis, 3> nrrdAxes(const NrrdHeader& header) {
+    using D = AxisDirection;
+    struct Space {
+        const char* name;
+        const char* abbreviation;
+        std::array<D, 3> directions;
+    };
+    static constexpr Space kSpaces[] = {
+        {"right-anterior-superior", "ras", {D::Right, D::Anterior, D::Superior}},
+        {"left-anterior-superior", "las", {D::Left, D::Anterior, D::Superior}},
+        {"left-posterior-superior", "lps", {D::Left, D::Posterior, D::Superior}},
+    };
+    std::string space;
+    for (char c : header.space) space += char(std::tolower(static_cast<unsigned char>(c)));
+    std::array<SpatialAxis, 3> axes;
+    for (const Space& known : kSpaces)
+        if (space == known.name || space == known.abbreviation)
+            for (std::size_t axis = 0; axis < 3; ++axis) axes[axis].direction = known.directions[axis];
+    if (header.spaceUnits.size() == 3)
+        for (std::size_t axis = 0; axis < 3; ++axis) axes[axis].unit = header.spaceUnits[axis];
+    return axes;
+}
+
 }  // namespace
 
 SourceSeries openNrrd(const std::filesystem::path& file) {
@@ -120,6 +146,7 @@ SourceSeries openNrrd(const std::filesystem::path& file) {
     source.name = file.stem().string();
     source.file = file;
     source.format = "NRRD";
+    source.axes = nrrdAxes(header);
     for (std::size_t index = 0; index < stepCount; ++index) {
         SourceStep step;
         step.time = stepTime(header, layout.timeAxis, index);
