@@ -43,25 +43,6 @@ std::optional<SignedAxis> displayAxisOf(AxisDirection direction) {
     return std::nullopt;
 }
 
-AxisDirection opposite(AxisDirection direction) {
-    switch (direction) {
-        case AxisDirection::East: return AxisDirection::West;
-        case AxisDirection::West: return AxisDirection::East;
-        case AxisDirection::North: return AxisDirection::South;
-        case AxisDirection::South: return AxisDirection::North;
-        case AxisDirection::Up: return AxisDirection::Down;
-        case AxisDirection::Down: return AxisDirection::Up;
-        case AxisDirection::Right: return AxisDirection::Left;
-        case AxisDirection::Left: return AxisDirection::Right;
-        case AxisDirection::Anterior: return AxisDirection::Posterior;
-        case AxisDirection::Posterior: return AxisDirection::Anterior;
-        case AxisDirection::Superior: return AxisDirection::Inferior;
-        case AxisDirection::Inferior: return AxisDirection::Superior;
-        case AxisDirection::Unknown: return AxisDirection::Unknown;
-    }
-    return AxisDirection::Unknown;
-}
-
 std::array<SignedAxis, 3> rowsOf(const glm::dmat3& rotation) {
     std::array<SignedAxis, 3> rows{};
     for (int display = 0; display < 3; ++display)

@@ -48,6 +48,25 @@ std::optional<AxisDirection> axisDirectionFromString(const std::string& name) {
     return std::nullopt;
 }
 
+AxisDirection opposite(AxisDirection direction) {
+    switch (direction) {
+        case AxisDirection::East: return AxisDirection::West;
+        case AxisDirection::West: return AxisDirection::East;
+        case AxisDirection::North: return AxisDirection::South;
+        case AxisDirection::South: return AxisDirection::North;
+        case AxisDirection::Up: return AxisDirection::Down;
+        case AxisDirection::Down: return AxisDirection::Up;
+        case AxisDirection::Right: return AxisDirection::Left;
+        case AxisDirection::Left: return AxisDirection::Right;
+        case AxisDirection::Anterior: return AxisDirection::Posterior;
+        case AxisDirection::Posterior: return AxisDirection::Anterior;
+        case AxisDirection::Superior: return AxisDirection::Inferior;
+        case AxisDirection::Inferior: return AxisDirection::Superior;
+        case AxisDirection::Unknown: return AxisDirection::Unknown;
+    }
+    return AxisDirection::Unknown;
+}
+
 std::optional<ValueType> valueTypeFromString(const std::string& name) {
     for (ValueType type : {ValueType::UInt8, ValueType::UInt16, ValueType::Float32, ValueType::Int8,
                            ValueType::Int16, ValueType::Int32, ValueType::Float64}) {

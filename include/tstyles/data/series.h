@@ -152,6 +152,8 @@ enum class AxisDirection {
 
 std::string toString(AxisDirection direction);  // "east", "anterior", "unknown", ...
 std::optional<AxisDirection> axisDirectionFromString(const std::string& name);
+// East for west, up for down, ...; unknown stays unknown.
+AxisDirection opposite(AxisDirection direction);
 
 // One world axis of a series as the file describes it.
 struct SpatialAxis {

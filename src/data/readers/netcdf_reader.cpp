@@ -126,15 +126,6 @@ AxisDirection cfDirection(const NetcdfFile& nc, int id, bool& down) {
     return vertical ? AxisDirection::Up : AxisDirection::Unknown;
 }
 
-AxisDirection opposite(AxisDirection direction) {
-    switch (direction) {
-        case AxisDirection::East: return AxisDirection::West;
-        case AxisDirection::North: return AxisDirection::South;
-        case AxisDirection::Up: return AxisDirection::Down;
-        default: return direction;
-    }
-}
-
 AxisFrame axisFrame(const NetcdfFile& nc, const NetcdfDimension& dimension, bool indexAxes) {
     AxisFrame frame;
     frame.meaning.name = dimension.name;
