@@ -9,6 +9,8 @@ packages=(
   libopenimageio-dev openimageio-tools glslang-tools
   libglfw3-dev libimgui-dev xvfb xauth
   libnetcdf-dev libnifti2-dev zlib1g-dev
+  libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
+  libfreetype-dev fonts-dejavu-core
 )
 
 missing=()
