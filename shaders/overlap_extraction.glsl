@@ -4,7 +4,9 @@
 // Per time-step layer: entry depth in red, the negated exit depth in green (entry_exit.frag).
 layout(binding = ENTRY_EXIT_UNIT) uniform sampler2DArray entryExitDepths;
 uniform int timeStepCount;
-uniform int soloTimeStep;  // >= 0: only this time-step takes part (plain playback)
+// The time-steps that take part, first and last inclusive: the scene's exposure, or one time-step
+// alone (plain playback).
+uniform ivec2 exposedSteps;
 
 #ifndef MAX_TIME_STEPS
 #define MAX_TIME_STEPS 16
@@ -26,15 +28,15 @@ vec2 extractVolumeOverlap(ivec2 pixel) {
     vec2 rayDepth = vec2(NO_ENTRY, NO_EXIT);
 #if PACKED_ALIGNED
     // Every time-step has the same proxy, hence the same interval: one list entry, the first (or
-    // the solo) time-step's, stands for all of them.
-    int firstStep = max(soloTimeStep, 0);
+    // the first exposed) time-step's, stands for all of them.
+    int firstStep = exposedSteps.x;
     int lastStep = firstStep + 1;
 #else
     int firstStep = 0;
     int lastStep = timeStepCount;
 #endif
     for (int step = firstStep; step < lastStep; ++step) {
-        if (soloTimeStep >= 0 && step != soloTimeStep) continue;
+        if (step < exposedSteps.x || step > exposedSteps.y) continue;
         int layer = timeSteps.steps[step].layer.x;
         vec2 depths = texelFetch(entryExitDepths, ivec3(pixel, layer), 0).rg;
         float exitDepth = -depths.y;

@@ -35,7 +35,7 @@ struct TemporalSample {
 #if NAIVE_RAYCASTER
 #define FOR_EACH_TIME_STEP_AT_SAMPLE                                                             \
     for (int step = 0; step < timeStepCount; ++step) {                                           \
-        if (soloTimeStep >= 0 && step != soloTimeStep) continue;                                 \
+        if (step < exposedSteps.x || step > exposedSteps.y) continue;                           \
         if (!insideGrid(step, position)) continue;
 #define END_FOR_EACH_TIME_STEP }
 #elif PACKED_ALIGNED
@@ -51,7 +51,7 @@ struct TemporalSample {
         for (int lane = 0; lane < 4; ++lane) {                                                   \
             int step = 4 * group + lane;                                                         \
             if (step >= timeStepCount) break;                                                    \
-            if (soloTimeStep >= 0 && step != soloTimeStep) continue;
+            if (step < exposedSteps.x || step > exposedSteps.y) continue;
 #define END_FOR_EACH_TIME_STEP }}
 #define DENSITY_AT_SAMPLE                                                                        \
     vec3 atlasPosition = vec3(0.0); /* no masks in a packed series */                            \

@@ -16,11 +16,13 @@
 
 namespace tstyles::cli {
 
-// Exit codes: 0 success, 2 bad input, 3 no usable OpenGL, 1 anything else.
+// Exit codes: 0 success, 2 bad input, 3 no usable OpenGL, 130 interrupted, 1 anything else.
 inline constexpr int kExitSuccess = 0;
 inline constexpr int kExitFailure = 1;
 inline constexpr int kExitBadInput = 2;
 inline constexpr int kExitNoOpenGl = 3;
+// Ctrl+C, as shells report a process ended by SIGINT (128 + 2).
+inline constexpr int kExitInterrupted = 130;
 
 // Options every GL-using command shares.
 struct GlOptions {
@@ -63,5 +65,6 @@ Command addBenchCommand(CLI::App& app);
 Command addViewCommand(CLI::App& app);
 Command addConvertCommand(CLI::App& app);
 Command addSceneCommand(CLI::App& app);
+Command addAnimateCommand(CLI::App& app);
 
 }  // namespace tstyles::cli

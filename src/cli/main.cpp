@@ -11,7 +11,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     const std::vector<cli::Command> commands = {cli::addRenderCommand(app), cli::addInfoCommand(app),
                                                 cli::addBenchCommand(app), cli::addViewCommand(app),
-                                                cli::addConvertCommand(app), cli::addSceneCommand(app)};
+                                                cli::addConvertCommand(app), cli::addSceneCommand(app),
+                                                cli::addAnimateCommand(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {

@@ -3,6 +3,7 @@
 #include <iostream>
 #include <memory>
 
+#include "animation_options.h"
 #include "commands.h"
 #include "scene_source.h"
 #include "tstyles/scene/automatic_scene.h"
@@ -24,6 +25,8 @@ struct RenderOptions {
     GlOptions gl;
     std::vector<std::filesystem::path> datasetFiles;  // --dataset: instead of the scene's dataset
     DatasetOptions dataset;
+    std::optional<int> frame;      // --frame K: the scene of frame K of the animation
+    AnimationOptions animation;    // the presets of `animate`, for --frame
 };
 
 // --style NAME=FILE: every colour node of the scene that uses style NAME reads FILE instead, so a
@@ -54,7 +57,18 @@ int runRender(const RenderOptions& options) {
     if (options.height) scene.height = *options.height;
     applySceneOverrides(scene, options.overrides);
     overrideStyles(scene, options.styleOverrides);
-    const SceneOnSeries fitted = fitSceneToSeries(std::move(scene), std::move(opened.series));
+    if (!options.frame && (hasPreset(options.animation) || options.animation.frames || options.animation.framesPerSecond))
+        throwInputError("", "--frame", "missing: the animation options of render choose the animation that --frame K "
+                                       "takes a frame of");
+    if (options.frame) {
+        scene.animation = animationFor(scene, opened.series.size(), options.animation, options.inputs.front().string());
+        if (*options.frame >= scene.animation.frames)
+            throwInputError("", "--frame", std::to_string(*options.frame) + " is past the animation's last frame (" +
+                                               std::to_string(scene.animation.frames - 1) + ")");
+    }
+    SceneOnSeries fitted = fitSceneToSeries(std::move(scene), std::move(opened.series));
+    if (options.frame) fitted.scene = sceneAtFrame(fitted.scene, *options.frame);
+    fitted.scene.exposure.stepsOf(fitted.series.size(), options.inputs.front());
     const Series& series = fitted.series;
     const auto context = createHeadlessContext(parseBackend(options.gl.backend), glDebugOutputRequested());
     Renderer renderer(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
@@ -100,6 +114,10 @@ Command addRenderCommand(CLI::App& app) {
                         "file, or several files of one series (repeated or comma-separated)")
         ->delimiter(',');
     addDatasetOptions(*command, options->dataset);
+    command->add_option("--frame", options->frame,
+                        "Render frame K of the scene's animation (or of the presets below), as `animate` draws it")
+        ->check(CLI::Range(0, 1000000));
+    addAnimationOptions(*command, options->animation);
     return {command, [options] { return runRender(*options); }};
 }
 

@@ -122,6 +122,9 @@ void Program::set(const char* name, const glm::vec3& value) const {
 void Program::set(const char* name, const glm::vec4& value) const {
     glProgramUniform4f(id(), location(name), value.x, value.y, value.z, value.w);
 }
+void Program::set(const char* name, const glm::ivec2& value) const {
+    glProgramUniform2i(id(), location(name), value.x, value.y);
+}
 void Program::set(const char* name, const glm::ivec3& value) const {
     glProgramUniform3i(id(), location(name), value.x, value.y, value.z);
 }

@@ -94,7 +94,7 @@ void Raycaster::draw(const RaycastParameters& parameters) {
     program.set("inverseViewProjection", parameters.inverseViewProjection);
     program.set("viewportSize", glm::vec2(parameters.viewport));
     program.set("timeStepCount", parameters.timeStepCount);
-    program.set("soloTimeStep", parameters.soloTimeStep);
+    program.set("exposedSteps", parameters.exposedSteps);
     program.set("inverseAtlasSize", 1.0f / glm::vec3(parameters.atlasSize));
     program.set("transferTableSize", float(kTransferTableSize));
     program.set("stepLength", parameters.stepLength);

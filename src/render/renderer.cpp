@@ -72,7 +72,8 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     parameters.finalMode = scene.finalMode;
     parameters.changeRange = glm::vec2(float(scene.gradientTstf.rangeLow), float(scene.gradientTstf.rangeHigh));
     parameters.collectStatistics = options.collectStatistics;
-    parameters.soloTimeStep = options.soloTimeStep.value_or(-1);
+    parameters.exposedSteps = options.soloTimeStep ? glm::ivec2(*options.soloTimeStep)
+                                                   : scene.exposure.stepsOf(gpuSeries_->timeStepCount());
     parameters.naive = options.naive;
     parameters.masks = gpuSeries_->hasMasks();
     parameters.allAffine = gpuSeries_->allAffine();

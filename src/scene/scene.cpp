@@ -4,6 +4,8 @@
 #include <array>
 #include <utility>
 
+#include "tstyles/core/errors.h"
+
 namespace tstyles {
 namespace {
 
@@ -61,5 +63,23 @@ std::optional<FinalMode> finalModeFromString(const std::string& name) {
 std::vector<std::string> temporalCompositorNames() { return allNames(compositorNames); }
 
 std::vector<std::string> finalModeNames() { return allNames(finalModeNameTable); }
+
+}  // namespace tstyles
+
+namespace tstyles {
+
+glm::ivec2 Exposure::stepsOf(std::size_t stepCount, const std::filesystem::path& sceneFile) const {
+    const int lastStep = int(stepCount) - 1;
+    const std::string available = " (the series has " + std::to_string(stepCount) + " time-steps, 0 to " +
+                                  std::to_string(lastStep) + ")";
+    if (first < 0 || first > lastStep)
+        throwInputError(sceneFile, "exposure.first", "is " + std::to_string(first) + available);
+    const int end = last.value_or(lastStep);
+    if (end > lastStep) throwInputError(sceneFile, "exposure.last", "is " + std::to_string(end) + available);
+    if (end < first)
+        throwInputError(sceneFile, "exposure.last",
+                        "is " + std::to_string(end) + ", before exposure.first (" + std::to_string(first) + ")");
+    return {first, end};
+}
 
 }  // namespace tstyles

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "json_fields.h"
+#include "scene_sections.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/scene/scene_file.h"
 #include "tstyles/scene/style_reference.h"
@@ -121,7 +122,7 @@ void readTstf(const JsonFieldReader& fields, const json& value, Scene& scene) {
     if (const json* index = JsonFieldReader::member(value, "index")) {
         const std::string indexPath = childPath(path, "index");
         fields.expectObject(*index, indexPath, {"opacity", "color"});
-        readCurve(fields, *index, indexPath, nonNegative, scene.indexTstf.curve);
+        readCurve(fields, *index, indexPath, anyFinite, scene.indexTstf.curve);
     }
     if (const json* gradient = JsonFieldReader::member(value, "gradient")) {
         const std::string gradientPath = childPath(path, "gradient");
@@ -163,6 +164,20 @@ void readRaycast(const JsonFieldReader& fields, const json& value, Scene& scene)
         scene.raycast.termination =
             fields.numberIn(*termination, childPath(path, "termination"), {0.0, 1.0, false, true});
     }
+}
+
+// "exposure": {"first": 2, "last": 5}; whether they fit the series is checked when the two meet.
+void readExposure(const JsonFieldReader& fields, const json& value, Exposure& exposure) {
+    const std::string path = "exposure";
+    fields.expectObject(value, path, {"first", "last"});
+    constexpr int largestStep = 1000000;
+    if (const json* first = JsonFieldReader::member(value, "first"))
+        exposure.first = fields.integerIn(*first, childPath(path, "first"), 0, largestStep);
+    if (const json* last = JsonFieldReader::member(value, "last"))
+        exposure.last = fields.integerIn(*last, childPath(path, "last"), 0, largestStep);
+    if (exposure.last && *exposure.last < exposure.first)
+        fields.fail(childPath(path, "last"), "is " + std::to_string(*exposure.last) + ", before exposure.first (" +
+                                                 std::to_string(exposure.first) + ")");
 }
 
 void readStf(const JsonFieldReader& fields, const json& value, Scene& scene) {
@@ -323,7 +338,7 @@ Scene parseScene(const std::string& text, const std::filesystem::path& origin) {
     const json root = parseJson(text, origin);
     fields.expectObject(root, "",
                         {"dataset", "image", "camera", "raycast", "stf", "compositor", "tstf", "final", "orientation",
-                         "aspect", "vertical_exaggeration"});
+                         "aspect", "vertical_exaggeration", "exposure", "annotations", "animation"});
 
     Scene scene;
     scene.dataset = readDataset(fields, root, origin);
@@ -338,10 +353,16 @@ Scene parseScene(const std::string& text, const std::filesystem::path& origin) {
             *compositor, "compositor", temporalCompositorFromString, temporalCompositorNames());
     }
     if (const json* tstf = JsonFieldReader::member(root, "tstf")) readTstf(fields, *tstf, scene);
+    if (const json* exposure = JsonFieldReader::member(root, "exposure")) readExposure(fields, *exposure, scene.exposure);
     if (const json* finalMode = JsonFieldReader::member(root, "final")) {
         scene.finalMode = fields.name<FinalMode>(*finalMode, "final", finalModeFromString, finalModeNames());
     }
+    if (const json* annotations = JsonFieldReader::member(root, "annotations"))
+        scene.annotations = readAnnotations(fields, *annotations);
     resolveStyleFiles(scene, origin);
+    // Last: its keys are checked against the scene read so far.
+    if (const json* animation = JsonFieldReader::member(root, "animation"))
+        scene.animation = readAnimation(fields, *animation, scene, origin);
     return scene;
 }
 

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scene_sections.h"
 #include "tstyles/core/atomic_file.h"
 #include "tstyles/scene/scene_file.h"
 #include "tstyles/scene/style_reference.h"
@@ -170,6 +171,13 @@ std::string sceneToJson(const Scene& scene, const std::filesystem::path& sceneFo
     tstf["gradient"] = gradient;
 
     root["final"] = toString(scene.finalMode);
+    if (scene.exposure != Exposure{}) {
+        ordered_json& exposure = root["exposure"];
+        exposure["first"] = scene.exposure.first;
+        if (scene.exposure.last) exposure["last"] = *scene.exposure.last;
+    }
+    if (scene.annotations != Annotations{}) root["annotations"] = annotationsJson(scene.annotations);
+    if (!scene.animation.empty()) root["animation"] = animationJson(scene.animation);
     return layOut(root, 0) + "\n";
 }
 

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <tuple>
 
@@ -29,7 +30,8 @@ struct RaycastParameters {
     FinalMode finalMode = FinalMode::Modulate;
     glm::vec2 changeRange{0.0f, 1.0f};
     bool collectStatistics = false;
-    int soloTimeStep = -1;  // -1: every time-step takes part
+    // The time-steps that take part, first and last inclusive (the scene's exposure, or a solo step).
+    glm::ivec2 exposedSteps{0, std::numeric_limits<int>::max()};
     bool naive = false;     // the benchmark's baseline raycaster
     bool masks = false;     // whether any time-step has a segmentation mask
     bool allAffine = false; // whether every time-step's world -> voxel map is affine

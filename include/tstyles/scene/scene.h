@@ -9,6 +9,8 @@
 #include <glm/glm.hpp>
 
 #include "tstyles/data/display_frame.h"
+#include "tstyles/scene/animation.h"
+#include "tstyles/scene/annotations.h"
 #include "tstyles/scene/camera.h"
 #include "tstyles/scene/transfer_function.h"
 
@@ -40,6 +42,17 @@ struct RaycastSettings {
     bool operator==(const RaycastSettings&) const = default;
 };
 
+// The time-steps that take part in the image, first and last inclusive: the paper's multiple
+// exposure, narrowed or slid by an animation. No `last` means the series' last time-step.
+struct Exposure {
+    int first = 0;
+    std::optional<int> last;
+    bool operator==(const Exposure&) const = default;
+    // [first, last] on a series of `stepCount` time-steps; an InputError naming "exposure.first" or
+    // "exposure.last" of `sceneFile` where they do not fit it.
+    glm::ivec2 stepsOf(std::size_t stepCount, const std::filesystem::path& sceneFile = {}) const;
+};
+
 struct Scene {
     // The series manifest. A file may name it relative to the scene file's folder; a loaded scene
     // holds the resolved absolute, normalized path. A relative path in memory means relative to the
@@ -54,10 +67,13 @@ struct Scene {
     glm::dvec4 background{0.0, 0.0, 0.0, 1.0};
     RaycastSettings raycast;
     Stf stf = defaultStf();
+    Exposure exposure;
     TemporalCompositor compositor = TemporalCompositor::MaxIntensityProjection;
     IndexTstf indexTstf = defaultIndexTstf();
     GradientTstf gradientTstf = defaultGradientTstf();
     FinalMode finalMode = FinalMode::Modulate;
+    Annotations annotations;
+    Animation animation;
     bool operator==(const Scene&) const = default;
 };
 

@@ -1,0 +1,31 @@
+// The command-line presets of `tstyles animate` (--sweep-focus, --exposure, --playback, --orbit)
+// and the movie settings (--frames, --fps): turned into the scene's animation section.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "tstyles/scene/scene.h"
+
+namespace tstyles::cli {
+
+struct AnimationOptions {
+    std::optional<int> sweepFocusGroup;   // --sweep-focus GROUP (index TSTF)
+    bool smooth = false;                  // --smooth: the focus glides instead of stepping
+    std::optional<std::string> exposure;  // --exposure grow|window:K
+    bool playback = false;                // --playback
+    std::optional<double> orbitDegrees;   // --orbit DEGREES
+    std::optional<int> frames;            // --frames
+    std::optional<int> framesPerSecond;   // --fps
+};
+void addAnimationOptions(CLI::App& command, AnimationOptions& options);
+bool hasPreset(const AnimationOptions& options);
+
+// The scene's animation with the presets' tracks added, frames and rate as the options say. A
+// scene with no animation and no preset is an InputError naming `sceneName`.
+Animation animationFor(const Scene& scene, std::size_t stepCount, const AnimationOptions& options,
+                       const std::string& sceneName);
+
+}  // namespace tstyles::cli

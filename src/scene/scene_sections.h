@@ -1,0 +1,22 @@
+// The scene file's sections that live in their own files (animation, annotations), shared by the
+// reader and the writer. Private to src/scene.
+#pragma once
+
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "json_fields.h"
+#include "tstyles/scene/scene.h"
+
+namespace tstyles {
+
+// `scene` is what was read of the file before: each key is checked against it.
+Animation readAnimation(const JsonFieldReader& fields, const nlohmann::json& value, const Scene& scene,
+                        const std::filesystem::path& origin);
+nlohmann::ordered_json animationJson(const Animation& animation);
+
+Annotations readAnnotations(const JsonFieldReader& fields, const nlohmann::json& value);
+nlohmann::ordered_json annotationsJson(const Annotations& annotations);
+
+}  // namespace tstyles
