@@ -1,0 +1,121 @@
+// `tstyles animate SCENE -o OUT`: an animation sequence rendered headless into a movie (MP4, WebM,
+// GIF) or a folder of numbered frames, with progress, and nothing half-written on error or Ctrl+C.
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+#include <memory>
+
+#include "animation_options.h"
+#include "commands.h"
+#include "frame_sink.h"
+#include "interrupt_guard.h"
+#include "progress_bar.h"
+#include "scene_source.h"
+#include "tstyles/core/errors.h"
+#include "tstyles/render/renderer.h"
+#include "tstyles/scene/automatic_scene.h"
+
+namespace tstyles::cli {
+namespace {
+
+struct AnimateOptions {
+    std::vector<std::filesystem::path> inputs;
+    std::filesystem::path output;
+    std::optional<int> width;
+    std::optional<int> height;
+    AnimationOptions animation;
+    SceneOverrides overrides;
+    GlOptions gl;
+    DatasetOptions dataset;
+};
+
+// Every frame's scene, made before anything is rendered: a key that leaves the scene's allowed
+// values, or an exposure the series cannot give, fails before any work.
+std::vector<Scene> frameScenes(const Scene& scene, std::size_t stepCount, const std::filesystem::path& input) {
+    std::vector<Scene> scenes;
+    scenes.reserve(std::size_t(scene.animation.frames));
+    for (int frame = 0; frame < scene.animation.frames; ++frame) {
+        Scene atFrame = sceneAtFrame(scene, frame);
+        try {
+            atFrame.exposure.stepsOf(stepCount);
+        } catch (const InputError& error) {
+            throwInputError(input, "animation", "at frame " + std::to_string(frame) + ": " + error.what());
+        }
+        scenes.push_back(std::move(atFrame));
+    }
+    return scenes;
+}
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
+
+int runAnimate(const AnimateOptions& options) {
+    SceneAndSeries opened = openSceneOrDataset(options.inputs, {}, options.dataset);
+    Scene& scene = opened.scene;
+    if (options.width) scene.width = *options.width;
+    if (options.height) scene.height = *options.height;
+    applySceneOverrides(scene, options.overrides);
+    const std::string sceneName = options.inputs.front().string();
+    scene.animation = animationFor(scene, opened.series.size(), options.animation, sceneName);
+    const MovieSettings movie{scene.width, scene.height, scene.animation.framesPerSecond};
+    requireWritableFrameOutput(options.output, movie);
+
+    const SceneOnSeries fitted = fitSceneToSeries(std::move(scene), std::move(opened.series));
+    const std::vector<Scene> scenes = frameScenes(fitted.scene, fitted.series.size(), options.inputs.front());
+
+    const auto context = createHeadlessContext(parseBackend(options.gl.backend), glDebugOutputRequested());
+    Renderer renderer(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
+    renderer.setSeries(fitted.series);
+    std::unique_ptr<FrameSink> sink = openFrameSink(options.output, movie);
+    const InterruptGuard interrupt;
+    ProgressBar progress("rendering frame", int(scenes.size()));
+    std::vector<double> milliseconds;
+    for (std::size_t frame = 0; frame < scenes.size(); ++frame) {
+        if (interrupt.interrupted()) {
+            progress.finish();
+            std::cerr << "tstyles: interrupted; " << options.output.string() << " was not written\n";
+            return kExitInterrupted;
+        }
+        progress.update(int(frame));
+        const auto start = std::chrono::steady_clock::now();
+        sink->add(renderImage(renderer, scenes[frame], fitted.framed, fitted.series.worldBounds()));
+        milliseconds.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    }
+    progress.update(int(scenes.size()));
+    progress.finish();
+    sink->finish();
+    std::cout << "wrote " << options.output.string() << " (" << sink->description() << ", " << movie.width << "x"
+              << movie.height << " at " << movie.framesPerSecond << " fps; median " << median(milliseconds)
+              << " ms per frame; " << context->description() << ")\n";
+    return kExitSuccess;
+}
+
+}  // namespace
+
+Command addAnimateCommand(CLI::App& app) {
+    auto options = std::make_shared<AnimateOptions>();
+    CLI::App* command = app.add_subcommand(
+        "animate", "Render a scene's animation (or a preset) headless to a movie (MP4, WebM, GIF) or a frames folder");
+    command
+        ->add_option("input", options->inputs,
+                     "A scene file (JSON) with an animation section or used with a preset; or a dataset, drawn "
+                     "with the automatic scene")
+        ->required();
+    command
+        ->add_option("-o,--output", options->output,
+                     "out.mp4, out.webm, out.gif, or a folder (ending in /) for frame-0000.png, ...")
+        ->required();
+    command->add_option("--width", options->width, "Frame width (overrides the scene)")->check(CLI::Range(1, 16384));
+    command->add_option("--height", options->height, "Frame height (overrides the scene)")->check(CLI::Range(1, 16384));
+    addAnimationOptions(*command, options->animation);
+    addSceneOverrides(*command, options->overrides);
+    addGlOptions(*command, options->gl);
+    addDatasetOptions(*command, options->dataset);
+    return {command, [options] { return runAnimate(*options); }};
+}
+
+}  // namespace tstyles::cli

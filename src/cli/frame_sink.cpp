@@ -1,0 +1,106 @@
+// Movie files and frame folders, written so that nothing half-made is left behind.
+#include "frame_sink.h"
+
+#include <cstdio>
+#include <system_error>
+
+#include <unistd.h>
+
+#include "tstyles/core/errors.h"
+#include "tstyles/image/image_io.h"
+#include "tstyles/video/video_file.h"
+
+namespace tstyles::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool holdsOnlyFrames(const fs::path& folder) {
+    for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
+        const std::string name = entry.path().filename().string();
+        if (!entry.is_regular_file() || name.rfind("frame-", 0) != 0 || entry.path().extension() != ".png") return false;
+    }
+    return true;
+}
+
+// Frames go into a hidden sibling folder, which replaces the target when the last one is in.
+class FolderSink final : public FrameSink {
+public:
+    explicit FolderSink(fs::path target)
+        : target_(fs::absolute(target).lexically_normal()),
+          partial_(target_.parent_path() / ("." + target_.filename().string() + ".partial-" + std::to_string(getpid()))) {
+        std::error_code error;
+        fs::remove_all(partial_, error);
+        if (!fs::create_directory(partial_, error))
+            throwInputError(target_, "", "cannot make a folder beside it for the frames: " + error.message());
+    }
+    ~FolderSink() override {
+        std::error_code ignored;
+        if (!finished_) fs::remove_all(partial_, ignored);
+    }
+    void add(const Image& frame) override { writeImage(frame, partial_ / frameFileName(count_++)); }
+    void finish() override {
+        std::error_code error;
+        if (fs::exists(target_)) fs::remove_all(target_, error);
+        if (error) throwInputError(target_, "", "cannot replace the earlier frames: " + error.message());
+        fs::rename(partial_, target_, error);
+        if (error) throwInputError(target_, "", "cannot move the frames into place: " + error.message());
+        finished_ = true;
+    }
+    std::string description() const override { return std::to_string(count_) + " PNG frames"; }
+
+private:
+    fs::path target_;
+    fs::path partial_;
+    int count_ = 0;
+    bool finished_ = false;
+};
+
+class MovieSink final : public FrameSink {
+public:
+    MovieSink(const fs::path& target, const MovieSettings& settings)
+        : writer_(target, VideoSettings{settings.width, settings.height, settings.framesPerSecond}) {}
+    void add(const Image& frame) override { writer_.addFrame(frame); }
+    void finish() override { writer_.finish(); }
+    std::string description() const override {
+        return std::to_string(writer_.framesWritten()) + " frames, " + writer_.codecName();
+    }
+
+private:
+    VideoWriter writer_;
+};
+
+}  // namespace
+
+std::string frameFileName(int index) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame-%04d.png", index);
+    return name;
+}
+
+bool isFrameFolder(const fs::path& output) {
+    const std::string text = output.string();
+    return (!text.empty() && (text.back() == '/' || text.back() == fs::path::preferred_separator)) ||
+           fs::is_directory(output);
+}
+
+void requireWritableFrameOutput(const fs::path& output, const MovieSettings& settings) {
+    if (!isFrameFolder(output)) {
+        requireWritableVideoPath(output, VideoSettings{settings.width, settings.height, settings.framesPerSecond});
+        return;
+    }
+    const fs::path folder = fs::absolute(output).lexically_normal();
+    const fs::path target = folder.has_filename() ? folder : folder.parent_path();
+    if (!fs::is_directory(target.parent_path()))
+        throwInputError(output, "", "the folder it would go into does not exist");
+    if (fs::exists(target) && !holdsOnlyFrames(target))
+        throwInputError(output, "", "holds files other than frame-NNNN.png; give an empty or new folder");
+}
+
+std::unique_ptr<FrameSink> openFrameSink(const fs::path& output, const MovieSettings& settings) {
+    if (!isFrameFolder(output)) return std::make_unique<MovieSink>(output, settings);
+    const fs::path folder = fs::absolute(output).lexically_normal();
+    return std::make_unique<FolderSink>(folder.has_filename() ? folder : folder.parent_path());
+}
+
+}  // namespace tstyles::cli
