@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "animation_options.h"
+#include "annotated_rendering.h"
 #include "commands.h"
 #include "frame_sink.h"
 #include "interrupt_guard.h"
@@ -24,6 +25,7 @@ struct AnimateOptions {
     std::optional<int> width;
     std::optional<int> height;
     AnimationOptions animation;
+    AnnotationOptions annotations;
     SceneOverrides overrides;
     GlOptions gl;
     DatasetOptions dataset;
@@ -58,6 +60,7 @@ int runAnimate(const AnimateOptions& options) {
     if (options.width) scene.width = *options.width;
     if (options.height) scene.height = *options.height;
     applySceneOverrides(scene, options.overrides);
+    applyAnnotationOptions(scene, options.annotations);
     const std::string sceneName = options.inputs.front().string();
     scene.animation = animationFor(scene, opened.series.size(), options.animation, sceneName);
     const MovieSettings movie{scene.width, scene.height, scene.animation.framesPerSecond};
@@ -69,6 +72,7 @@ int runAnimate(const AnimateOptions& options) {
     const auto context = createHeadlessContext(parseBackend(options.gl.backend), glDebugOutputRequested());
     Renderer renderer(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
     renderer.setSeries(fitted.series);
+    AnnotatedRendering rendering(renderer, fitted);
     std::unique_ptr<FrameSink> sink = openFrameSink(options.output, movie);
     const InterruptGuard interrupt;
     ProgressBar progress("rendering frame", int(scenes.size()));
@@ -81,7 +85,7 @@ int runAnimate(const AnimateOptions& options) {
         }
         progress.update(int(frame));
         const auto start = std::chrono::steady_clock::now();
-        sink->add(renderImage(renderer, scenes[frame], fitted.framed, fitted.series.worldBounds()));
+        sink->add(rendering.render(scenes[frame]));
         milliseconds.push_back(
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     }
@@ -112,6 +116,7 @@ Command addAnimateCommand(CLI::App& app) {
     command->add_option("--width", options->width, "Frame width (overrides the scene)")->check(CLI::Range(1, 16384));
     command->add_option("--height", options->height, "Frame height (overrides the scene)")->check(CLI::Range(1, 16384));
     addAnimationOptions(*command, options->animation);
+    addAnnotationOptions(*command, options->annotations);
     addSceneOverrides(*command, options->overrides);
     addGlOptions(*command, options->gl);
     addDatasetOptions(*command, options->dataset);

@@ -3,6 +3,7 @@
 #include <iostream>
 #include <memory>
 
+#include "annotated_rendering.h"
 #include "animation_options.h"
 #include "commands.h"
 #include "scene_source.h"
@@ -27,6 +28,7 @@ struct RenderOptions {
     DatasetOptions dataset;
     std::optional<int> frame;      // --frame K: the scene of frame K of the animation
     AnimationOptions animation;    // the presets of `animate`, for --frame
+    AnnotationOptions annotations;
 };
 
 // --style NAME=FILE: every colour node of the scene that uses style NAME reads FILE instead, so a
@@ -57,6 +59,7 @@ int runRender(const RenderOptions& options) {
     if (options.height) scene.height = *options.height;
     applySceneOverrides(scene, options.overrides);
     overrideStyles(scene, options.styleOverrides);
+    applyAnnotationOptions(scene, options.annotations);
     if (!options.frame && (hasPreset(options.animation) || options.animation.frames || options.animation.framesPerSecond))
         throwInputError("", "--frame", "missing: the animation options of render choose the animation that --frame K "
                                        "takes a frame of");
@@ -74,7 +77,8 @@ int runRender(const RenderOptions& options) {
     Renderer renderer(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
     renderer.setSeries(series);
     const auto start = std::chrono::steady_clock::now();
-    const Image image = renderImage(renderer, fitted.scene, fitted.framed, series.worldBounds());
+    AnnotatedRendering rendering(renderer, fitted);
+    const Image image = rendering.render(fitted.scene);
     const double milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     writeImage(image, options.output);
@@ -118,6 +122,7 @@ Command addRenderCommand(CLI::App& app) {
                         "Render frame K of the scene's animation (or of the presets below), as `animate` draws it")
         ->check(CLI::Range(0, 1000000));
     addAnimationOptions(*command, options->animation);
+    addAnnotationOptions(*command, options->annotations);
     return {command, [options] { return runRender(*options); }};
 }
 

@@ -171,6 +171,8 @@ struct Series {
     std::filesystem::path manifestPath;
     // The raw values mapped to density 0 and 1.
     std::array<double, 2> valueRange{0.0, 1.0};
+    // The values' unit as the file spells it ("K", "m s-1"); empty: unknown. For legends.
+    std::string valueUnit;
     std::vector<TimeStep> steps;
     // How the GPU stores the densities (ReadOptions::precision, --precision): R8, R16 or R32F
     // (RG pairs with missing values); the reader's memory check assumes the same.

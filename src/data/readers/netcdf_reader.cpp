@@ -252,6 +252,7 @@ SourceSeries openNetcdf(const std::filesystem::path& file, const ReadOptions& op
     source.file = file;
     source.format = nc->formatName();
     source.time = timeAxisOf(*nc, variable, timeDimension);
+    source.valueUnit = nc->textAttribute(variable.id, "units").value_or("");
     for (double time : stepTimes(*nc, variable, timeDimension)) {
         source.steps.push_back({time, grid, placement, type, file});
     }

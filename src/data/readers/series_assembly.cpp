@@ -167,6 +167,7 @@ Series assembleRawSeries(const SourceSeries& source, const ReadOptions& options)
     series.manifestPath = source.file;
     series.axes = source.axes;
     series.time = source.time;
+    series.valueUnit = source.valueUnit;
     for (std::size_t kept = 0; kept < plan.steps.size(); ++kept) {
         const SourceStep& from = source.steps[plan.steps[kept]];
         TimeStep step;

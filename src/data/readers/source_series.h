@@ -30,6 +30,7 @@ struct SourceSeries {
     // What world x, y and z mean, as far as the file says (Series::axes).
     std::array<SpatialAxis, 3> axes;
     TimeAxis time;  // Series::time
+    std::string valueUnit;  // Series::valueUnit
     // The raw values of a time-step, x fastest, after the file's scale and offset; declared missing
     // values are missingDensity() (NaN). Undeclared NaN or Inf is an InputError naming the file.
     std::function<std::vector<float>(std::size_t step)> readStep;

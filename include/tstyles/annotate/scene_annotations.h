@@ -1,0 +1,44 @@
+// A scene's annotations drawn onto its rendered image (docs/annotations.md): the legend of the
+// transfer functions in use (time-step swatches with the data's times, a colour bar of change in
+// the data's units, the STF's colour and opacity over the data values), a title, a caption, the
+// series' box with labelled ticks and a scale bar. The CLI, `animate` and the viewer all draw
+// through here, so a saved scene renders the same annotated picture everywhere.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "tstyles/annotate/canvas.h"
+#include "tstyles/data/display_frame.h"
+#include "tstyles/data/series.h"
+#include "tstyles/scene/camera.h"
+#include "tstyles/scene/scene.h"
+
+namespace tstyles {
+
+// What the annotations drew where, for tests and for the viewer's hit-testing.
+struct AnnotationLayout {
+    std::vector<Rect> panels;       // every legend, title and caption panel
+    std::vector<Rect> stepSwatches;  // the index TSTF legend's swatch of each exposed time-step
+    std::vector<int> swatchSteps;    // the time-step of each swatch
+    std::vector<std::string> swatchLabels;
+};
+
+// `series` is the display series (fitSceneToSeries), `frame` the display frame it was turned by:
+// ticks and the scale bar are given in the file's units.
+AnnotationLayout drawAnnotations(Image& image, const Scene& scene, const Series& series, const DisplayFrame& frame,
+                                 const View& view, const Font& font);
+
+// The text size for an image: the scene's font size scaled from a 512-pixel-high image.
+int annotationPixelSize(const Scene& scene, int imageHeight);
+
+// Labels of the series' time-steps: dates or times with units where the file gives them, else
+// "time-step i".
+std::vector<std::string> timeStepLabels(const Series& series);
+
+// 1, 2 or 5 times a power of ten: tick spacing for about `count` ticks over `span`.
+double niceStep(double span, int count);
+// "12.5", "0.003", "1.2e+06": short labels for ticks.
+std::string tickLabel(double value, double step);
+
+}  // namespace tstyles
