@@ -44,15 +44,38 @@ std::vector<bool> focusSteps(const Scene& scene, glm::ivec2 steps) {
 
 // The time-step's colour, filled as strongly as it is opaque (a faint ghost shows as a faint fill
 // inside its outline), so that the swatches read like the picture.
-void drawSwatch(Canvas& canvas, const Rect& swatch, const ColorOpacity& value) {
+void drawSwatch(Canvas& canvas, const Rect& swatch, const ColorOpacity& value, const Image* style = nullptr) {
     const glm::vec3 colour(value.color);
+    if (style && style->width > 0) {
+        // The lit sphere, tinted, as strong as the time-step is opaque (nearest texel: swatches are small).
+        const float strength = 0.2f + 0.8f * float(std::clamp(value.opacity, 0.0, 1.0));
+        for (int y = int(swatch.y); y < int(std::ceil(swatch.bottom())); ++y)
+            for (int x = int(swatch.x); x < int(std::ceil(swatch.right())); ++x) {
+                const int u = std::clamp(int((x + 0.5 - swatch.x) / swatch.width * style->width), 0, style->width - 1);
+                const int v = std::clamp(int((y + 0.5 - swatch.y) / swatch.height * style->height), 0, style->height - 1);
+                const glm::vec4 texel = style->at(u, v);
+                if (texel.a <= 0.0f) continue;
+                canvas.blend(x, y, texel.a * strength, glm::vec4(colour * glm::vec3(texel) / texel.a, 1.0f));
+            }
+        return;
+    }
     canvas.fillRect(swatch, glm::vec4(colour, 0.2f + 0.8f * float(std::clamp(value.opacity, 0.0, 1.0))));
     canvas.strokeRect(swatch, 1.0, glm::vec4(colour, 1.0f));
 }
 
+// The style of the index TSTF's colour node nearest to the time-step (styles blend between nodes);
+// null for a flat node or without style images.
+const Image* styleOfStep(const Scene& scene, int step, const StyleImages& styles) {
+    if (!styles || scene.indexTstf.curve.color.empty()) return nullptr;
+    const auto nearest = std::min_element(
+        scene.indexTstf.curve.color.begin(), scene.indexTstf.curve.color.end(),
+        [step](const ColorNode& a, const ColorNode& b) { return std::abs(a.at - step) < std::abs(b.at - step); });
+    return nearest->style.empty() ? nullptr : styles(nearest->style);
+}
+
 // One row per time-step: swatch and label, the focus marked with an outline and a bright label.
 void drawSwatchRows(PanelStack& panels, const Scene& scene, glm::ivec2 steps, const std::vector<std::string>& labels,
-                    AnnotationLayout& layout) {
+                    const StyleImages& styles, AnnotationLayout& layout) {
     const PanelMetrics& m = panels.metrics();
     const std::vector<bool> focus = focusSteps(scene, steps);
     const int count = steps.y - steps.x + 1;
@@ -65,7 +88,7 @@ void drawSwatchRows(PanelStack& panels, const Scene& scene, glm::ivec2 steps, co
         const int step = steps.x + i;
         const double top = panel.y + m.pad + m.row * (i + 1);
         const Rect swatch{panel.x + m.pad, top + 0.5 * (m.row - m.swatch), m.swatch, m.swatch};
-        drawSwatch(panels.canvas(), swatch, scene.indexTstf.atStep(step));
+        drawSwatch(panels.canvas(), swatch, scene.indexTstf.atStep(step), styleOfStep(scene, step, styles));
         if (focus[std::size_t(i)])
             panels.canvas().strokeRect({swatch.x - 2, swatch.y - 2, swatch.width + 4, swatch.height + 4}, 1.0, kFocusMark);
         panels.canvas().drawText(panels.font(), labels[std::size_t(step)], {swatch.right() + m.gap, top + m.baseline},
@@ -79,7 +102,7 @@ void drawSwatchRows(PanelStack& panels, const Scene& scene, glm::ivec2 steps, co
 
 // Too many time-steps for rows: a strip of cells, labelled at both ends and at the focus.
 void drawSwatchStrip(PanelStack& panels, const Scene& scene, glm::ivec2 steps, const std::vector<std::string>& labels,
-                     AnnotationLayout& layout) {
+                     const StyleImages& styles, AnnotationLayout& layout) {
     const PanelMetrics& m = panels.metrics();
     const std::vector<bool> focus = focusSteps(scene, steps);
     const int count = steps.y - steps.x + 1;
@@ -91,7 +114,7 @@ void drawSwatchStrip(PanelStack& panels, const Scene& scene, glm::ivec2 steps, c
     const double stripTop = panel.y + m.pad + m.row + 0.5 * (m.row - m.swatch);
     for (int i = 0; i < count; ++i) {
         const Rect swatch{panel.x + m.pad + i * cell, stripTop, cell, m.swatch};
-        drawSwatch(canvas, swatch, scene.indexTstf.atStep(steps.x + i));
+        drawSwatch(canvas, swatch, scene.indexTstf.atStep(steps.x + i), styleOfStep(scene, steps.x + i, styles));
         if (focus[std::size_t(i)]) canvas.fillRect({swatch.x, stripTop - 3, cell, 2}, kFocusMark);
         layout.stepSwatches.push_back(swatch);
         layout.swatchSteps.push_back(steps.x + i);
@@ -200,7 +223,7 @@ std::vector<std::string> timeStepLabels(const Series& series) {
 }
 
 AnnotationLayout drawAnnotations(Image& image, const Scene& scene, const Series& series, const DisplayFrame& frame,
-                                 const View& view, const Font& font) {
+                                 const View& view, const Font& font, const StyleImages& styles) {
     AnnotationLayout layout;
     if (!scene.annotations.any() || series.size() == 0) return layout;
     Canvas canvas(image);
@@ -214,8 +237,8 @@ AnnotationLayout drawAnnotations(Image& image, const Scene& scene, const Series&
         const PanelMetrics& m = panels.metrics();
         const int rowsThatFit = int((0.55 * image.height - 2 * m.pad) / m.row) - 1;
         if (indexTstfShown(scene)) {
-            if (steps.y - steps.x + 1 <= rowsThatFit) drawSwatchRows(panels, scene, steps, labels, layout);
-            else drawSwatchStrip(panels, scene, steps, labels, layout);
+            if (steps.y - steps.x + 1 <= rowsThatFit) drawSwatchRows(panels, scene, steps, labels, styles, layout);
+            else drawSwatchStrip(panels, scene, steps, labels, styles, layout);
         }
         const double valueSpan = series.valueRange[1] - series.valueRange[0];
         if (gradientTstfShown(scene))

@@ -11,7 +11,8 @@ Image AnnotatedRendering::render(const Scene& scene) {
     if (!scene.annotations.any()) return image;
     if (!font_) font_ = Font::openDefault();
     const View view = resolveView(scene.camera, fitted_.framed, all, scene.width, scene.height);
-    drawAnnotations(image, scene, fitted_.series, fitted_.frame, view, *font_);
+    drawAnnotations(image, scene, fitted_.series, fitted_.frame, view, *font_,
+                    [this](const std::string& style) { return &styles_.image(style); });
     return image;
 }
 

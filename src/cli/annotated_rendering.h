@@ -9,6 +9,7 @@
 #include "tstyles/annotate/font.h"
 #include "tstyles/image/image.h"
 #include "tstyles/render/renderer.h"
+#include "tstyles/render/style_library.h"
 #include "tstyles/scene/automatic_scene.h"
 
 namespace tstyles::cli {
@@ -22,6 +23,7 @@ private:
     Renderer& renderer_;
     const SceneOnSeries& fitted_;
     std::optional<Font> font_;
+    StyleLibrary styles_;  // the lit spheres of styled swatches
 };
 
 // --legend and --annotate: switch the scene's annotations on from the command line.

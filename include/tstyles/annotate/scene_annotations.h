@@ -5,6 +5,7 @@
 // through here, so a saved scene renders the same annotated picture everywhere.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -24,10 +25,14 @@ struct AnnotationLayout {
     std::vector<std::string> swatchLabels;
 };
 
+// A style's lit-sphere image by reference (the renderer's StyleLibrary), so that a styled time-step's
+// swatch shows its lit sphere; null or an empty function: flat swatches of the tint.
+using StyleImages = std::function<const Image*(const std::string& style)>;
+
 // `series` is the display series (fitSceneToSeries), `frame` the display frame it was turned by:
 // ticks and the scale bar are given in the file's units.
 AnnotationLayout drawAnnotations(Image& image, const Scene& scene, const Series& series, const DisplayFrame& frame,
-                                 const View& view, const Font& font);
+                                 const View& view, const Font& font, const StyleImages& styles = {});
 
 // The text size for an image: the scene's font size scaled from a 512-pixel-high image.
 int annotationPixelSize(const Scene& scene, int imageHeight);
