@@ -93,7 +93,7 @@ int runAnimate(const AnimateOptions& options) {
     progress.finish();
     sink->finish();
     std::cout << "wrote " << options.output.string() << " (" << sink->description() << ", " << movie.width << "x"
-              << movie.height << " at " << movie.framesPerSecond << " fps; median " << median(milliseconds)
+              << movie.height << " at " << sink->framesPerSecond() << " fps; median " << median(milliseconds)
               << " ms per frame; " << context->description() << ")\n";
     return kExitSuccess;
 }

@@ -26,8 +26,8 @@ bool holdsOnlyFrames(const fs::path& folder) {
 // Frames go into a hidden sibling folder, which replaces the target when the last one is in.
 class FolderSink final : public FrameSink {
 public:
-    explicit FolderSink(fs::path target)
-        : target_(fs::absolute(target).lexically_normal()),
+    FolderSink(fs::path target, int framesPerSecond)
+        : target_(fs::absolute(target).lexically_normal()), framesPerSecond_(framesPerSecond),
           partial_(target_.parent_path() / ("." + target_.filename().string() + ".partial-" + std::to_string(getpid()))) {
         std::error_code error;
         fs::remove_all(partial_, error);
@@ -48,9 +48,11 @@ public:
         finished_ = true;
     }
     std::string description() const override { return std::to_string(count_) + " PNG frames"; }
+    double framesPerSecond() const override { return framesPerSecond_; }
 
 private:
     fs::path target_;
+    int framesPerSecond_;
     fs::path partial_;
     int count_ = 0;
     bool finished_ = false;
@@ -59,15 +61,18 @@ private:
 class MovieSink final : public FrameSink {
 public:
     MovieSink(const fs::path& target, const MovieSettings& settings)
-        : writer_(target, VideoSettings{settings.width, settings.height, settings.framesPerSecond}) {}
+        : writer_(target, VideoSettings{settings.width, settings.height, settings.framesPerSecond}),
+          framesPerSecond_(storedFramesPerSecond(*videoFormatForPath(target), settings.framesPerSecond)) {}
     void add(const Image& frame) override { writer_.addFrame(frame); }
     void finish() override { writer_.finish(); }
     std::string description() const override {
         return std::to_string(writer_.framesWritten()) + " frames, " + writer_.codecName();
     }
+    double framesPerSecond() const override { return framesPerSecond_; }
 
 private:
     VideoWriter writer_;
+    double framesPerSecond_;
 };
 
 }  // namespace
@@ -100,7 +105,7 @@ void requireWritableFrameOutput(const fs::path& output, const MovieSettings& set
 std::unique_ptr<FrameSink> openFrameSink(const fs::path& output, const MovieSettings& settings) {
     if (!isFrameFolder(output)) return std::make_unique<MovieSink>(output, settings);
     const fs::path folder = fs::absolute(output).lexically_normal();
-    return std::make_unique<FolderSink>(folder.has_filename() ? folder : folder.parent_path());
+    return std::make_unique<FolderSink>(folder.has_filename() ? folder : folder.parent_path(), settings.framesPerSecond);
 }
 
 }  // namespace tstyles::cli

@@ -16,8 +16,10 @@ public:
     virtual ~FrameSink() = default;
     virtual void add(const Image& frame) = 0;
     virtual void finish() = 0;
-    // "H.264 (libx264)", "PNG frames": for the closing message.
+    // "80 frames, libx264", "80 PNG frames": for the closing message.
     virtual std::string description() const = 0;
+    // The rate the output plays at (a GIF stores whole-centisecond delays: 24 fps plays at 25).
+    virtual double framesPerSecond() const = 0;
 };
 
 struct MovieSettings {

@@ -1,14 +1,14 @@
-// Owners of FFmpeg's objects (each freed by its own function) and FFmpeg's error text. Private to
-// src/video.
+// Owners of FFmpeg's C objects (format and codec contexts, frames, packets, scalers): unique_ptrs
+// whose deleters call libav's own free functions, so no path through the video code leaks one.
 #pragma once
 
 #include <memory>
-#include <string>
 
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
-#include <libavutil/error.h>
+#include <libavutil/dict.h>
+#include <libavutil/frame.h>
 #include <libswscale/swscale.h>
 }
 
@@ -26,15 +26,16 @@ struct PacketDeleter {
 struct ScalerDeleter {
     void operator()(SwsContext* scaler) const { sws_freeContext(scaler); }
 };
-// An input context is closed, not just freed.
-struct InputDeleter {
-    void operator()(AVFormatContext* format) const { avformat_close_input(&format); }
+// A context opened for reading with avformat_open_input.
+struct InputFormatDeleter {
+    void operator()(AVFormatContext* context) const { avformat_close_input(&context); }
 };
-// An output context owns its file (pb) once opened.
-struct OutputDeleter {
-    void operator()(AVFormatContext* format) const {
-        if (format->pb && !(format->oformat->flags & AVFMT_NOFILE)) avio_closep(&format->pb);
-        avformat_free_context(format);
+// A context made with avformat_alloc_output_context2, with the file it writes (pb) if one is
+// still open: finish() closes that itself, to see the error, and leaves pb null.
+struct OutputFormatDeleter {
+    void operator()(AVFormatContext* context) const {
+        if (context->pb && !(context->oformat->flags & AVFMT_NOFILE)) avio_closep(&context->pb);
+        avformat_free_context(context);
     }
 };
 
@@ -42,16 +43,21 @@ using CodecContextHandle = std::unique_ptr<AVCodecContext, CodecContextDeleter>;
 using FrameHandle = std::unique_ptr<AVFrame, FrameDeleter>;
 using PacketHandle = std::unique_ptr<AVPacket, PacketDeleter>;
 using ScalerHandle = std::unique_ptr<SwsContext, ScalerDeleter>;
-using InputHandle = std::unique_ptr<AVFormatContext, InputDeleter>;
-using OutputHandle = std::unique_ptr<AVFormatContext, OutputDeleter>;
+using InputFormatHandle = std::unique_ptr<AVFormatContext, InputFormatDeleter>;
+using OutputFormatHandle = std::unique_ptr<AVFormatContext, OutputFormatDeleter>;
 
-inline std::string errorText(int code) {
-    char text[AV_ERROR_MAX_STRING_SIZE] = {};
-    av_strerror(code, text, sizeof text);
-    return text;
-}
+// Options handed to avformat_write_header and the like, which take an AVDictionary**.
+class Dictionary {
+public:
+    Dictionary() = default;
+    Dictionary(const Dictionary&) = delete;
+    Dictionary& operator=(const Dictionary&) = delete;
+    ~Dictionary() { av_dict_free(&entries_); }
+    void set(const char* key, const char* value) { av_dict_set(&entries_, key, value, 0); }
+    AVDictionary** address() { return &entries_; }
 
-// FFmpeg prints warnings on stderr by default; ours are the messages that matter.
-inline void quietenFfmpegLog() { av_log_set_level(AV_LOG_ERROR); }
+private:
+    AVDictionary* entries_ = nullptr;
+};
 
 }  // namespace tstyles::video

@@ -1,19 +1,22 @@
-// A palette of at most 256 colours for one GIF frame (the format's limit): a frame with that few
-// colours keeps them exactly; others get a median-cut palette. Private to src/video.
+// A GIF frame's 256-colour palette, built per frame by median cut over the frame's own colours.
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace tstyles::video {
 
 struct PalettedFrame {
-    std::array<std::uint32_t, 256> palette{};  // 0xAARRGGBB, as libavcodec's PAL8 frames hold it
-    std::vector<std::uint8_t> indices;         // one per pixel, rows top to bottom
+    // 0xAARRGGBB, as FFmpeg's PAL8 frames hold it; unused entries are opaque black.
+    std::array<std::uint32_t, 256> palette{};
+    std::vector<std::uint8_t> indices;  // one per pixel, rows top to bottom
 };
 
-// `rgb`: three bytes per pixel.
-PalettedFrame paletteFrame(const std::vector<std::uint8_t>& rgb, int width, int height);
+// `rgb`: width * height packed 8-bit RGB triples. A frame with at most 256 colours keeps every
+// colour exactly; one with more gets a median-cut palette and Floyd-Steinberg dithering, which
+// trades banding in the renderer's smooth gradients for fine noise.
+PalettedFrame palettize(std::span<const std::uint8_t> rgb, int width, int height);
 
 }  // namespace tstyles::video

@@ -1,42 +1,60 @@
-// Movie formats by extension, and the checks made before a movie is rendered.
-#include <algorithm>
+// Movie formats by extension, and the checks a front end runs before it renders any frame.
 #include <cctype>
 
 #include "tstyles/core/errors.h"
 #include "tstyles/video/video_file.h"
+#include "video_encoder.h"
 
 namespace tstyles {
 
 std::string toString(VideoFormat format) {
     switch (format) {
-        case VideoFormat::Mp4: return "MP4";
-        case VideoFormat::WebM: return "WebM";
-        case VideoFormat::Gif: return "GIF";
+    case VideoFormat::Mp4: return "MP4";
+    case VideoFormat::WebM: return "WebM";
+    case VideoFormat::Gif: return "GIF";
     }
-    return "?";
+    return "unknown";
 }
 
 std::optional<VideoFormat> videoFormatForPath(const std::filesystem::path& file) {
     std::string extension = file.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
     if (extension == ".mp4") return VideoFormat::Mp4;
     if (extension == ".webm") return VideoFormat::WebM;
     if (extension == ".gif") return VideoFormat::Gif;
     return std::nullopt;
 }
 
+double storedFramesPerSecond(VideoFormat format, int framesPerSecond) {
+    if (format == VideoFormat::Gif) return 100.0 / video::gifDelayCentiseconds(framesPerSecond);
+    return framesPerSecond;
+}
+
 void requireWritableVideoPath(const std::filesystem::path& file, const VideoSettings& settings) {
-    const std::optional<VideoFormat> format = videoFormatForPath(file);
-    if (!format)
-        throwInputError(file, "", "unknown movie format \"" + file.extension().string() +
-                                      "\"; use .mp4, .webm or .gif, or a folder ending in / for frames");
+    const std::filesystem::path folder = file.parent_path().empty() ? "." : file.parent_path();
+    if (!std::filesystem::is_directory(folder))
+        throwInputError(file, "", "the folder " + folder.string() + " does not exist");
     if (std::filesystem::is_directory(file)) throwInputError(file, "", "is a folder, not a movie file");
-    const std::filesystem::path folder = std::filesystem::absolute(file).parent_path();
-    if (!std::filesystem::is_directory(folder)) throwInputError(file, "", "the folder it would go into does not exist");
+    const auto format = videoFormatForPath(file);
+    if (!format) throwInputError(file, "", "cannot write movies of this type; use .mp4, .webm or .gif");
+
+    const std::string size = std::to_string(settings.width) + "x" + std::to_string(settings.height);
+    if (settings.width <= 0 || settings.height <= 0)
+        throwInputError(file, "size", size + " is empty; width and height must be positive");
+    if (settings.framesPerSecond <= 0)
+        throwInputError(file, "frame rate", std::to_string(settings.framesPerSecond) +
+                                                " frames per second; the rate must be positive");
+    // 4:2:0 chroma covers 2x2 pixels, so H.264 and VP9 movies need even sides.
     if (*format != VideoFormat::Gif && (settings.width % 2 != 0 || settings.height % 2 != 0))
-        throwInputError(file, "", toString(*format) + " (4:2:0 video) needs an even width and height, got " +
-                                      std::to_string(settings.width) + "x" + std::to_string(settings.height));
+        throwInputError(file, "size", size + " has an odd side; " + toString(*format) +
+                                          " movies (yuv420p) need an even width and height");
+    // GIF's 16-bit screen size; delays under 2 cs are played as 10 cs by browsers.
+    if (*format == VideoFormat::Gif && (settings.width > 65535 || settings.height > 65535))
+        throwInputError(file, "size", size + " is larger than a GIF can hold (65535)");
+    if (*format == VideoFormat::Gif && settings.framesPerSecond > 50)
+        throwInputError(file, "frame rate", std::to_string(settings.framesPerSecond) +
+                                                " frames per second is too fast for a GIF (at most 50: "
+                                                "players slow shorter delays down to 1/10 s)");
 }
 
 }  // namespace tstyles
