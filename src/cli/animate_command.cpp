@@ -6,7 +6,8 @@
 #include <memory>
 
 #include "animation_options.h"
-#include "annotated_rendering.h"
+#include "annotation_options.h"
+#include "tstyles/render/annotated_rendering.h"
 #include "commands.h"
 #include "frame_sink.h"
 #include "interrupt_guard.h"

@@ -3,7 +3,8 @@
 #include <iostream>
 #include <memory>
 
-#include "annotated_rendering.h"
+#include "annotation_options.h"
+#include "tstyles/render/annotated_rendering.h"
 #include "animation_options.h"
 #include "commands.h"
 #include "scene_source.h"

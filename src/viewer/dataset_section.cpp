@@ -114,6 +114,15 @@ void drawTimeSection(SidePanelState& state, ViewerCommands& commands, UiAnchors&
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Plain playback for comparison: only this time-step, without the temporal compositor.\n"
                           "The scene file does not record it.");
+    // The exposure: which time-steps take part in the temporal composite (saved in the scene).
+    int exposure[2] = {state.scene.exposure.first, state.scene.exposure.last.value_or(last)};
+    if (ImGui::DragInt2("exposure", exposure, 0.1f, 0, std::max(last, 0))) {
+        exposure[0] = std::clamp(exposure[0], 0, std::max(last, 0));
+        exposure[1] = std::clamp(exposure[1], exposure[0], std::max(last, 0));
+        state.scene.exposure = {exposure[0], exposure[1] == last ? std::nullopt : std::optional<int>(exposure[1])};
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The first and last time-step in the image (the paper's multiple exposure)");
     if (ImGui::Button(time.playing ? "Pause" : "Play")) commands.push_back(ViewerCommand::TogglePlay);
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-110.0f);

@@ -17,6 +17,8 @@ void drawSidePanel(const ScreenRect& rect, SidePanelState& state, ViewerCommands
         if (ImGui::CollapsingHeader("Time", ImGuiTreeNodeFlags_DefaultOpen)) drawTimeSection(state, commands, anchors);
         if (ImGui::CollapsingHeader("Compositor", ImGuiTreeNodeFlags_DefaultOpen)) drawCompositorSection(state);
         if (ImGui::CollapsingHeader("Camera")) drawCameraSection(state, commands);
+        if (ImGui::CollapsingHeader("Annotations")) drawAnnotationsSection(state, anchors);
+        if (ImGui::CollapsingHeader("Animation")) drawAnimationSection(state, commands, anchors);
         if (ImGui::CollapsingHeader("Temporal profile", ImGuiTreeNodeFlags_DefaultOpen)) drawProfileSection(state);
         ImGui::PopItemWidth();
     }

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <optional>
 
+#include "animation_state.h"
 #include "time_control.h"
 #include "tstyles/data/series.h"
 #include "tstyles/scene/scene.h"
@@ -30,6 +31,7 @@ struct SidePanelState {
     bool pickIsNew = false;  // scroll the profile into view
     GpuMemory memory;
     double defaultStep = 0.0;  // the renderer's step when the scene leaves it out
+    AnimationState& animation;
 };
 
 void drawSidePanel(const ScreenRect& rect, SidePanelState& state, ViewerCommands& commands, UiAnchors& anchors);
@@ -40,5 +42,7 @@ void drawTimeSection(SidePanelState& state, ViewerCommands& commands, UiAnchors&
 void drawCompositorSection(SidePanelState& state);
 void drawCameraSection(SidePanelState& state, ViewerCommands& commands);
 void drawProfileSection(SidePanelState& state);
+void drawAnnotationsSection(SidePanelState& state, UiAnchors& anchors);
+void drawAnimationSection(SidePanelState& state, ViewerCommands& commands, UiAnchors& anchors);
 
 }  // namespace tstyles::viewer

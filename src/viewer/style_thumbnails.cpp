@@ -1,11 +1,7 @@
 // Loading style images into thumbnail textures for ImGui.
 #include "style_thumbnails.h"
 
-#include <algorithm>
-#include <cmath>
-#include <cstdint>
-#include <vector>
-
+#include "straight_bytes.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/image/image_io.h"
 
@@ -13,19 +9,6 @@ namespace tstyles::viewer {
 namespace {
 
 constexpr int kThumbnailSize = 32;
-
-// ImGui blends straight (not premultiplied) colours; our images carry associated alpha.
-std::vector<std::uint8_t> straightBytes(const Image& image) {
-    std::vector<std::uint8_t> bytes(image.rgba.size());
-    for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
-        const float alpha = image.rgba[i + 3];
-        for (std::size_t c = 0; c < 4; ++c) {
-            const float value = c < 3 ? (alpha > 0.0f ? image.rgba[i + c] / alpha : 0.0f) : alpha;
-            bytes[i + c] = std::uint8_t(std::lround(std::clamp(value, 0.0f, 1.0f) * 255.0f));
-        }
-    }
-    return bytes;
-}
 
 }  // namespace
 

@@ -90,6 +90,7 @@ void ViewerApp::frame() {
     const bool interacting = volumeView_.interacting(now) || editors_.dragging() ||
                              (mouseHeld && ImGui::IsAnyItemActive());
     presentVolume(interacting);
+    continueMovieExport();
     if (!interacting) history_.record(document_.scene);
 }
 
@@ -107,7 +108,8 @@ void ViewerApp::buildUi(double seconds) {
                         pick_,
                         std::exchange(pickIsNew_, false),
                         {renderer_.seriesTextureBytes(), renderer_.frameTextureBytes()},
-                        0.5 * document_.series->finestSpacing()};
+                        0.5 * document_.series->finestSpacing(),
+                        animation_};
     drawSidePanel(layout_.sidePanel, side, commands_, anchors_);
     editors_.draw(document_.scene, *document_.series, document_.timeLabels, *document_.histogram, layout_, anchors_);
     drawVolumeArea();
@@ -150,6 +152,12 @@ void ViewerApp::drawVolumeArea() {
     if (pick_) overlay.pickedPoint = pick_->world;
     overlay.note = time_.solo ? "showing one time-step alone (not saved in the scene)" : pickNote_;
     volumeView_.drawOverlay(layout_.volume, overlay, document_.scene.camera, bounds, frameSize());
+    try {
+        annotationOverlay_.draw(layout_.volume, frameSize(), shownScene(), *document_.series, document_.frame);
+    } catch (const InputError& error) {
+        document_.scene.annotations = {};  // e.g. the font is missing: say so once, then draw without
+        errorDialog_.show(error.what());
+    }
 }
 
 void ViewerApp::presentVolume(bool interacting) {
@@ -171,11 +179,17 @@ void ViewerApp::presentVolume(bool interacting) {
 
 FrameWork ViewerApp::updateFrame(bool interacting) {
     try {
-        const FrameWork work = frame_.update(renderer_, document_.scene, document_.series->worldBounds(), frameSize(),
+        const FrameWork work = frame_.update(renderer_, shownScene(), document_.series->worldBounds(), frameSize(),
                                              time_.soloTimeStep(), interacting);
         if (work == FrameWork::Preview) lastRenderable_ = document_.scene;
         return work;
     } catch (const InputError& error) {
+        if (animation_.previewing) {  // a frame of the animation the series cannot show
+            animation_.previewing = false;
+            errorDialog_.show(error.what());
+            frame_.invalidate();
+            return FrameWork::None;
+        }
         if (document_.scene == lastRenderable_) throw;  // nothing better to go back to
         errorDialog_.show(error.what());
         document_.scene = lastRenderable_;

@@ -6,9 +6,12 @@
 #include <filesystem>
 #include <optional>
 
+#include "animation_state.h"
+#include "annotation_overlay.h"
 #include "editor_panels.h"
 #include "frame_statistics.h"
 #include "imgui_platform.h"
+#include "movie_export.h"
 #include "progressive_frame.h"
 #include "scene_history.h"
 #include "script_player.h"
@@ -35,7 +38,8 @@ public:
     std::optional<glm::vec2> resolveAnchor(const std::string& name,
                                            const std::optional<glm::dvec2>& parameters) const override;
     std::string anchorNames() const override { return anchors_.currentNames(); }
-    bool viewRefined() const override { return frame_.refined(); }
+    // A movie being exported keeps the view from refining: scripts wait for the export too.
+    bool viewRefined() const override { return frame_.refined() && !movieExport_; }
     void openFromScript(const std::filesystem::path& path) override { openPath(path); }
     void saveSceneFromScript(const std::filesystem::path& path) override { saveTo(path); }
     void requestScreenshot(const std::filesystem::path& path, bool wholeWindow) override;
@@ -54,6 +58,12 @@ private:
     // Brings the progressive frame up to date; an InputError from the renderer shows the error
     // dialog and restores the last scene it accepted.
     FrameWork updateFrame(bool interacting);
+    // The scene the volume shows: the document's, or its animation at the previewed frame.
+    Scene shownScene() const;
+    void addKey();
+    void startMovieExport();
+    // One frame of a running export per UI frame, so the window stays responsive.
+    void continueMovieExport();
     // Called after the volume is drawn (wholeWindow false) and after the panels (true).
     void takeScreenshotIfDue(bool wholeWindow);
 
@@ -88,6 +98,9 @@ private:
     EditorPanels editors_;
     VolumeView volumeView_;
     TimeControl time_;
+    AnimationState animation_;
+    std::optional<MovieExport> movieExport_;
+    AnnotationOverlay annotationOverlay_;
     std::optional<Pick> pick_;
     UiAnchors anchors_;
     FileDialog fileDialog_;

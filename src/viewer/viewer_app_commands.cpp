@@ -1,4 +1,5 @@
 // Carrying out the viewer commands: files (open, save, screenshot), undo/redo, node edits, camera.
+#include <algorithm>
 #include <iostream>
 
 #include "camera_controller.h"
@@ -55,6 +56,18 @@ void ViewerApp::execute(ViewerCommand command) {
             break;
         case ViewerCommand::TogglePlay:
             time_.togglePlay();
+            break;
+        case ViewerCommand::AddKey:
+            addKey();
+            break;
+        case ViewerCommand::ExportMovie:
+            startMovieExport();
+            break;
+        case ViewerCommand::CancelExport:
+            movieExport_.reset();
+            animation_.exportProgress = -1.0;
+            animation_.message = "export cancelled; nothing was written";
+            frame_.invalidate();
             break;
         default:
             executeEdit(command);
@@ -148,6 +161,8 @@ void ViewerApp::adopt(ViewerDocument next) {
     pickNote_ = nullptr;
     time_.solo = false;
     time_.playing = false;
+    movieExport_.reset();
+    animation_ = {};
     time_.step = 0;
 }
 
@@ -181,6 +196,63 @@ void ViewerApp::updateTitle() {
 std::filesystem::path ViewerApp::dialogFolder() const {
     if (document_.sceneFile) return document_.sceneFile->parent_path();
     return std::filesystem::current_path();
+}
+
+}  // namespace tstyles::viewer
+
+namespace tstyles::viewer {
+
+Scene ViewerApp::shownScene() const {
+    const Scene& scene = document_.scene;
+    if (!animation_.previewing || scene.animation.empty()) return scene;
+    Scene shown = sceneAtFrame(scene, std::clamp(animation_.previewFrame, 0, scene.animation.frames - 1));
+    shown.exposure.stepsOf(document_.series->size());  // an exposure the series lacks fails here, named
+    return shown;
+}
+
+void ViewerApp::addKey() {
+    const int frame = animation_.nextKeyFrame;
+    try {
+        document_.scene.animation = animation_.addKey(frame, document_.scene);
+        animation_.nextKeyFrame = frame + animation_.framesPerSecond;
+        animation_.message = "key " + std::to_string(animation_.keys.size()) + " recorded at frame " +
+                             std::to_string(frame) + "; the movie has " +
+                             std::to_string(document_.scene.animation.frames) + " frames";
+    } catch (const InputError& error) {
+        animation_.message = error.what();
+    }
+}
+
+void ViewerApp::startMovieExport() {
+    if (movieExport_) return;
+    if (animation_.moviePath.empty()) animation_.moviePath = defaultMoviePath(document_.sceneFile).string();
+    try {
+        movieExport_.emplace(document_.scene, document_.series, document_.frame, animation_.moviePath);
+        animation_.exportProgress = 0.0;
+        animation_.message.clear();
+    } catch (const InputError& error) {
+        animation_.message = error.what();
+    }
+}
+
+void ViewerApp::continueMovieExport() {
+    if (!movieExport_) return;
+    try {
+        const bool done = movieExport_->step(renderer_);
+        animation_.exportProgress = movieExport_->progress();
+        if (done) {
+            animation_.message = "wrote " + movieExport_->target().string();
+            std::cout << animation_.message << std::endl;
+            movieExport_.reset();
+            animation_.exportProgress = -1.0;
+        }
+    } catch (const InputError& error) {
+        animation_.message = error.what();
+        movieExport_.reset();  // removes the half-written movie
+        animation_.exportProgress = -1.0;
+    }
+    // The export drew into the renderer's target: the view is drawn again.
+    frame_.invalidate();
 }
 
 }  // namespace tstyles::viewer

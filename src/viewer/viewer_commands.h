@@ -24,6 +24,9 @@ enum class ViewerCommand {
     ResetCamera,
     FitCamera,
     TogglePlay,
+    AddKey,        // record the scene as the animation key at the next key frame
+    ExportMovie,   // render the scene's animation into the movie file
+    CancelExport,
 };
 
 using ViewerCommands = std::vector<ViewerCommand>;

@@ -22,10 +22,12 @@ bool sameFile(const std::filesystem::path& a, const std::filesystem::path& b) {
 // The series in the scene's display frame, with the scene's automatic parts fitted to it; the
 // current document's series when it is the same file shown the same way.
 std::shared_ptr<const Series> fitSeries(Scene& scene, const std::vector<std::filesystem::path>& paths,
-                                        const ViewerDocument* current, Series* opened, const ReadOptions& readOptions) {
+                                        const ViewerDocument* current, Series* opened, const ReadOptions& readOptions,
+                                        DisplayFrame& frame) {
     if (opened == nullptr && paths.size() == 1 && current != nullptr && current->series &&
         sameFile(paths.front(), current->series->manifestPath) && current->scene.display == scene.display) {
         if (scene.gradientTstf.automaticRange) scene.gradientTstf.rangeHigh = current->scene.gradientTstf.rangeHigh;
+        frame = current->frame;
         return current->series;
     }
     SceneOnSeries fitted = fitSceneToSeries(scene, opened ? std::move(*opened) : openSeries(paths, readOptions));
@@ -33,6 +35,7 @@ std::shared_ptr<const Series> fitSeries(Scene& scene, const std::vector<std::fil
     if (fitted.scene.camera.framing == Framing::Visible)
         fitted.scene.camera = frameExplicitly(fitted.scene.camera, fitted.framed, {scene.width, scene.height});
     scene = std::move(fitted.scene);
+    frame = std::move(fitted.frame);
     return std::make_shared<const Series>(std::move(fitted.series));
 }
 
@@ -47,10 +50,11 @@ ViewerDocument openDocument(const std::vector<std::filesystem::path>& paths, con
     if (paths.size() > 1 || classifyInput(paths.front()) == InputKind::Dataset) {
         Series raw = openSeries(paths, readOptions);
         document.scene = automaticScene(raw, raw.manifestPath).scene;
-        document.series = fitSeries(document.scene, paths, current, &raw, readOptions);
+        document.series = fitSeries(document.scene, paths, current, &raw, readOptions, document.frame);
     } else {
         document.scene = loadScene(paths.front());
-        document.series = fitSeries(document.scene, {document.scene.dataset}, current, nullptr, readOptions);
+        document.series =
+            fitSeries(document.scene, {document.scene.dataset}, current, nullptr, readOptions, document.frame);
         document.sceneFile = std::filesystem::absolute(paths.front()).lexically_normal();
     }
     if (document.series->size() == 0) throwInputError(document.series->manifestPath, "", "the series has no time-steps");

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "density_histogram.h"
+#include "tstyles/data/display_frame.h"
 #include "tstyles/data/read_options.h"
 #include "tstyles/data/series.h"
 #include "tstyles/scene/scene.h"
@@ -18,6 +19,8 @@ namespace tstyles::viewer {
 struct ViewerDocument {
     Scene scene;
     std::shared_ptr<const Series> series;
+    // How the series was turned and scaled for display (for ticks in the file's units).
+    DisplayFrame frame;
     std::shared_ptr<const DensityHistogram> histogram;
     // The scene file it was opened from or last saved to; none for a dataset opened on its own.
     std::optional<std::filesystem::path> sceneFile;

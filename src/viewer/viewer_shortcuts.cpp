@@ -23,6 +23,7 @@ void collectShortcuts(ViewerCommands& commands) {
         if (pressed(GLFW_KEY_O)) commands.push_back(ViewerCommand::Open);
         if (pressed(GLFW_KEY_S)) commands.push_back(shift ? ViewerCommand::SaveAs : ViewerCommand::Save);
         if (pressed(GLFW_KEY_Q)) commands.push_back(ViewerCommand::Quit);
+        if (pressed(GLFW_KEY_E)) commands.push_back(ViewerCommand::ExportMovie);
         return;
     }
     if (pressed(GLFW_KEY_DELETE) || pressed(GLFW_KEY_BACKSPACE)) commands.push_back(ViewerCommand::DeleteNodes);
@@ -32,6 +33,7 @@ void collectShortcuts(ViewerCommands& commands) {
     if (io.KeyAlt) return;
     if (pressed(GLFW_KEY_R)) commands.push_back(ViewerCommand::ResetCamera);
     if (pressed(GLFW_KEY_F)) commands.push_back(ViewerCommand::FitCamera);
+    if (pressed(GLFW_KEY_K)) commands.push_back(ViewerCommand::AddKey);
     if (pressed(GLFW_KEY_SPACE)) commands.push_back(ViewerCommand::TogglePlay);
     if (pressed(GLFW_KEY_F12)) commands.push_back(ViewerCommand::Screenshot);
 }

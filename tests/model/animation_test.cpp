@@ -8,6 +8,7 @@
 
 #include "tstyles/core/errors.h"
 #include "tstyles/scene/animation_presets.h"
+#include "tstyles/scene/keyframe_recording.h"
 #include "tstyles/scene/scene_file.h"
 
 namespace {
@@ -173,6 +174,36 @@ TEST(AnimationPresets, ExposureGrowsSlidesOrPlaysBack) {
     EXPECT_EQ(sceneAtFrame(scene, 4).exposure.stepsOf(4), glm::ivec2(1, 1));
     scene.animation.tracks = {orbitTurn(scene, 360.0, 12, "--orbit")};
     EXPECT_DOUBLE_EQ(azimuthOf(sceneAtFrame(scene, 3)), 30.0 + 90.0);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(RecordedKeys, BecomeTracksOfTheNumbersThatMove) {
+    using namespace tstyles;
+    Scene first = parseScene(sceneWith(""), origin);
+    Scene second = first;
+    std::get<OrbitCamera>(second.camera.pose).azimuthDeg = 120.0;
+    second.indexTstf.curve.opacity[1].at = 1.2;  // a node moved (staying before the next one)
+    const Animation animation = animationFromRecordedKeys({{20, second}, {0, first}}, 12);
+    EXPECT_EQ(animation.frames, 21);
+    EXPECT_EQ(animation.framesPerSecond, 12);
+    ASSERT_EQ(animation.tracks.size(), 2u);
+    Scene animated = first;
+    animated.animation = animation;
+    const Scene middle = sceneAtFrame(animated, 10);
+    EXPECT_DOUBLE_EQ(azimuthOf(middle), 75.0);
+    EXPECT_DOUBLE_EQ(middle.indexTstf.curve.opacity[1].at, 0.85);
+    EXPECT_EQ(sceneAtFrame(animated, 20), [&] {
+        Scene last = second;
+        last.animation = {};
+        return last;
+    }());
+
+    Scene grown = first;
+    grown.stf.curve.opacity.push_back({0.9, 0.5});
+    EXPECT_THROW(animationFromRecordedKeys({{0, first}, {10, grown}}, 24), InputError);
 }
 
 }  // namespace

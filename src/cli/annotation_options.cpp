@@ -1,20 +1,7 @@
-// Rendering plus annotations, for the headless commands.
-#include "annotated_rendering.h"
-
-#include "tstyles/annotate/scene_annotations.h"
+// The annotation options of render and animate.
+#include "annotation_options.h"
 
 namespace tstyles::cli {
-
-Image AnnotatedRendering::render(const Scene& scene) {
-    const Bounds all = fitted_.series.worldBounds();
-    Image image = renderImage(renderer_, scene, fitted_.framed, all);
-    if (!scene.annotations.any()) return image;
-    if (!font_) font_ = Font::openDefault();
-    const View view = resolveView(scene.camera, fitted_.framed, all, scene.width, scene.height);
-    drawAnnotations(image, scene, fitted_.series, fitted_.frame, view, *font_,
-                    [this](const std::string& style) { return &styles_.image(style); });
-    return image;
-}
 
 void addAnnotationOptions(CLI::App& command, AnnotationOptions& options) {
     command.add_flag("--legend", options.legend,
