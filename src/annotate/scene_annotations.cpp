@@ -188,7 +188,7 @@ void drawCaption(PanelStack& panels, const Scene& scene, glm::ivec2 steps, const
     std::string text = toString(scene.compositor) + " \u00b7 ";
     const int count = steps.y - steps.x + 1;
     text += count == 1 ? "time-step " + std::to_string(steps.x) : std::to_string(count) + " time-steps";
-    if (labels[std::size_t(steps.x)] != "time-step " + std::to_string(steps.x))
+    if (labels[std::size_t(steps.x)].rfind("time-step ", 0) != 0)
         text += ", " + labels[std::size_t(steps.x)] + (count > 1 ? " to " + labels[std::size_t(steps.y)] : "");
     const Rect panel = panels.place(Corner::BottomLeft, 2 * m.pad + m.textWidth(text), 2 * m.pad + m.row);
     panels.canvas().drawText(panels.font(), text, {panel.x + m.pad, panel.y + m.pad + m.baseline}, m.pixels, kText);
@@ -212,14 +212,16 @@ int annotationPixelSize(const Scene& scene, int imageHeight) {
 }
 
 std::vector<std::string> timeStepLabels(const Series& series) {
-    std::vector<std::string> labels;
-    if (series.time.unit == TimeUnit::None) {
-        for (std::size_t step = 0; step < series.size(); ++step) labels.push_back("time-step " + std::to_string(step));
-        return labels;
-    }
     std::vector<double> times;
     for (const TimeStep& step : series.steps) times.push_back(step.time);
-    return formatTimes(times, series.time);
+    std::vector<std::string> labels = formatTimes(times, series.time);
+    if (series.time.unit != TimeUnit::None) return labels;
+    // Plain numbers: the index, with the stamp where it says more than the index does.
+    bool stampsAreIndices = true;
+    for (std::size_t step = 0; step < times.size(); ++step) stampsAreIndices = stampsAreIndices && times[step] == double(step);
+    for (std::size_t step = 0; step < labels.size(); ++step)
+        labels[step] = "time-step " + std::to_string(step) + (stampsAreIndices ? "" : " (" + labels[step] + ")");
+    return labels;
 }
 
 AnnotationLayout drawAnnotations(Image& image, const Scene& scene, const Series& series, const DisplayFrame& frame,

@@ -151,6 +151,8 @@ void ViewerApp::drawVolumeArea() {
     overlay.refinementSeconds = frame_.lastRefinementSeconds();
     if (pick_) overlay.pickedPoint = pick_->world;
     overlay.note = time_.solo ? "showing one time-step alone (not saved in the scene)" : pickNote_;
+    if (animation_.previewing && !time_.solo) overlay.note = "previewing the animation (the scene is unchanged)";
+    overlay.annotated = document_.scene.annotations.any();
     volumeView_.drawOverlay(layout_.volume, overlay, document_.scene.camera, bounds, frameSize());
     try {
         annotationOverlay_.draw(layout_.volume, frameSize(), shownScene(), *document_.series, document_.frame);

@@ -84,7 +84,9 @@ void VolumeView::drawOverlay(const ScreenRect& rect, const VolumeOverlay& overla
     ImDrawList& drawList = *ImGui::GetWindowDrawList();
     drawList.PushClipRect({rect.min.x, rect.min.y}, {rect.max.x, rect.max.y});
     char text[96];
-    const ImVec2 corner{rect.min.x + 8.0f, rect.max.y - 24.0f};
+    // Bottom left, or bottom centre where the annotations' caption and scale bar sit in the corners.
+    const ImVec2 corner{overlay.annotated ? 0.5f * (rect.min.x + rect.max.x) - 150.0f : rect.min.x + 8.0f,
+                        rect.max.y - 24.0f};
     if (!overlay.refined) {
         // Progress of the full-quality frame: a bar and what is shown meanwhile.
         const float width = 140.0f;
@@ -101,10 +103,15 @@ void VolumeView::drawOverlay(const ScreenRect& rect, const VolumeOverlay& overla
         drawList.AddText({corner.x, corner.y + 2.0f}, IM_COL32(150, 150, 160, 200), text);
     }
     std::snprintf(text, sizeof text, "%.1f fps", overlay.framesPerSecond);
-    drawList.AddText({rect.max.x - ImGui::CalcTextSize(text).x - 8.0f, rect.min.y + 6.0f},
+    const float centre = 0.5f * (rect.min.x + rect.max.x);
+    drawList.AddText({overlay.annotated ? centre - 0.5f * ImGui::CalcTextSize(text).x
+                                        : rect.max.x - ImGui::CalcTextSize(text).x - 8.0f,
+                      rect.min.y + 6.0f},
                      IM_COL32(150, 150, 160, 200), text);
     if (overlay.note != nullptr)
-        drawList.AddText({rect.min.x + 8.0f, rect.min.y + 6.0f}, IM_COL32(255, 210, 40, 255), overlay.note);
+        drawList.AddText({overlay.annotated ? centre - 0.5f * ImGui::CalcTextSize(overlay.note).x : rect.min.x + 8.0f,
+                          rect.min.y + (overlay.annotated ? 24.0f : 6.0f)},
+                         IM_COL32(255, 210, 40, 255), overlay.note);
 
     if (overlay.pickedPoint && frameSize.x > 0 && frameSize.y > 0) {
         const View view = resolveView(camera, bounds, frameSize.x, frameSize.y);

@@ -22,6 +22,8 @@ struct VolumeOverlay {
     double refinementSeconds = 0.0;
     std::optional<glm::dvec3> pickedPoint;
     const char* note = nullptr;  // e.g. "showing time-step 3 alone"
+    // The scene's annotations take the corners: the status texts move to the middle of the edges.
+    bool annotated = false;
 };
 
 class VolumeView {

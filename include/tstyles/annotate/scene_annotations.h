@@ -38,7 +38,7 @@ AnnotationLayout drawAnnotations(Image& image, const Scene& scene, const Series&
 int annotationPixelSize(const Scene& scene, int imageHeight);
 
 // Labels of the series' time-steps: dates or times with units where the file gives them, else
-// "time-step i".
+// "time-step i", with its stamp in brackets where the stamps are not the indices ("time-step 3 (0.533)").
 std::vector<std::string> timeStepLabels(const Series& series);
 
 // 1, 2 or 5 times a power of ten: tick spacing for about `count` ticks over `span`.
