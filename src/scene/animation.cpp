@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "json_path.h"
+#include "name_table.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/scene/scene.h"
 #include "tstyles/scene/scene_file.h"
@@ -24,25 +25,6 @@ constexpr std::array curveNameTable{
     std::pair{CurveName::IndexTstf, "tstf.index"},
     std::pair{CurveName::GradientTstf, "tstf.gradient"},
 };
-
-template <typename Enum, std::size_t N>
-std::string nameIn(const std::array<std::pair<Enum, const char*>, N>& table, Enum value) {
-    for (const auto& [entry, name] : table)
-        if (entry == value) return name;
-    return "?";
-}
-template <typename Enum, std::size_t N>
-std::optional<Enum> valueIn(const std::array<std::pair<Enum, const char*>, N>& table, const std::string& name) {
-    for (const auto& [entry, entryName] : table)
-        if (name == entryName) return entry;
-    return std::nullopt;
-}
-template <typename Enum, std::size_t N>
-std::vector<std::string> namesIn(const std::array<std::pair<Enum, const char*>, N>& table) {
-    std::vector<std::string> names;
-    for (const auto& entry : table) names.emplace_back(entry.second);
-    return names;
-}
 
 // Keys of the scene format that hold whole numbers: an animated value is rounded there.
 bool isIntegerKey(const std::string& path) {
@@ -69,14 +51,14 @@ std::string problemWithout(const std::string& message, const std::filesystem::pa
 
 }  // namespace
 
-std::string toString(Interpolation interpolation) { return nameIn(interpolationNameTable, interpolation); }
+std::string toString(Interpolation interpolation) { return nameOf(interpolationNameTable, interpolation); }
 std::optional<Interpolation> interpolationFromString(const std::string& name) {
-    return valueIn(interpolationNameTable, name);
+    return valueOf(interpolationNameTable, name);
 }
-std::vector<std::string> interpolationNames() { return namesIn(interpolationNameTable); }
-std::string toString(CurveName curve) { return nameIn(curveNameTable, curve); }
-std::optional<CurveName> curveNameFromString(const std::string& name) { return valueIn(curveNameTable, name); }
-std::vector<std::string> curveNames() { return namesIn(curveNameTable); }
+std::vector<std::string> interpolationNames() { return allNames(interpolationNameTable); }
+std::string toString(CurveName curve) { return nameOf(curveNameTable, curve); }
+std::optional<CurveName> curveNameFromString(const std::string& name) { return valueOf(curveNameTable, name); }
+std::vector<std::string> curveNames() { return allNames(curveNameTable); }
 
 double AnimationTrack::valueAt(double frame) const {
     if (keys.empty()) return 0.0;

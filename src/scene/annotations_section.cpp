@@ -2,6 +2,7 @@
 #include <array>
 #include <utility>
 
+#include "name_table.h"
 #include "scene_sections.h"
 
 namespace tstyles {
@@ -23,21 +24,9 @@ bool readSwitch(const JsonFieldReader& fields, const json& value, const std::str
 
 }  // namespace
 
-std::string toString(Corner corner) {
-    for (const auto& [entry, name] : cornerNameTable)
-        if (entry == corner) return name;
-    return "?";
-}
-std::optional<Corner> cornerFromString(const std::string& name) {
-    for (const auto& [entry, entryName] : cornerNameTable)
-        if (name == entryName) return entry;
-    return std::nullopt;
-}
-std::vector<std::string> cornerNames() {
-    std::vector<std::string> names;
-    for (const auto& entry : cornerNameTable) names.emplace_back(entry.second);
-    return names;
-}
+std::string toString(Corner corner) { return nameOf(cornerNameTable, corner); }
+std::optional<Corner> cornerFromString(const std::string& name) { return valueOf(cornerNameTable, name); }
+std::vector<std::string> cornerNames() { return allNames(cornerNameTable); }
 
 Annotations readAnnotations(const JsonFieldReader& fields, const json& value) {
     const std::string path = "annotations";

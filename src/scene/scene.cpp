@@ -4,6 +4,7 @@
 #include <array>
 #include <utility>
 
+#include "name_table.h"
 #include "tstyles/core/errors.h"
 
 namespace tstyles {
@@ -21,30 +22,6 @@ constexpr std::array finalModeNameTable{
     std::pair{FinalMode::Tstf, "tstf"},
     std::pair{FinalMode::Modulate, "modulate"},
 };
-
-template <typename Enum, std::size_t N>
-std::string nameOf(const std::array<std::pair<Enum, const char*>, N>& table, Enum value) {
-    for (const auto& [entry, name] : table) {
-        if (entry == value) return name;
-    }
-    return "unknown";
-}
-
-template <typename Enum, std::size_t N>
-std::optional<Enum> valueOf(const std::array<std::pair<Enum, const char*>, N>& table,
-                            const std::string& name) {
-    for (const auto& [entry, entryName] : table) {
-        if (name == entryName) return entry;
-    }
-    return std::nullopt;
-}
-
-template <typename Enum, std::size_t N>
-std::vector<std::string> allNames(const std::array<std::pair<Enum, const char*>, N>& table) {
-    std::vector<std::string> names;
-    for (const auto& entry : table) names.emplace_back(entry.second);
-    return names;
-}
 
 }  // namespace
 
