@@ -63,11 +63,11 @@ int runAnimate(const AnimateOptions& options) {
     applySceneOverrides(scene, options.overrides);
     applyAnnotationOptions(scene, options.annotations);
     const std::string sceneName = options.inputs.front().string();
-    scene.animation = animationFor(scene, opened.series.size(), options.animation, sceneName);
-    const MovieSettings movie{scene.width, scene.height, scene.animation.framesPerSecond};
+    SceneOnSeries fitted = fitSceneToSeries(std::move(scene), std::move(opened.series));
+    fitted.scene.animation =
+        animationFor(fitted.scene, fitted.series.size(), options.animation, sceneName, cameraDistance(fitted));
+    const MovieSettings movie{fitted.scene.width, fitted.scene.height, fitted.scene.animation.framesPerSecond};
     requireWritableFrameOutput(options.output, movie);
-
-    const SceneOnSeries fitted = fitSceneToSeries(std::move(scene), std::move(opened.series));
     const std::vector<Scene> scenes = frameScenes(fitted.scene, fitted.series.size(), options.inputs.front());
 
     const auto context = createHeadlessContext(parseBackend(options.gl.backend), glDebugOutputRequested());

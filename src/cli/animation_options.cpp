@@ -8,7 +8,7 @@ namespace tstyles::cli {
 namespace {
 
 // Frames a preset takes when --frames is not given: eight per time-step (three time-steps a second
-// at 24 fps), and five seconds for an orbit alone.
+// at 24 fps), and five seconds for camera moves alone.
 constexpr int kFramesPerTimeStep = 8;
 constexpr int kOrbitFrames = 120;
 
@@ -36,24 +36,35 @@ void addAnimationOptions(CLI::App& command, AnimationOptions& options) {
                        "(a window of K time-steps slides)");
     command.add_flag("--playback", options.playback, "Preset: one time-step at a time (ordinary playback)");
     command.add_option("--orbit", options.orbitDegrees, "Preset: the camera turns by DEGREES about the vertical");
+    command.add_option("--elevation", options.elevationDegrees, "Preset: the camera rises by DEGREES (negative: sinks)");
+    command.add_option("--zoom", options.zoomFactor, "Preset: the camera moves in by FACTOR (below 1: out)")
+        ->check(CLI::PositiveNumber);
     command.add_option("--frames", options.frames, "Number of frames (default: the scene's, or the presets')")
         ->check(CLI::Range(1, 1000000));
     command.add_option("--fps", options.framesPerSecond, "Frames per second (default: the scene's, else 24)")
         ->check(CLI::Range(1, 240));
 }
 
+double cameraDistance(const SceneOnSeries& fitted) {
+    const View view = resolveView(fitted.scene.camera, fitted.framed, fitted.series.worldBounds(), fitted.scene.width,
+                                  fitted.scene.height);
+    return glm::length(view.eye - view.target);
+}
+
 bool hasPreset(const AnimationOptions& options) {
-    return options.sweepFocusGroup || options.exposure || options.playback || options.orbitDegrees;
+    return options.sweepFocusGroup || options.exposure || options.playback || options.orbitDegrees ||
+           options.elevationDegrees || options.zoomFactor;
 }
 
 Animation animationFor(const Scene& scene, std::size_t stepCount, const AnimationOptions& options,
-                       const std::string& sceneName) {
+                       const std::string& sceneName, double cameraDistance) {
     Animation animation = scene.animation;
     const bool anyPreset = hasPreset(options);
     if (!anyPreset && animation.empty())
         throwInputError(sceneName, "animation",
                         "the scene has no animation section; add one (docs/animation.md) or give a preset: "
-                        "--sweep-focus GROUP, --exposure grow|window:K, --playback or --orbit DEGREES");
+                        "--sweep-focus GROUP, --exposure grow|window:K, --playback, --orbit DEGREES, --elevation "
+                        "DEGREES or --zoom FACTOR");
     if (options.exposure && options.playback)
         throwInputError("", "--playback", "and --exposure both move the exposure; give one of them");
     if (anyPreset) {
@@ -75,6 +86,10 @@ Animation animationFor(const Scene& scene, std::size_t stepCount, const Animatio
             animation.tracks.insert(animation.tracks.end(), tracks.begin(), tracks.end());
         }
         if (options.orbitDegrees) animation.tracks.push_back(orbitTurn(scene, *options.orbitDegrees, frames, "--orbit"));
+        if (options.elevationDegrees)
+            animation.tracks.push_back(elevationChange(scene, *options.elevationDegrees, frames, "--elevation"));
+        if (options.zoomFactor)
+            animation.tracks.push_back(zoomBy(scene, cameraDistance, *options.zoomFactor, frames, "--zoom"));
     } else if (options.frames) {
         animation.frames = *options.frames;
     }

@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "tstyles/scene/automatic_scene.h"
 #include "tstyles/scene/scene.h"
 
 namespace tstyles::cli {
@@ -17,15 +18,21 @@ struct AnimationOptions {
     std::optional<std::string> exposure;  // --exposure grow|window:K
     bool playback = false;                // --playback
     std::optional<double> orbitDegrees;   // --orbit DEGREES
+    std::optional<double> elevationDegrees;  // --elevation DEGREES
+    std::optional<double> zoomFactor;     // --zoom FACTOR
     std::optional<int> frames;            // --frames
     std::optional<int> framesPerSecond;   // --fps
 };
 void addAnimationOptions(CLI::App& command, AnimationOptions& options);
 bool hasPreset(const AnimationOptions& options);
 
+// Where the scene's camera stands from its target, resolved against the fitted series.
+double cameraDistance(const SceneOnSeries& fitted);
+
 // The scene's animation with the presets' tracks added, frames and rate as the options say. A
-// scene with no animation and no preset is an InputError naming `sceneName`.
+// scene with no animation and no preset is an InputError naming `sceneName`. `cameraDistance` is
+// where the orbit camera stands (resolved against the series): where --zoom starts.
 Animation animationFor(const Scene& scene, std::size_t stepCount, const AnimationOptions& options,
-                       const std::string& sceneName);
+                       const std::string& sceneName, double cameraDistance);
 
 }  // namespace tstyles::cli

@@ -64,14 +64,16 @@ int runRender(const RenderOptions& options) {
     if (!options.frame && (hasPreset(options.animation) || options.animation.frames || options.animation.framesPerSecond))
         throwInputError("", "--frame", "missing: the animation options of render choose the animation that --frame K "
                                        "takes a frame of");
-    if (options.frame) {
-        scene.animation = animationFor(scene, opened.series.size(), options.animation, options.inputs.front().string());
-        if (*options.frame >= scene.animation.frames)
-            throwInputError("", "--frame", std::to_string(*options.frame) + " is past the animation's last frame (" +
-                                               std::to_string(scene.animation.frames - 1) + ")");
-    }
     SceneOnSeries fitted = fitSceneToSeries(std::move(scene), std::move(opened.series));
-    if (options.frame) fitted.scene = sceneAtFrame(fitted.scene, *options.frame);
+    if (options.frame) {
+        const Animation animation = animationFor(fitted.scene, fitted.series.size(), options.animation,
+                                                  options.inputs.front().string(), cameraDistance(fitted));
+        if (*options.frame >= animation.frames)
+            throwInputError("", "--frame", std::to_string(*options.frame) + " is past the animation's last frame (" +
+                                               std::to_string(animation.frames - 1) + ")");
+        fitted.scene.animation = animation;
+        fitted.scene = sceneAtFrame(fitted.scene, *options.frame);
+    }
     fitted.scene.exposure.stepsOf(fitted.series.size(), options.inputs.front());
     const Series& series = fitted.series;
     const auto context = createHeadlessContext(parseBackend(options.gl.backend), glDebugOutputRequested());

@@ -1,6 +1,8 @@
 // Preset animation tracks (focus sweep, exposure, playback, orbit).
 #include "tstyles/scene/animation_presets.h"
 
+#include <algorithm>
+
 #include "tstyles/core/errors.h"
 
 namespace tstyles {
@@ -49,6 +51,24 @@ AnimationTrack orbitTurn(const Scene& scene, double degrees, int frames, const s
     return {ValueTrackTarget{"camera.orbit.azimuth_deg"},
             {{0.0, orbit->azimuthDeg}, {double(frames), orbit->azimuthDeg + degrees}},
             Interpolation::Linear};
+}
+
+AnimationTrack elevationChange(const Scene& scene, double degrees, int frames, const std::string& field) {
+    const auto* orbit = std::get_if<OrbitCamera>(&scene.camera.pose);
+    if (!orbit) throwInputError("", field, "needs an orbit camera; the scene's camera is look_at");
+    const double end = std::clamp(orbit->elevationDeg + degrees, -89.0, 89.0);
+    return {ValueTrackTarget{"camera.orbit.elevation_deg"},
+            {{0.0, orbit->elevationDeg}, {double(std::max(frames - 1, 1)), end}},
+            Interpolation::Smooth};
+}
+
+AnimationTrack zoomBy(const Scene& scene, double distance, double factor, int frames, const std::string& field) {
+    if (!std::holds_alternative<OrbitCamera>(scene.camera.pose))
+        throwInputError("", field, "needs an orbit camera; the scene's camera is look_at");
+    if (!(factor > 0.0)) throwInputError("", field, "must be a factor > 0");
+    return {ValueTrackTarget{"camera.orbit.distance"},
+            {{0.0, distance}, {double(std::max(frames - 1, 1)), distance / factor}},
+            Interpolation::Smooth};
 }
 
 }  // namespace tstyles

@@ -30,6 +30,7 @@ frame_matches_render() {
 case_focus_sweep_frame() { frame_matches_render "$FIGURE1" 13 --sweep-focus 1 --frames 20; }
 case_exposure_frame() { frame_matches_render "$HURRICANE" 5 --exposure grow --frames 8; }
 case_orbit_frame() { frame_matches_render "$FIGURE1" 3 --orbit 90 --frames 6 --annotate; }
+case_camera_path_frame() { frame_matches_render "$HURRICANE" 4 --elevation 40 --zoom 1.5 --frames 6; }
 
 # Each movie format decodes back to the frames, size and rate asked for.
 movie_decodes() {

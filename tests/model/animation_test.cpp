@@ -207,3 +207,26 @@ TEST(RecordedKeys, BecomeTracksOfTheNumbersThatMove) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(AnimationPresets, CameraRisesAndMovesInEasedBetweenTheEnds) {
+    using namespace tstyles;
+    Scene scene = parseScene(sceneWith(""), origin);  // orbit at azimuth 30, elevation 20
+    scene.animation.frames = 11;
+    scene.animation.tracks = {elevationChange(scene, 90.0, 11, "--elevation"), zoomBy(scene, 4.0, 2.0, 11, "--zoom")};
+    const Scene first = sceneAtFrame(scene, 0);
+    const Scene middle = sceneAtFrame(scene, 5);
+    const Scene last = sceneAtFrame(scene, 10);
+    EXPECT_DOUBLE_EQ(std::get<OrbitCamera>(first.camera.pose).elevationDeg, 20.0);
+    EXPECT_DOUBLE_EQ(*std::get<OrbitCamera>(first.camera.pose).distance, 4.0);
+    // Halfway through a smooth ease is halfway in value.
+    EXPECT_DOUBLE_EQ(std::get<OrbitCamera>(middle.camera.pose).elevationDeg, 54.5);
+    EXPECT_DOUBLE_EQ(*std::get<OrbitCamera>(middle.camera.pose).distance, 3.0);
+    EXPECT_DOUBLE_EQ(std::get<OrbitCamera>(last.camera.pose).elevationDeg, 89.0);  // stops short of the pole
+    EXPECT_DOUBLE_EQ(*std::get<OrbitCamera>(last.camera.pose).distance, 2.0);
+    scene.camera.pose = LookAtCamera{};
+    EXPECT_THROW(zoomBy(scene, 4.0, 2.0, 11, "--zoom"), InputError);
+}
+
+}  // namespace

@@ -26,5 +26,11 @@ std::vector<AnimationTrack> playback(int stepCount, int frames);
 // frame short of the turn, so a full turn loops without a repeated frame. InputError naming `field`
 // for a look-at camera.
 AnimationTrack orbitTurn(const Scene& scene, double degrees, int frames, const std::string& field);
+// The orbit camera rises (or sinks) by `degrees` over the movie, eased in and out, stopping short
+// of the poles (±89°).
+AnimationTrack elevationChange(const Scene& scene, double degrees, int frames, const std::string& field);
+// The orbit camera moves in from `distance` (where it stands at the start) to distance / factor,
+// eased in and out; a factor below 1 moves out.
+AnimationTrack zoomBy(const Scene& scene, double distance, double factor, int frames, const std::string& field);
 
 }  // namespace tstyles
