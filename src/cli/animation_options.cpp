@@ -37,8 +37,7 @@ void addAnimationOptions(CLI::App& command, AnimationOptions& options) {
     command.add_flag("--playback", options.playback, "Preset: one time-step at a time (ordinary playback)");
     command.add_option("--orbit", options.orbitDegrees, "Preset: the camera turns by DEGREES about the vertical");
     command.add_option("--elevation", options.elevationDegrees, "Preset: the camera rises by DEGREES (negative: sinks)");
-    command.add_option("--zoom", options.zoomFactor, "Preset: the camera moves in by FACTOR (below 1: out)")
-        ->check(CLI::PositiveNumber);
+    command.add_option("--zoom", options.zoomFactor, "Preset: the camera moves in by FACTOR (below 1: out)");
     command.add_option("--frames", options.frames, "Number of frames (default: the scene's, or the presets')")
         ->check(CLI::Range(1, 1000000));
     command.add_option("--fps", options.framesPerSecond, "Frames per second (default: the scene's, else 24)")

@@ -15,6 +15,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
+std::string framesText(int count) { return std::to_string(count) + (count == 1 ? " frame" : " frames"); }
+
 bool holdsOnlyFrames(const fs::path& folder) {
     for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
         const std::string name = entry.path().filename().string();
@@ -47,7 +49,7 @@ public:
         if (error) throwInputError(target_, "", "cannot move the frames into place: " + error.message());
         finished_ = true;
     }
-    std::string description() const override { return std::to_string(count_) + " PNG frames"; }
+    std::string description() const override { return framesText(count_) + " as PNG"; }
     double framesPerSecond() const override { return framesPerSecond_; }
 
 private:
@@ -66,7 +68,7 @@ public:
     void add(const Image& frame) override { writer_.addFrame(frame); }
     void finish() override { writer_.finish(); }
     std::string description() const override {
-        return std::to_string(writer_.framesWritten()) + " frames, " + writer_.codecName();
+        return framesText(writer_.framesWritten()) + ", " + writer_.codecName();
     }
     double framesPerSecond() const override { return framesPerSecond_; }
 

@@ -57,7 +57,7 @@ case_scene_animation_section() {
         {"value": "camera.orbit.azimuth_deg", "keys": [[0, 0], [4, 180]]}]}'
     run_tstyles -- animate "$SCRATCH/scene.json" -o "$SCRATCH/frames/"
     expect_exit 0
-    expect_stdout_contains "(4 PNG frames, 64x64 at 8 fps;"
+    expect_stdout_contains "(4 frames as PNG, 64x64 at 8 fps;"
     [ "$(find "$SCRATCH/frames" -name 'frame-*.png' | wc -l)" -eq 4 ] || fail "expected 4 frames"
 }
 
