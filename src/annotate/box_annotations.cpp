@@ -10,8 +10,15 @@
 namespace tstyles {
 namespace {
 
-constexpr glm::vec4 kBoxColour{1.0f, 1.0f, 1.0f, 0.55f};
-constexpr glm::vec4 kTickText{1.0f, 1.0f, 1.0f, 0.95f};
+constexpr glm::vec4 kTickText{1.0f, 1.0f, 1.0f, 0.95f};  // on the scale bar's dark panel
+
+// The box and its ticks lie on the picture itself: white over a dark background, near-black over a
+// light one (Figure 4's white), so that they show on either.
+glm::vec4 boxInk(const glm::dvec4& background, float alpha) {
+    const double luma = 0.2126 * background.r + 0.7152 * background.g + 0.0722 * background.b;
+    const float level = background.a > 0.5 && luma > 0.5 ? 0.1f : 1.0f;
+    return {level, level, level, alpha};
+}
 
 // Pixel position of a display-space point; none behind the eye.
 std::optional<glm::dvec2> project(const View& view, glm::ivec2 size, const glm::dvec3& point) {
@@ -31,7 +38,10 @@ std::string axisTitle(const SpatialAxis& axis, int index) {
     return axis.unit.empty() ? name : name + " (" + axis.unit + ")";
 }
 
-void drawBox(PanelStack& panels, const Series& series, const DisplayFrame& frame, const View& view) {
+void drawBox(PanelStack& panels, const Series& series, const DisplayFrame& frame, const View& view,
+             const glm::dvec4& background) {
+    const glm::vec4 lineInk = boxInk(background, 0.55f);
+    const glm::vec4 textInk = boxInk(background, 0.95f);
     Canvas& canvas = panels.canvas();
     const PanelMetrics& m = panels.metrics();
     const glm::ivec2 size(canvas.width(), canvas.height());
@@ -45,14 +55,31 @@ void drawBox(PanelStack& panels, const Series& series, const DisplayFrame& frame
             if (from & (1 << axis)) continue;
             const auto a = project(view, size, corner(from));
             const auto b = project(view, size, corner(from | (1 << axis)));
-            if (a && b) canvas.drawLine(*a, *b, 1.0, kBoxColour);
+            if (a && b) canvas.drawLine(*a, *b, 1.0, lineInk);
         }
     const auto centre = project(view, size, bounds.center());
     if (!centre) return;
-    // Ticks along the three edges that leave the lower corner, labelled in the file's units.
+    // Ticks along one edge per axis, labelled in the file's units: of the four parallel edges, the
+    // one farthest out from the box's centre on screen, leaning to the bottom (the left for the
+    // vertical axis), so that ticks and labels stand outside the data rather than over it.
     for (int axis = 0; axis < 3; ++axis) {
-        const glm::dvec3 start = corner(0);
-        const glm::dvec3 end = corner(1 << axis);
+        int chosen = -1;
+        double bestScore = -1e300;
+        for (int from = 0; from < 8; ++from) {
+            if (from & (1 << axis)) continue;
+            const auto p = project(view, size, corner(from));
+            const auto q = project(view, size, corner(from | (1 << axis)));
+            if (!p || !q) continue;
+            const glm::dvec2 middle = 0.5 * (*p + *q);
+            const glm::dvec2 offset = middle - *centre;
+            // An edge whose middle is off the image would carry no visible tick: any edge on it wins.
+            const bool visible = middle.x >= 0.0 && middle.y >= 0.0 && middle.x <= size.x && middle.y <= size.y;
+            const double score = (visible ? 1e6 : 0.0) + glm::length(offset) + 0.5 * (axis == 1 ? -offset.x : offset.y);
+            if (score > bestScore) bestScore = score, chosen = from;
+        }
+        if (chosen < 0) continue;
+        const glm::dvec3 start = corner(chosen);
+        const glm::dvec3 end = corner(chosen | (1 << axis));
         const auto a = project(view, size, start);
         const auto b = project(view, size, end);
         if (!a || !b || glm::length(*b - *a) < 3.0 * m.pixels) continue;
@@ -74,16 +101,19 @@ void drawBox(PanelStack& panels, const Series& series, const DisplayFrame& frame
         for (double value = std::ceil(low / step - 1e-9) * step; value <= high + 1e-9 * step; value += step) {
             const double t = (value - v0) / (v1 - v0);
             const glm::dvec2 at = *a + t * (*b - *a);
-            canvas.drawLine(at, at + outward * (0.5 * m.pixels), 1.0, kTickText);
+            canvas.drawLine(at, at + outward * (0.5 * m.pixels), 1.0, textInk);
             const std::string label = tickLabel(value, step);
             const glm::dvec2 labelCentre = at + outward * (1.3 * m.pixels);
             canvas.drawText(panels.font(), label, {labelCentre.x - 0.5 * m.textWidth(label), labelCentre.y + 0.35 * m.pixels},
-                            m.pixels, kTickText);
+                            m.pixels, textInk);
         }
         const std::string title = axisTitle(series.axes[std::size_t(axis)], axis);
+        // The axis title beyond the edge's end, kept inside the image.
         const glm::dvec2 titleAt = *b + edge * (0.8 * m.pixels) + outward * (2.6 * m.pixels);
-        canvas.drawText(panels.font(), title, {titleAt.x - 0.5 * m.textWidth(title), titleAt.y + 0.35 * m.pixels},
-                        m.pixels, kTickText);
+        const double titleWidth = m.textWidth(title);
+        const double titleLeft = std::clamp(titleAt.x - 0.5 * titleWidth, 2.0, std::max(2.0, size.x - titleWidth - 2.0));
+        const double titleBaseline = std::clamp(titleAt.y + 0.35 * m.pixels, double(m.pixels), size.y - 2.0);
+        canvas.drawText(panels.font(), title, {titleLeft, titleBaseline}, m.pixels, textInk);
     }
 }
 
@@ -111,7 +141,7 @@ void drawScaleBar(PanelStack& panels, const Series& series, const DisplayFrame& 
 
 void drawBoxAndScaleBar(PanelStack& panels, const Scene& scene, const Series& series, const DisplayFrame& frame,
                         const View& view) {
-    if (scene.annotations.box) drawBox(panels, series, frame, view);
+    if (scene.annotations.box) drawBox(panels, series, frame, view, scene.background);
     if (scene.annotations.scaleBar) drawScaleBar(panels, series, frame, view);
 }
 
