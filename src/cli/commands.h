@@ -66,5 +66,6 @@ Command addViewCommand(CLI::App& app);
 Command addConvertCommand(CLI::App& app);
 Command addSceneCommand(CLI::App& app);
 Command addAnimateCommand(CLI::App& app);
+Command addCompareCommand(CLI::App& app);
 
 }  // namespace tstyles::cli

@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "image_comparison.h"
+#include "tstyles/image/image_comparison.h"
 #include "render_test_support.h"
 #include "tstyles/data/manifest.h"
 #include "tstyles/image/image_io.h"

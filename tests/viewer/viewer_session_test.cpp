@@ -19,7 +19,7 @@
 #include <sstream>
 #include <string>
 
-#include "render/image_comparison.h"
+#include "tstyles/image/image_comparison.h"
 #include "tstyles/image/image_io.h"
 #include "tstyles/render/style_library.h"
 #include "tstyles/scene/scene_file.h"
@@ -107,11 +107,11 @@ protected:
         const Image headless = renderHeadless(scene, out_ / "headless.png");
         ASSERT_EQ(window.width, headless.width);
         ASSERT_EQ(window.height, headless.height);
-        const auto difference = tstyles::testing::compareImages(window, headless, 1);
+        const auto difference = tstyles::compareImages(window, headless, 1);
         const bool close = difference.maxDelta <= kMaxLevels && difference.meanDelta <= kMaxMeanLevels &&
                            difference.failingFraction <= kMaxFractionAboveOneLevel;
-        if (!close) tstyles::writeImage(tstyles::testing::differenceImage(window, headless, 16.0f), out_ / "difference.png");
-        EXPECT_TRUE(close) << tstyles::testing::describe(difference) << " (window " << windowImage << ", headless "
+        if (!close) tstyles::writeImage(tstyles::differenceImage(window, headless, 16.0f), out_ / "difference.png");
+        EXPECT_TRUE(close) << tstyles::describe(difference) << " (window " << windowImage << ", headless "
                            << (out_ / "headless.png") << ", difference x16 " << (out_ / "difference.png") << ")";
     }
 

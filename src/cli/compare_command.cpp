@@ -1,0 +1,123 @@
+// `tstyles compare EXPECTED ACTUAL`: two images against stated thresholds (docs/ci.md): the figures,
+// the worst pixels, a heat map and a side-by-side picture; exit 0 within, 1 beyond, 2 bad input.
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+#include "tstyles/core/errors.h"
+#include "tstyles/image/image_comparison.h"
+#include "tstyles/image/image_io.h"
+
+namespace tstyles::cli {
+namespace {
+
+struct CompareOptions {
+    std::filesystem::path expected;
+    std::filesystem::path actual;
+    std::optional<std::filesystem::path> thresholdsFile;
+    std::optional<int> maxDelta;
+    std::optional<int> pixelThreshold;
+    std::optional<double> maxFailingShare;  // percent
+    std::optional<double> maxMean;
+    std::optional<double> minSsim;
+    std::optional<std::filesystem::path> diff;
+    std::optional<std::filesystem::path> sideBySide;
+};
+
+// {"max_difference": 2, "pixel_threshold": 1, "max_failing_share": 0.1, "max_mean": 0.05, "min_ssim": 0.99}
+ComparisonThresholds readThresholds(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    if (!in) throwInputError(file, "", "cannot open the thresholds file");
+    nlohmann::json root;
+    try {
+        root = nlohmann::json::parse(in, nullptr, true, true);
+    } catch (const nlohmann::json::exception& error) {
+        throwInputError(file, "", std::string("not valid JSON: ") + error.what());
+    }
+    if (!root.is_object()) throwInputError(file, "", "expected an object of thresholds");
+    ComparisonThresholds thresholds;
+    for (const auto& [key, value] : root.items()) {
+        if (!value.is_number()) throwInputError(file, key, "expected a number");
+        const double number = value.get<double>();
+        if (!(number >= 0.0)) throwInputError(file, key, "must be >= 0");
+        if (key == "max_difference") thresholds.maxDelta = int(number);
+        else if (key == "pixel_threshold") thresholds.pixelThreshold = int(number);
+        else if (key == "max_failing_share") thresholds.maxFailingFraction = number / 100.0;
+        else if (key == "max_mean") thresholds.maxMeanDelta = number;
+        else if (key == "min_ssim") thresholds.minSsim = number;
+        else
+            throwInputError(file, key, "unknown key; allowed: max_difference, pixel_threshold, max_failing_share, "
+                                       "max_mean, min_ssim");
+    }
+    return thresholds;
+}
+
+ComparisonThresholds thresholdsOf(const CompareOptions& options) {
+    ComparisonThresholds thresholds = options.thresholdsFile ? readThresholds(*options.thresholdsFile) : ComparisonThresholds{};
+    if (options.maxDelta) thresholds.maxDelta = *options.maxDelta;
+    if (options.pixelThreshold) thresholds.pixelThreshold = *options.pixelThreshold;
+    if (options.maxFailingShare) thresholds.maxFailingFraction = *options.maxFailingShare / 100.0;
+    if (options.maxMean) thresholds.maxMeanDelta = *options.maxMean;
+    if (options.minSsim) thresholds.minSsim = *options.minSsim;
+    return thresholds;
+}
+
+int runCompare(const CompareOptions& options) {
+    const ComparisonThresholds thresholds = thresholdsOf(options);
+    for (const auto& output : {options.diff, options.sideBySide})
+        if (output) requireWritableImagePath(*output);
+    const Image expected = readImage(options.expected);
+    const Image actual = readImage(options.actual);
+    if (expected.width != actual.width || expected.height != actual.height)
+        throwInputError(options.actual, "",
+                        "is " + std::to_string(actual.width) + "x" + std::to_string(actual.height) + " but " +
+                            options.expected.string() + " is " + std::to_string(expected.width) + "x" +
+                            std::to_string(expected.height) + "; images of different sizes cannot be compared");
+    const ImageDifference difference = compareImages(actual, expected, thresholds.pixelThreshold);
+    std::cout << "max difference   " << difference.maxDelta << "/255 (R " << difference.maxChannelDelta[0] << ", G "
+              << difference.maxChannelDelta[1] << ", B " << difference.maxChannelDelta[2] << ", A "
+              << difference.maxChannelDelta[3] << ")   limit " << thresholds.maxDelta << "\n"
+              << "pixels beyond " << thresholds.pixelThreshold << "  " << 100.0 * difference.failingFraction
+              << " %   limit " << 100.0 * thresholds.maxFailingFraction << " %\n"
+              << "mean difference  " << difference.meanDelta << "/255   limit " << thresholds.maxMeanDelta << "\n"
+              << "SSIM             " << difference.ssim << "   limit " << thresholds.minSsim << "\n";
+    for (std::size_t i = 0; i < difference.worstPixels.size(); ++i)
+        std::cout << (i == 0 ? "worst pixels     " : "                 ") << "(" << difference.worstPixels[i].x << ", "
+                  << difference.worstPixels[i].y << "): " << difference.worstDeltas[i] << "/255\n";
+    const Image heat = differenceHeatMap(actual, expected, std::max(8, difference.maxDelta));
+    if (options.diff) writeImage(heat, *options.diff);
+    if (options.sideBySide) writeImage(sideBySide(expected, actual, heat), *options.sideBySide);
+    const std::vector<std::string> exceeded = thresholdsExceeded(difference, thresholds);
+    if (exceeded.empty()) {
+        std::cout << "within the thresholds\n";
+        return kExitSuccess;
+    }
+    for (const std::string& line : exceeded) std::cout << "BEYOND: " << line << "\n";
+    return kExitFailure;
+}
+
+}  // namespace
+
+Command addCompareCommand(CLI::App& app) {
+    auto options = std::make_shared<CompareOptions>();
+    CLI::App* command = app.add_subcommand(
+        "compare", "Compare two images against thresholds (exit 0 within, 1 beyond, 2 bad input); docs/ci.md");
+    command->add_option("expected", options->expected, "The reference image (any format OpenImageIO reads)")->required();
+    command->add_option("actual", options->actual, "The image to check")->required();
+    command->add_option("--thresholds", options->thresholdsFile,
+                        "A JSON file: max_difference, pixel_threshold, max_failing_share (%), max_mean, min_ssim");
+    command->add_option("--max-difference", options->maxDelta, "Largest channel difference allowed, 1/255 steps (2)");
+    command->add_option("--pixel-threshold", options->pixelThreshold,
+                        "A pixel fails when a channel differs by more than this, 1/255 steps (1)");
+    command->add_option("--max-failing-share", options->maxFailingShare, "Share of failing pixels allowed, % (0.1)");
+    command->add_option("--max-mean", options->maxMean, "Mean difference allowed, 1/255 steps (0.05)");
+    command->add_option("--min-ssim", options->minSsim, "Smallest mean SSIM allowed (0.99)");
+    command->add_option("--diff", options->diff, "Write a heat map of the difference here");
+    command->add_option("--side-by-side", options->sideBySide, "Write expected | actual | heat map here");
+    return {command, [options] { return runCompare(*options); }};
+}
+
+}  // namespace tstyles::cli
