@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
-# Re-renders the golden images listed in tests/golden/scenes.txt at 256x256 with build/tstyles.
-# Run it only after looking at what changed (the failing test writes actual and difference images
-# to build/test-output/), then look at every new image before committing it. See docs/testing.md.
+# Re-renders golden images of the project's suite (tests/golden/suite.json) with build/tstyles:
+# the cases named (comma-separated), or all of them. Run it only after looking at what changed (the
+# failing check writes expected, actual and difference images and an HTML page to
+# build/test-output/check-*/), then look at every new image before committing it. docs/testing.md.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 tstyles="$root/build/tstyles"
 [ -x "$tstyles" ] || { echo "refresh_goldens: build first (tools/test.sh or cmake --build build)" >&2; exit 1; }
-grep -v '^#' "$root/tests/golden/scenes.txt" | while read -r name; do
-  [ -n "$name" ] || continue
-  "$tstyles" render "$root/data/scenes/$name.json" -o "$root/tests/golden/$name.png" \
-    --width 256 --height 256 --backend "${TSTYLES_BACKEND:-auto}"
-done
+if [ "$#" -gt 0 ]; then
+  "$tstyles" check "$root/tests/golden/suite.json" --update "$1" --report "$root/build/test-output/check-refresh" \
+    --backend "${TSTYLES_BACKEND:-auto}"
+else
+  "$tstyles" check "$root/tests/golden/suite.json" --update --all --report "$root/build/test-output/check-refresh" \
+    --backend "${TSTYLES_BACKEND:-auto}"
+fi

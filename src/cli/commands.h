@@ -67,5 +67,6 @@ Command addConvertCommand(CLI::App& app);
 Command addSceneCommand(CLI::App& app);
 Command addAnimateCommand(CLI::App& app);
 Command addCompareCommand(CLI::App& app);
+Command addCheckCommand(CLI::App& app);
 
 }  // namespace tstyles::cli

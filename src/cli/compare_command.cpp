@@ -1,12 +1,10 @@
 // `tstyles compare EXPECTED ACTUAL`: two images against stated thresholds (docs/ci.md): the figures,
 // the worst pixels, a heat map and a side-by-side picture; exit 0 within, 1 beyond, 2 bad input.
-#include <fstream>
 #include <iostream>
 #include <memory>
 
-#include <nlohmann/json.hpp>
-
 #include "commands.h"
+#include "comparison_thresholds.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/image/image_comparison.h"
 #include "tstyles/image/image_io.h"
@@ -27,36 +25,10 @@ struct CompareOptions {
     std::optional<std::filesystem::path> sideBySide;
 };
 
-// {"max_difference": 2, "pixel_threshold": 1, "max_failing_share": 0.1, "max_mean": 0.05, "min_ssim": 0.99}
-ComparisonThresholds readThresholds(const std::filesystem::path& file) {
-    std::ifstream in(file);
-    if (!in) throwInputError(file, "", "cannot open the thresholds file");
-    nlohmann::json root;
-    try {
-        root = nlohmann::json::parse(in, nullptr, true, true);
-    } catch (const nlohmann::json::exception& error) {
-        throwInputError(file, "", std::string("not valid JSON: ") + error.what());
-    }
-    if (!root.is_object()) throwInputError(file, "", "expected an object of thresholds");
-    ComparisonThresholds thresholds;
-    for (const auto& [key, value] : root.items()) {
-        if (!value.is_number()) throwInputError(file, key, "expected a number");
-        const double number = value.get<double>();
-        if (!(number >= 0.0)) throwInputError(file, key, "must be >= 0");
-        if (key == "max_difference") thresholds.maxDelta = int(number);
-        else if (key == "pixel_threshold") thresholds.pixelThreshold = int(number);
-        else if (key == "max_failing_share") thresholds.maxFailingFraction = number / 100.0;
-        else if (key == "max_mean") thresholds.maxMeanDelta = number;
-        else if (key == "min_ssim") thresholds.minSsim = number;
-        else
-            throwInputError(file, key, "unknown key; allowed: max_difference, pixel_threshold, max_failing_share, "
-                                       "max_mean, min_ssim");
-    }
-    return thresholds;
-}
-
 ComparisonThresholds thresholdsOf(const CompareOptions& options) {
-    ComparisonThresholds thresholds = options.thresholdsFile ? readThresholds(*options.thresholdsFile) : ComparisonThresholds{};
+    ComparisonThresholds thresholds;
+    if (options.thresholdsFile)
+        thresholds = thresholdsFromJson(readJsonFile(*options.thresholdsFile), thresholds, *options.thresholdsFile, "");
     if (options.maxDelta) thresholds.maxDelta = *options.maxDelta;
     if (options.pixelThreshold) thresholds.pixelThreshold = *options.pixelThreshold;
     if (options.maxFailingShare) thresholds.maxFailingFraction = *options.maxFailingShare / 100.0;

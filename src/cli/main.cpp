@@ -12,7 +12,8 @@ int main(int argc, char** argv) {
     const std::vector<cli::Command> commands = {cli::addRenderCommand(app), cli::addInfoCommand(app),
                                                 cli::addBenchCommand(app), cli::addViewCommand(app),
                                                 cli::addConvertCommand(app), cli::addSceneCommand(app),
-                                                cli::addAnimateCommand(app), cli::addCompareCommand(app)};
+                                                cli::addAnimateCommand(app), cli::addCompareCommand(app),
+                                                cli::addCheckCommand(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
