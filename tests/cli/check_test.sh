@@ -71,6 +71,23 @@ case_all_pass() {
     grep -q 'tests="3" failures="0" errors="0"' "$SCRATCH/report/junit.xml" || fail "junit.xml: $(cat "$SCRATCH/report/junit.xml")"
 }
 
+# What docs/ci.md promises: one driver renders the same bytes run after run, and EGL and OSMesa
+# (both llvmpipe here) agree within compare's default thresholds.
+case_deterministic_renders() {
+    local scene="$SCENES/figure1-styled-focus-step3.json"
+    for run in 1 2; do
+        run_tstyles -- render "$scene" --width 96 --height 96 --backend egl -o "$SCRATCH/egl-$run.exr"
+        expect_exit 0
+    done
+    # Float pixels compared exactly (the files' metadata holds a time stamp, so not their bytes).
+    "$OIIOTOOL" --fail 0 --failpercent 0 --diff "$SCRATCH/egl-1.exr" "$SCRATCH/egl-2.exr" >"$SCRATCH/diff.txt" ||
+        fail "two EGL renders of one scene differ: $(cat "$SCRATCH/diff.txt")"
+    run_tstyles -- render "$scene" --width 96 --height 96 --backend osmesa -o "$SCRATCH/osmesa.exr"
+    expect_exit 0
+    run_tstyles -- compare "$SCRATCH/egl-1.exr" "$SCRATCH/osmesa.exr"
+    expect_exit 0
+}
+
 bad_suite() {
     local body=$1 expected=$2
     printf '%s\n' "$body" >"$SCRATCH/suite.json"
