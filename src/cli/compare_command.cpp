@@ -1,7 +1,11 @@
 // `tstyles compare EXPECTED ACTUAL`: two images against stated thresholds (docs/ci.md): the figures,
 // the worst pixels, a heat map and a side-by-side picture; exit 0 within, 1 beyond, 2 bad input.
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include "commands.h"
 #include "comparison_thresholds.h"
@@ -37,6 +41,30 @@ ComparisonThresholds thresholdsOf(const CompareOptions& options) {
     return thresholds;
 }
 
+// A stored value as the 8-bit files show it, so a reader can find the pixel in an image viewer.
+std::string bytesOf(const glm::vec4& value) {
+    std::ostringstream text;
+    for (int c = 0; c < 4; ++c)
+        text << (c == 0 ? "" : " ") << std::setw(3) << std::lround(std::clamp(value[c], 0.0f, 1.0f) * 255.0f);
+    return text.str();
+}
+
+void printFigures(const ImageDifference& difference, const ComparisonThresholds& thresholds) {
+    std::cout << "max difference   " << difference.maxDelta << "/255 (R " << difference.maxChannelDelta[0] << ", G "
+              << difference.maxChannelDelta[1] << ", B " << difference.maxChannelDelta[2] << ", A "
+              << difference.maxChannelDelta[3] << ")   limit " << thresholds.maxDelta << "\n"
+              << "pixels beyond " << thresholds.pixelThreshold << "  " << 100.0 * difference.failingFraction
+              << " %   limit " << 100.0 * thresholds.maxFailingFraction << " %\n"
+              << "mean difference  " << difference.meanDelta << "/255   limit " << thresholds.maxMeanDelta << "\n"
+              << "SSIM             " << difference.ssim << "   limit " << thresholds.minSsim << "\n";
+    if (difference.worstPixels.empty()) return;
+    std::cout << "worst pixels     x     y  diff  expected RGBA     actual RGBA\n";
+    for (const WorstPixel& worst : difference.worstPixels)
+        std::cout << "             " << std::setw(5) << worst.position.x << " " << std::setw(5) << worst.position.y << " "
+                  << std::setw(5) << worst.delta << "  " << bytesOf(worst.expected) << "   " << bytesOf(worst.actual)
+                  << "\n";
+}
+
 int runCompare(const CompareOptions& options) {
     const ComparisonThresholds thresholds = thresholdsOf(options);
     for (const auto& output : {options.diff, options.sideBySide})
@@ -49,16 +77,7 @@ int runCompare(const CompareOptions& options) {
                             options.expected.string() + " is " + std::to_string(expected.width) + "x" +
                             std::to_string(expected.height) + "; images of different sizes cannot be compared");
     const ImageDifference difference = compareImages(actual, expected, thresholds.pixelThreshold);
-    std::cout << "max difference   " << difference.maxDelta << "/255 (R " << difference.maxChannelDelta[0] << ", G "
-              << difference.maxChannelDelta[1] << ", B " << difference.maxChannelDelta[2] << ", A "
-              << difference.maxChannelDelta[3] << ")   limit " << thresholds.maxDelta << "\n"
-              << "pixels beyond " << thresholds.pixelThreshold << "  " << 100.0 * difference.failingFraction
-              << " %   limit " << 100.0 * thresholds.maxFailingFraction << " %\n"
-              << "mean difference  " << difference.meanDelta << "/255   limit " << thresholds.maxMeanDelta << "\n"
-              << "SSIM             " << difference.ssim << "   limit " << thresholds.minSsim << "\n";
-    for (std::size_t i = 0; i < difference.worstPixels.size(); ++i)
-        std::cout << (i == 0 ? "worst pixels     " : "                 ") << "(" << difference.worstPixels[i].x << ", "
-                  << difference.worstPixels[i].y << "): " << difference.worstDeltas[i] << "/255\n";
+    printFigures(difference, thresholds);
     const Image heat = differenceHeatMap(actual, expected, std::max(8, difference.maxDelta));
     if (options.diff) writeImage(heat, *options.diff);
     if (options.sideBySide) writeImage(sideBySide(expected, actual, heat), *options.sideBySide);
@@ -81,12 +100,18 @@ Command addCompareCommand(CLI::App& app) {
     command->add_option("actual", options->actual, "The image to check")->required();
     command->add_option("--thresholds", options->thresholdsFile,
                         "A JSON file: max_difference, pixel_threshold, max_failing_share (%), max_mean, min_ssim");
-    command->add_option("--max-difference", options->maxDelta, "Largest channel difference allowed, 1/255 steps (2)");
+    // Ranges checked by CLI11 (exit 2): a negative limit or an SSIM floor above 1 would fail every pair,
+    // and no difference of 8-bit values exceeds 255 steps.
+    command->add_option("--max-difference", options->maxDelta, "Largest channel difference allowed, 1/255 steps (2)")
+        ->check(CLI::Range(0, 255));
     command->add_option("--pixel-threshold", options->pixelThreshold,
-                        "A pixel fails when a channel differs by more than this, 1/255 steps (1)");
-    command->add_option("--max-failing-share", options->maxFailingShare, "Share of failing pixels allowed, % (0.1)");
-    command->add_option("--max-mean", options->maxMean, "Mean difference allowed, 1/255 steps (0.05)");
-    command->add_option("--min-ssim", options->minSsim, "Smallest mean SSIM allowed (0.99)");
+                        "A pixel fails when a channel differs by more than this, 1/255 steps (1)")
+        ->check(CLI::Range(0, 255));
+    command->add_option("--max-failing-share", options->maxFailingShare, "Share of failing pixels allowed, % (0.1)")
+        ->check(CLI::Range(0.0, 100.0));
+    command->add_option("--max-mean", options->maxMean, "Mean difference allowed, 1/255 steps (0.05)")
+        ->check(CLI::Range(0.0, 255.0));
+    command->add_option("--min-ssim", options->minSsim, "Smallest mean SSIM allowed (0.99)")->check(CLI::Range(0.0, 1.0));
     command->add_option("--diff", options->diff, "Write a heat map of the difference here");
     command->add_option("--side-by-side", options->sideBySide, "Write expected | actual | heat map here");
     return {command, [options] { return runCompare(*options); }};

@@ -1,6 +1,7 @@
 // Reading comparison thresholds and small JSON files for compare and check.
 #include "comparison_thresholds.h"
 
+#include <cmath>
 #include <fstream>
 
 #include "tstyles/core/errors.h"
@@ -28,6 +29,11 @@ ComparisonThresholds thresholdsFromJson(const nlohmann::json& object, Comparison
         if (!value.is_number()) throwInputError(file, keyPath(key), "expected a number");
         const double number = value.get<double>();
         if (!(number >= 0.0)) throwInputError(file, keyPath(key), "must be >= 0");
+        // Differences are whole 1/255 steps; 2.5 would silently act as 2.
+        if ((key == "max_difference" || key == "pixel_threshold") && number != std::floor(number))
+            throwInputError(file, keyPath(key), "must be a whole number of 1/255 steps");
+        if (key == "max_failing_share" && number > 100.0) throwInputError(file, keyPath(key), "is a percentage, <= 100");
+        if (key == "min_ssim" && number > 1.0) throwInputError(file, keyPath(key), "must be <= 1 (SSIM of identical images)");
         if (key == "max_difference") base.maxDelta = int(number);
         else if (key == "pixel_threshold") base.pixelThreshold = int(number);
         else if (key == "max_failing_share") base.maxFailingFraction = number / 100.0;

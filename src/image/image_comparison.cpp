@@ -46,8 +46,8 @@ ImageDifference compareImages(const Image& actual, const Image& expected, int pi
     result.failingFraction = double(failing) / pixels;
     std::stable_sort(deltas.begin(), deltas.end(), [](const auto& l, const auto& r) { return l.first > r.first; });
     for (std::size_t i = 0; i < std::min<std::size_t>(5, deltas.size()); ++i) {
-        result.worstPixels.push_back(deltas[i].second);
-        result.worstDeltas.push_back(deltas[i].first);
+        const glm::ivec2 at = deltas[i].second;
+        result.worstPixels.push_back({at, deltas[i].first, expected.at(at.x, at.y), actual.at(at.x, at.y)});
     }
     result.ssim = structuralSimilarity(actual, expected);
     return result;
@@ -119,9 +119,8 @@ std::string describe(const ImageDifference& difference) {
          << difference.maxChannelDelta[1] << ", B " << difference.maxChannelDelta[2] << ", A "
          << difference.maxChannelDelta[3] << "), mean delta " << difference.meanDelta << "/255, failing pixels "
          << difference.failingFraction * 100.0 << " %, SSIM " << difference.ssim << "; worst at";
-    for (std::size_t i = 0; i < difference.worstPixels.size(); ++i)
-        text << " (" << difference.worstPixels[i].x << ", " << difference.worstPixels[i].y << ": "
-             << difference.worstDeltas[i] << ")";
+    for (const WorstPixel& worst : difference.worstPixels)
+        text << " (" << worst.position.x << ", " << worst.position.y << ": " << worst.delta << ")";
     return text.str();
 }
 

@@ -24,6 +24,8 @@ case_beyond_writes_pictures() {
     run_tstyles -- compare "$SCRATCH/a.png" "$SCRATCH/b.png" --diff "$SCRATCH/diff.png" --side-by-side "$SCRATCH/sbs.png"
     expect_exit 1
     expect_stdout_contains "BEYOND: max delta 26/255 > 2/255"
+    # The first of the changed square in row order, with both values as the files store them.
+    expect_stdout_contains "                8     8    26   51 102 153 255    51 128 153 255"
     expect_image "$SCRATCH/diff.png" 32 32
     expect_image "$SCRATCH/sbs.png" 104 32
     # Loosened on the command line, the same pair passes.
@@ -42,6 +44,25 @@ case_thresholds_file() {
     run_tstyles -- compare "$SCRATCH/a.png" "$SCRATCH/b.png" --thresholds "$SCRATCH/bad.json"
     expect_exit 2
     expect_stderr_contains "$SCRATCH/bad.json: tolerance: unknown key"
+    # Differences are whole 1/255 steps: 2.5 is refused rather than read as 2.
+    echo '{"max_difference": 2.5}' >"$SCRATCH/fraction.json"
+    run_tstyles -- compare "$SCRATCH/a.png" "$SCRATCH/b.png" --thresholds "$SCRATCH/fraction.json"
+    expect_exit 2
+    expect_stderr_contains "$SCRATCH/fraction.json: max_difference: must be a whole number"
+    echo '{"min_ssim": 1.5}' >"$SCRATCH/ssim.json"
+    run_tstyles -- compare "$SCRATCH/a.png" "$SCRATCH/b.png" --thresholds "$SCRATCH/ssim.json"
+    expect_exit 2
+    expect_stderr_contains "$SCRATCH/ssim.json: min_ssim: must be <= 1"
+}
+
+case_option_out_of_range() {
+    make_flat "$SCRATCH/a.png" 16 16 0.2,0.4,0.6
+    run_tstyles -- compare "$SCRATCH/a.png" "$SCRATCH/a.png" --max-difference -1
+    expect_exit 2
+    expect_stderr_contains "--max-difference"
+    run_tstyles -- compare "$SCRATCH/a.png" "$SCRATCH/a.png" --min-ssim 1.5
+    expect_exit 2
+    expect_stderr_contains "--min-ssim"
 }
 
 case_different_sizes() {

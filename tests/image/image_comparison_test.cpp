@@ -34,6 +34,7 @@ TEST(ImageComparison, IdenticalImagesDifferInNothing) {
     EXPECT_EQ(difference.ssim, 1.0);
     EXPECT_TRUE(difference.worstPixels.empty());
     EXPECT_TRUE(thresholdsExceeded(difference, ComparisonThresholds{}).empty());
+    EXPECT_TRUE(within(difference, ComparisonThresholds{}));
 }
 
 TEST(ImageComparison, OnePixelChangedByAKnownAmount) {
@@ -46,7 +47,11 @@ TEST(ImageComparison, OnePixelChangedByAKnownAmount) {
     EXPECT_DOUBLE_EQ(difference.failingFraction, 0.01);  // 1 of 100 pixels
     EXPECT_DOUBLE_EQ(difference.meanDelta, 7.0 / 400.0);
     ASSERT_EQ(difference.worstPixels.size(), 1u);
-    EXPECT_EQ(difference.worstPixels[0], glm::ivec2(3, 7));
+    EXPECT_EQ(difference.worstPixels[0].position, glm::ivec2(3, 7));
+    EXPECT_EQ(difference.worstPixels[0].delta, 7);
+    EXPECT_EQ(difference.worstPixels[0].expected, expected.at(3, 7));
+    EXPECT_EQ(difference.worstPixels[0].actual, actual.at(3, 7));
+    EXPECT_FALSE(within(difference, ComparisonThresholds{}));
     const auto exceeded = thresholdsExceeded(difference, ComparisonThresholds{});
     ASSERT_EQ(exceeded.size(), 2u);  // max delta and failing share; the mean (0.0175) and SSIM are within
     EXPECT_EQ(exceeded[0], "max delta 7/255 > 2/255");
@@ -64,6 +69,18 @@ TEST(ImageComparison, AUniformOffsetGivesItsMeanAndSsimInClosedForm) {
     const double my = 255.0 * 0.4f;
     const double c1 = (0.01 * 255.0) * (0.01 * 255.0);
     EXPECT_NEAR(difference.ssim, (2.0 * mx * my + c1) / (mx * mx + my * my + c1), 1e-9);
+}
+
+TEST(ImageComparison, WorstPixelsAreTheFiveLargestLargestFirst) {
+    const Image expected = flat(8, 8, {0.0f, 0.0f, 0.0f, 1.0f});
+    Image actual = expected;
+    for (int i = 1; i <= 7; ++i) actual.set(i, i, {float(i) / 255.0f, 0.0f, 0.0f, 1.0f});  // delta i at (i, i)
+    const ImageDifference difference = compareImages(actual, expected, 1);
+    ASSERT_EQ(difference.worstPixels.size(), 5u);
+    for (int rank = 0; rank < 5; ++rank) {
+        EXPECT_EQ(difference.worstPixels[std::size_t(rank)].delta, 7 - rank);
+        EXPECT_EQ(difference.worstPixels[std::size_t(rank)].position, glm::ivec2(7 - rank));
+    }
 }
 
 TEST(ImageComparison, AShiftedEdgeIsCaughtBySsimWhileTheMeanStaysSmall) {

@@ -14,8 +14,20 @@
 
 namespace tstyles {
 
+// One of the pixels that differ most: where it is and what both images hold there (stored RGBA).
+struct WorstPixel {
+    glm::ivec2 position{0};
+    int delta = 0;  // its largest channel difference, 1/255 steps
+    glm::vec4 expected{0.0f};
+    glm::vec4 actual{0.0f};
+};
+
 struct ImageDifference {
-    // Differences in 1/255 steps of the stored RGBA values (premultiplied, as rendered).
+    // Differences in 1/255 steps of the stored RGBA values (premultiplied, as rendered), not of the
+    // straight colour over black: goldens are 8-bit files of exactly these values, so one step is the
+    // smallest change a file can show, and a change in alpha alone (a background that became
+    // transparent) counts. Values are clamped to [0, 1] first: float (EXR) images brighter than 1
+    // compare as 1.
     std::array<int, 4> maxChannelDelta{};  // R, G, B, A
     int maxDelta = 0;                      // the largest of them
     double meanDelta = 0.0;                // over all channels of all pixels
@@ -23,8 +35,7 @@ struct ImageDifference {
     // Mean SSIM (Wang, Bovik, Sheikh and Simoncelli 2004) of the luma of the colours composited over
     // black: 11x11 Gaussian window, sigma 1.5, C1 = (0.01 L)^2, C2 = (0.03 L)^2. 1 for identical images.
     double ssim = 1.0;
-    std::vector<glm::ivec2> worstPixels;  // up to 5, largest delta first
-    std::vector<int> worstDeltas;         // their largest channel delta
+    std::vector<WorstPixel> worstPixels;  // up to 5, largest delta first (earliest in row order on ties)
 };
 
 // Images of the same size (the caller checks and reports sizes). `pixelThreshold`: a pixel fails
@@ -44,6 +55,9 @@ struct ComparisonThresholds {
 };
 // Each threshold the difference exceeds, in words ("max delta 7/255 > 2/255"); empty: within.
 std::vector<std::string> thresholdsExceeded(const ImageDifference& difference, const ComparisonThresholds& thresholds);
+inline bool within(const ImageDifference& difference, const ComparisonThresholds& thresholds) {
+    return thresholdsExceeded(difference, thresholds).empty();
+}
 
 // |actual - expected| per channel, scaled by `gain` for visibility, alpha 1.
 Image differenceImage(const Image& actual, const Image& expected, float gain);
