@@ -3,8 +3,8 @@
 // plane, so the fan's sides are planes through the transducer. A time-step's worldToVoxel takes
 // world positions to grid-local ones; from there (azimuth, elevation, range) give the fractional
 // sample (beam across, beam along, range sample). Mirrors tstyles/data/beam_geometry.h.
-#define GRID_RECTILINEAR 0
-#define GRID_BEAM 1
+#include "contract.glsl"
+#include "time_steps.glsl"
 
 // Every beam grid's beam angles in radians, one run per axis and time-step (TimeStepInfo.grid.yz
 // says where each run starts): uneven beam spacing needs the list, not just the extent. Each run is

@@ -2,7 +2,7 @@
 // Entry/exit buffer generation, step 3: each fragment writes its ray parameter t. Faces turned to
 // the viewer are entries (red), the others exits (green, negated); MIN blending keeps the nearest
 // entry and the farthest exit of each proxy.
-#include "bindings.glsl"
+#include "contract.glsl"
 #include "ray.glsl"
 
 in FragmentData {

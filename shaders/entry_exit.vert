@@ -1,7 +1,7 @@
 #version 450 core
 // Entry/exit buffer generation, step 1: the 36 vertices of proxy box gl_InstanceID, made from
 // gl_VertexID (no vertex buffer needed).
-#include "bindings.glsl"
+#include "contract.glsl"
 #include "proxy_geometry.glsl"
 
 uniform mat4 viewProjection;

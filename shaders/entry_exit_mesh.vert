@@ -2,7 +2,7 @@
 // Entry/exit buffer generation, step 1 for proxy meshes (beam fans, the boundary faces of
 // structured grids): vertex gl_VertexID of the mesh of every such grid, drawn in one call; the
 // geometry and fragment stages are the boxes'.
-#include "bindings.glsl"
+#include "contract.glsl"
 #include "proxy_mesh.glsl"
 
 uniform mat4 viewProjection;

@@ -1,8 +1,6 @@
 // Final processing (paper 5.5): return the STF value, the TSTF value or the STF modulated by the
 // TSTF. Outside a segmentation mask the time-invariant STF applies.
-#define FINAL_STF 0
-#define FINAL_TSTF 1
-#define FINAL_MODULATE 2
+#include "contract.glsl"
 
 uniform int finalMode;
 

@@ -2,6 +2,7 @@
 // own grid (one-sided at its faces), turned into world space through the grid's placement and
 // spacing, so anisotropic, uneven and rotated grids shade correctly; structured and beam grids
 // have their own (structured_gradient.glsl, beamWorldGradient below).
+#include "volume_sampling.glsl"
 #include "structured_gradient.glsl"
 
 vec3 beamWorldGradient(int step, vec3 worldPosition);

@@ -2,25 +2,21 @@
 // keep the time-steps the ray meets (sorted by entry depth) and the ray depth, the minimum entry
 // and maximum exit over all of them.
 // Per time-step layer: entry depth in red, the negated exit depth in green (entry_exit.frag).
+#include "contract.glsl"
+#include "variant_switches.glsl"
+#include "time_steps.glsl"
 layout(binding = ENTRY_EXIT_UNIT) uniform sampler2DArray entryExitDepths;
 uniform int timeStepCount;
 // The time-steps that take part, first and last inclusive: the scene's exposure, or one time-step
 // alone (plain playback).
 uniform ivec2 exposedSteps;
 
-#ifndef MAX_TIME_STEPS
-#define MAX_TIME_STEPS 16
-#endif
 
 // The time-steps this ray meets, in order of entry, with their own [entry, exit] interval.
 int activeCount;
 int activeSteps[MAX_TIME_STEPS];
 vec2 activeIntervals[MAX_TIME_STEPS];
 
-// Fully aligned series read through the packed atlas (packed_time_steps.glsl).
-#ifndef PACKED_ALIGNED
-#define PACKED_ALIGNED 0
-#endif
 
 // Returns the ray depth (min entry, max exit); empty (x >= y) when the ray meets no time-step.
 vec2 extractVolumeOverlap(ivec2 pixel) {

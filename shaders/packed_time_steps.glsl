@@ -3,19 +3,17 @@
 // time-steps have the same grid, placement and entry/exit interval, so the ray's only slot gives
 // the voxel position of every one of them (one node lookup along uneven axes for all), and one
 // occupancy texel per brick (visible where any time-step is) decides empty-space skipping for all
-// of them at once. The switch PACKED_ALIGNED gets its default in overlap_extraction.glsl, which
-// uses it first.
+// of them at once. Included by the packed walk of the time-steps (walk_packed_groups.glsl) only.
 // With missing values the packed densities are premultiplied by validity (render::PackedValidity):
 // PER_GROUP: the group's four validities are a second RGBA16 texel at the same place; SHARED:
 // every time-step misses the same voxels, and one R16 texture of the grid holds their validity.
-#define PACKED_VALIDITY_NONE 0
-#define PACKED_VALIDITY_PER_GROUP 1
-#define PACKED_VALIDITY_SHARED 2
-#ifndef PACKED_VALIDITY
-#define PACKED_VALIDITY PACKED_VALIDITY_NONE
-#endif
+// The switch PACKED_VALIDITY holds one of the PACKED_VALIDITY_* codes of contract.glsl; the tests
+// of it below are constant, so the compiler keeps only the code of the one that holds.
+#include "contract.glsl"
+#include "variant_switches.glsl"
+#include "volume_sampling.glsl"
+#include "voxel_rays.glsl"
 
-#if PACKED_ALIGNED
 layout(binding = PACKED_ATLAS_UNIT) uniform sampler3D packedAtlas;
 layout(binding = PACKED_OCCUPANCY_UNIT) uniform sampler3D packedOccupancy;
 layout(binding = PACKED_VALIDITY_UNIT) uniform sampler3D packedValidity;
@@ -52,11 +50,8 @@ const int PACKED_FETCHES_PER_GROUP = PACKED_VALIDITY == PACKED_VALIDITY_PER_GROU
 
 // The validity every time-step has at the voxel position (PACKED_VALIDITY_SHARED), else 1.
 float sharedValidityAt(vec3 voxel) {
-#if PACKED_VALIDITY == PACKED_VALIDITY_SHARED
+    if (PACKED_VALIDITY != PACKED_VALIDITY_SHARED) return 1.0;
     return texture(packedValidity, (voxel + 0.5) * inverseSharedValiditySize).r;
-#else
-    return 1.0;
-#endif
 }
 
 // The densities of time-steps 4 group .. 4 group + 3 at the voxel position; MISSING_DENSITY where
@@ -64,16 +59,10 @@ float sharedValidityAt(vec3 voxel) {
 vec4 packedDensities(int group, vec3 voxel, float sharedValidity) {
     vec3 position = (packedGroups.origin[group].xyz + voxel + 0.5) * inversePackedAtlasSize;
     vec4 densities = texture(packedAtlas, position);
-#if PACKED_VALIDITY == PACKED_VALIDITY_NONE
-    return densities;
-#else
-#if PACKED_VALIDITY == PACKED_VALIDITY_PER_GROUP
-    vec4 validity = texture(packedValidity, position);
-#else
-    vec4 validity = vec4(sharedValidity);
-#endif
+    if (PACKED_VALIDITY == PACKED_VALIDITY_NONE) return densities;
+    vec4 validity =
+        PACKED_VALIDITY == PACKED_VALIDITY_PER_GROUP ? texture(packedValidity, position) : vec4(sharedValidity);
     return mix(densities / validity, vec4(MISSING_DENSITY), lessThan(validity, vec4(0.5)));
-#endif
 }
 
 // Empty-space skipping for all time-steps at once: -1 when any time-step's brick at the sample is
@@ -82,4 +71,3 @@ float packedEmptySpaceUntil(AlignedSample aligned, float t) {
     if (texelFetch(packedOccupancy, ivec3(brickOf(0, aligned.voxel)), 0).r > 0.5) return -1.0;
     return brickExit(0, aligned.voxel, aligned.gridLocal, t, activeVoxelDirection[0]);
 }
-#endif

@@ -2,18 +2,12 @@
 // Ray iteration and compositing (paper 5.2): march the ray depth in fixed world-space steps, ask
 // the temporal compositor for a temporal style at each sample, composite front to back with
 // opacity correction for the step length, and stop early once the ray is nearly opaque.
-#include "bindings.glsl"
+// This is the template of every raycasting program: RaycastVariant (src/render/raycast_variant.cpp)
+// picks the modules that "compositor.glsl" and "time_step_walk.glsl" stand for and the switches.
+#include "contract.glsl"
+#include "variant_switches.glsl"
 #include "ray.glsl"
-#include "time_steps.glsl"
-#include "uneven_axes.glsl"
-#include "volume_sampling.glsl"
-#include "gradient.glsl"
-#include "transfer_functions.glsl"
-#include "final_processing.glsl"
-#include "styles.glsl"
 #include "overlap_extraction.glsl"
-#include "voxel_rays.glsl"
-#include "packed_time_steps.glsl"
 #include "temporal_compositor.glsl"
 
 uniform float stepLength;       // world units between samples
@@ -21,9 +15,6 @@ uniform float referenceLength;  // the length over which a transfer-function opa
 uniform float terminationOpacity;
 uniform vec4 background;        // straight (not premultiplied) colour and opacity
 
-#ifndef COLLECT_STATISTICS
-#define COLLECT_STATISTICS 0
-#endif
 // 64-bit counters as (low, high) pairs (GLSL 4.50 has only 32-bit atomics), filled with
 // COLLECT_STATISTICS; `cutShortRays` always.
 layout(std430, binding = STATISTICS_BUFFER) buffer Statistics {
@@ -52,9 +43,7 @@ void main() {
     // cleared the target to. Discarding it lets llvmpipe skip the rest of the shader for a block of
     // pixels that all miss (a branch would not: both sides run, masked).
     if (rayDepth.x >= rayDepth.y) discard;
-#if !NAIVE_RAYCASTER
-    prepareVoxelRays(ray);
-#endif
+    prepareWalk(ray);
 
     vec4 accumulated = vec4(0.0);  // premultiplied colour, opacity
     int samples = 0;
@@ -65,25 +54,21 @@ void main() {
         // exactly at the exit, so a slab of thickness D gets exactly D worth of opacity.
         float segmentEnd = min(t + stepLength, rayDepth.y);
         float middle = 0.5 * (t + segmentEnd);
-#if !NAIVE_RAYCASTER
-        advanceLiveWindow(middle);
-#endif
+        advanceWalk(middle);
         TemporalSample styled = compositeTemporal(ray.origin + ray.direction * middle, middle);
         samples += 1;
         fetches += styled.fetches;
-#if !NAIVE_RAYCASTER
-        if (styled.contributing == 0) {
+        if (WALK_SKIPS_EMPTY_SPACE && styled.contributing == 0) {
             // Between time-steps: jump to where the next one begins.
             t = nextEntryAfter(middle, rayDepth.y);
             continue;
         }
-        if (styled.emptyUntil > 0.0) {
+        if (WALK_SKIPS_EMPTY_SPACE && styled.emptyUntil > 0.0) {
             // Every time-step here is transparent: jump to the end of the empty bricks, but not past
             // the entry of a time-step the ray has not reached yet.
             t = max(segmentEnd, min(styled.emptyUntil, nextEntryAfter(middle, rayDepth.y)));
             continue;
         }
-#endif
         float opacity = clamp(styled.colorOpacity.a, 0.0, 1.0);
         if (opacity > 0.0) {
             float corrected = 1.0 - pow(1.0 - opacity, (segmentEnd - t) / referenceLength);

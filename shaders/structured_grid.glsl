@@ -4,14 +4,9 @@
 // the lattice of dims nodes spread over those bounds; mapScale turns that into inverse-map texels.
 // 1 when the series has structured time-steps; 0 compiles every lookup below away, so that
 // rectilinear series pay nothing for them.
-#ifndef STRUCTURED_GRIDS
-#define STRUCTURED_GRIDS 1
-#endif
-
-struct StructuredGridInfo {
-    vec4 mapOrigin;  // xyz: first texel of the grid's inverse map in the atlas; w: 1 when structured
-    vec4 mapScale;   // xyz: inverse-map texels per lattice voxel; w: world step of gradient differences
-};
+#include "contract.glsl"
+#include "variant_switches.glsl"
+#include "time_steps.glsl"
 
 layout(std430, binding = STRUCTURED_GRID_BUFFER) readonly buffer StructuredGrids {
     StructuredGridInfo steps[];

@@ -2,12 +2,9 @@
 // from a lit-sphere image at its view-space normal, and the style's alpha multiplies the opacity.
 // Each transfer function ("track") has its colour nodes in a table; between two nodes the colour is
 // the blend of their two lookups. A flat colour node is a style of one colour.
+#include "contract.glsl"
+#include "variant_switches.glsl"
 layout(binding = STYLE_UNIT) uniform sampler2DArray styles;
-
-struct StyleNode {
-    vec4 tintAndPosition;  // rgb: tint (a flat node's colour), a: position on the track
-    ivec4 layer;           // x: layer in the style array, -1 for a flat colour
-};
 
 layout(std430, binding = STYLE_NODE_BUFFER) readonly buffer StyleNodes {
     StyleNode nodes[];
@@ -76,9 +73,6 @@ bool trackStyled(int track) {
 
 // A classification (colour, opacity) with its track's style applied, if the track has styles.
 vec4 applyStyle(int track, float x, vec4 classification, SphereCoordinate sphere) {
-#ifndef STYLED
-#define STYLED 1
-#endif
 #if !STYLED
     // Flat scenes: no style code in the program at all (llvmpipe would run it, masked, anyway).
     return classification;

@@ -1,6 +1,7 @@
 // The style transfer function (STF, over density) and the two temporal style transfer functions
 // (TSTF): time-step index and gradient magnitude. Each returns vec4(colour, opacity), the opacity
 // being per reference length (the finest voxel spacing of the series).
+#include "contract.glsl"
 layout(binding = STF_UNIT) uniform sampler1D stfTable;
 layout(binding = GRADIENT_TSTF_UNIT) uniform sampler1D gradientTstfTable;
 uniform float transferTableSize;

@@ -1,6 +1,8 @@
 // Uneven rectilinear axes (depth or pressure levels): along such an axis the time-step's
 // worldToVoxel gives the grid-local position, and the axis' node list turns it into a fractional
 // node index (bucket lookup, then linear between the two nodes). Mirrors tstyles/data/grid_axes.h.
+#include "contract.glsl"
+#include "variant_switches.glsl"
 layout(std430, binding = UNEVEN_AXIS_BUFFER) readonly buffer UnevenAxes {
     ivec4 firstNode[];  // per time-step, per axis: index of its first node in axisNodes; -1: even
 } unevenAxes;
@@ -12,9 +14,6 @@ layout(std430, binding = AXIS_NODE_BUFFER) readonly buffer AxisNodes {
 // program. llvmpipe runs their loops, masked, wherever voxelCoordinate() is reached (beam grids
 // too), and every such pass counts against its limit of 65535 loop passes per invocation, which
 // bounds the samples a ray can take (docs/architecture.md, "Limits: samples per ray on llvmpipe").
-#ifndef UNEVEN_AXES
-#define UNEVEN_AXES 1
-#endif
 
 bool isUnevenAxis(int step, int axis) {
 #if !UNEVEN_AXES

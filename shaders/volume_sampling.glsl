@@ -1,4 +1,8 @@
 // Density and mask lookups in the volume atlas, where all time-steps are packed into one 3D texture.
+#include "contract.glsl"
+#include "variant_switches.glsl"
+#include "time_steps.glsl"
+#include "uneven_axes.glsl"
 layout(binding = ATLAS_UNIT) uniform sampler3D densityAtlas;
 layout(binding = MASK_ATLAS_UNIT) uniform sampler3D maskAtlas;
 uniform vec3 inverseAtlasSize;
@@ -9,9 +13,6 @@ uniform vec3 inverseAtlasSize;
 // 1 when every time-step of the series has an affine world -> voxel map (TimeStepInfo.flags.x):
 // the general paths (uneven axes, other grid kinds) are left out of the program, since llvmpipe
 // would run them, masked, for every sample otherwise.
-#ifndef ALL_AFFINE
-#define ALL_AFFINE 0
-#endif
 
 // Voxel coordinates of a world position in a time-step's grid, clamped to the grid: samples sit
 // on texel centres, and clamping to [0, dims - 1] keeps trilinear filtering inside the time-step's
@@ -78,9 +79,6 @@ float sampleDensity(vec3 atlasPosition) {
 // 1 when any time-step of the series has a mask. A compile-time switch, not a run-time test:
 // llvmpipe executes both sides of a branch (masked per pixel), so only removing the mask lookup
 // from the program saves its cost.
-#ifndef HAS_MASKS
-#define HAS_MASKS 1
-#endif
 
 // Time-steps without a mask are region of interest everywhere.
 bool insideMask(int step, vec3 atlasPosition) {
@@ -94,10 +92,6 @@ bool insideMask(int step, vec3 atlasPosition) {
 // Empty-space skipping: one texel per brick of BRICK_SIZE³ cells in the occupancy atlas, non-zero
 // where the STF can give the brick's densities some opacity (render/brick_occupancy.h).
 layout(binding = OCCUPANCY_UNIT) uniform sampler3D occupancyAtlas;
-// Cells per brick edge: kBrickSize of render/brick_occupancy.h, given by the renderer.
-#ifndef BRICK_CELLS
-#define BRICK_CELLS 4
-#endif
 const float BRICK_SIZE = float(BRICK_CELLS);
 
 vec3 brickCount(int step) {

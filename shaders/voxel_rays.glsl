@@ -3,6 +3,9 @@
 // origin + t * direction, with no matrix read or product per sample. Along uneven rectilinear axes
 // that is the grid-local position, which the axis' node lookup turns into a node index; structured
 // and beam grids take the general voxelCoordinate() at every sample.
+#include "ray.glsl"
+#include "overlap_extraction.glsl"
+#include "volume_sampling.glsl"
 vec3 activeVoxelOrigin[MAX_TIME_STEPS];     // voxel coordinates at t = 0 (affine time-steps)
 vec3 activeVoxelDirection[MAX_TIME_STEPS];  // voxel units per unit of t (affine time-steps)
 vec3 activeVoxelUpper[MAX_TIME_STEPS];      // dims - 1: where the clamp to the grid ends

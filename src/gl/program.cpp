@@ -1,7 +1,9 @@
 // Shader compilation and linking with file-and-line error messages.
 #include "tstyles/gl/program.h"
 
+#include <cctype>
 #include <cstdlib>
+#include <iterator>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -31,7 +33,8 @@ std::string ShaderLibrary::describe() const {
     return directory_ ? "shaders from " + directory_->string() : "embedded shaders";
 }
 
-FlattenedShader ShaderLibrary::flatten(const std::string& entry, const ShaderDefines& defines) const {
+FlattenedShader ShaderLibrary::flatten(const std::string& entry, const ShaderDefines& defines,
+                                      const ShaderModules& modules) const {
     ShaderFileReader reader;
     if (directory_) {
         reader = [directory = *directory_](const std::string& name) -> std::optional<std::string> {
@@ -50,7 +53,7 @@ FlattenedShader ShaderLibrary::flatten(const std::string& entry, const ShaderDef
         };
     }
     try {
-        return flattenShader(entry, reader, defines);
+        return flattenShader(entry, reader, defines, modules);
     } catch (const std::runtime_error& error) {
         throw std::runtime_error("shader " + entry + " (" + describe() + "): " + error.what());
     }
@@ -58,9 +61,43 @@ FlattenedShader ShaderLibrary::flatten(const std::string& entry, const ShaderDef
 
 namespace {
 
+bool isIdentifierCharacter(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// The names of the default-block uniforms that a flattened stage declares:
+// `[layout(...)] uniform TYPE NAME[, NAME...][[N]];`.
+void collectUniformNames(const std::string& text, std::unordered_set<std::string>& names) {
+    std::istringstream lines(text);
+    std::string line;
+    while (std::getline(lines, line)) {
+        const auto keyword = line.find("uniform ");
+        if (keyword == std::string::npos) continue;
+        const auto before = line.find_first_not_of(" \t");
+        if (line.compare(before, 2, "//") == 0) continue;
+        if (keyword != before && line.compare(before, 6, "layout") != 0) continue;
+        const auto semicolon = line.find(';', keyword);
+        if (semicolon == std::string::npos) continue;
+        std::istringstream declaration(line.substr(keyword + 8, semicolon - keyword - 8));
+        std::string type;
+        declaration >> type;
+        std::string rest((std::istreambuf_iterator<char>(declaration)), std::istreambuf_iterator<char>());
+        std::size_t position = 0;
+        while (position < rest.size()) {
+            while (position < rest.size() && !isIdentifierCharacter(rest[position])) ++position;
+            const std::size_t begin = position;
+            while (position < rest.size() && isIdentifierCharacter(rest[position])) ++position;
+            if (position > begin) names.insert(rest.substr(begin, position - begin));
+            // Skip an array size and go to the next declarator.
+            position = rest.find(',', position);
+            if (position == std::string::npos) break;
+        }
+    }
+}
+
 GlHandle<ShaderTraits> compileStage(const ShaderLibrary& library, const ShaderStage& stage,
-                                    const ShaderDefines& defines) {
-    const FlattenedShader source = library.flatten(stage.file, defines);
+                                    const ShaderDefines& defines, const ShaderModules& modules,
+                                    std::unordered_set<std::string>& uniformNames) {
+    const FlattenedShader source = library.flatten(stage.file, defines, modules);
+    collectUniformNames(source.text, uniformNames);
     GlHandle<ShaderTraits> shader(glCreateShader(stage.type));
     const char* text = source.text.c_str();
     glShaderSource(shader.id(), 1, &text, nullptr);
@@ -81,10 +118,14 @@ GlHandle<ShaderTraits> compileStage(const ShaderLibrary& library, const ShaderSt
 }  // namespace
 
 Program Program::build(const ShaderLibrary& library, const std::vector<ShaderStage>& stages,
-                       const ShaderDefines& defines) {
+                       const ShaderDefines& defines, const ShaderModules& modules) {
     std::vector<GlHandle<ShaderTraits>> shaders;
-    for (const auto& stage : stages) shaders.push_back(compileStage(library, stage, defines));
+    std::unordered_set<std::string> uniformNames;
+    for (const auto& stage : stages)
+        shaders.push_back(compileStage(library, stage, defines, modules, uniformNames));
     Program program(glCreateProgram());
+    program.declaredUniforms_ = std::move(uniformNames);
+    for (const auto& stage : stages) program.stageNames_ += (program.stageNames_.empty() ? "" : " ") + stage.file;
     for (const auto& shader : shaders) glAttachShader(program.id(), shader.id());
     glLinkProgram(program.id());
     for (const auto& shader : shaders) glDetachShader(program.id(), shader.id());
@@ -106,6 +147,9 @@ GLint Program::location(const char* name) const {
     auto found = locations_.find(name);
     if (found != locations_.end()) return found->second;
     const GLint location = glGetUniformLocation(id(), name);
+    if (location < 0 && !declaredUniforms_.contains(name))
+        throw std::logic_error(std::string("uniform \"") + name + "\" is declared in no stage of the program (" +
+                               stageNames_ + ")");
     locations_.emplace(name, location);
     return location;
 }

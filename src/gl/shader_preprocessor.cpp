@@ -82,14 +82,23 @@ struct Flattener {
 
 }  // namespace
 
-FlattenedShader flattenShader(const std::string& entryName, const ShaderFileReader& reader,
-                              const std::vector<std::pair<std::string, std::string>>& defines) {
+FlattenedShader flattenShader(const std::string& entryName, const ShaderFileReader& libraryReader,
+                              const std::vector<std::pair<std::string, std::string>>& defines,
+                              const ShaderModules& modules) {
+    const ShaderFileReader reader = [&](const std::string& name) -> std::optional<std::string> {
+        for (const auto& module : modules)
+            if (module.includedAs == name) return module.text ? module.text : libraryReader(module.file);
+        return libraryReader(name);
+    };
     auto source = reader(entryName);
     if (!source) throw std::runtime_error("shader file \"" + entryName + "\" not found");
     Flattener flattener{reader, {}, {}};
     std::ostringstream out;
     flattener.append(entryName, *source, out, &defines);
     flattener.result.text = out.str();
+    for (auto& file : flattener.result.files)
+        for (const auto& module : modules)
+            if (module.includedAs == file) file = module.file;
     return flattener.result;
 }
 

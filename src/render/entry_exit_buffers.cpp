@@ -3,7 +3,7 @@
 
 #include <array>
 
-#include "tstyles/render/bindings.h"
+#include "tstyles/render/shader_contract.h"
 #include "tstyles/render/gpu_series.h"
 
 namespace tstyles {
@@ -40,7 +40,7 @@ void EntryExitBuffers::render(const GpuSeries& series, const glm::mat4& viewProj
     glViewport(0, 0, viewport.x, viewport.y);
     // Entry in red, the negated exit in green: one MIN blend keeps the nearest entry and the
     // farthest exit where faces overlap on screen, and the raycaster reads both with one fetch.
-    const float nothing[4] = {binding::kNoEntry, -binding::kNoExit, 0, 0};
+    const float nothing[4] = {contract::NO_ENTRY, -contract::NO_EXIT, 0, 0};
     glClearNamedFramebufferfv(framebuffer_->id(), GL_COLOR, 0, nothing);
 
     // Faces are classified in the shader, so no culling.
@@ -71,7 +71,7 @@ void EntryExitBuffers::render(const GpuSeries& series, const glm::mat4& viewProj
 }
 
 void EntryExitBuffers::bind() const {
-    depths_->bindToUnit(binding::kEntryExitUnit);
+    depths_->bindToUnit(contract::ENTRY_EXIT_UNIT);
 }
 
 std::size_t EntryExitBuffers::textureBytes() const {

@@ -13,7 +13,7 @@
 #include "tstyles/data/beam_geometry.h"
 #include "tstyles/data/read_options.h"
 #include "tstyles/render/beam_angle_table.h"
-#include "tstyles/render/bindings.h"
+#include "tstyles/render/shader_contract.h"
 #include "tstyles/render/density_texels.h"
 #include "tstyles/render/packed_aligned_atlas.h"
 #include "tstyles/render/proxy_mesh.h"
@@ -22,26 +22,9 @@
 namespace tstyles {
 namespace {
 
-// Mirrors TimeStepInfo in shaders/time_steps.glsl (std430).
-struct TimeStepInfo {
-    glm::mat4 worldToVoxel;
-    glm::vec4 brickOrigin;
-    glm::vec4 dims;
-    glm::ivec4 layer;
-    glm::vec4 occupancyOrigin;  // xyz: first texel of this time-step's bricks in the occupancy atlas
-    glm::ivec4 flags;           // x: 1 when world -> voxel is affine
-    glm::ivec4 grid;            // x: grid kind; beam grids: y, z: first azimuth, elevation angle
-    glm::vec4 beamRange;        // beam grids: minimum, maximum range, gradient difference distance
-};
+using contract::TimeStepInfo;
 
-constexpr int kGridRectilinear = 0;  // GRID_RECTILINEAR in shaders/beam_grid.glsl
-constexpr int kGridBeam = 1;         // GRID_BEAM
-
-// Mirrors ProxyBox in shaders/proxy_geometry.glsl (std430).
-struct ProxyBox {
-    glm::mat4 gridToWorld;
-    glm::vec4 extent;
-};
+using contract::ProxyBox;
 
 int maxTextureSize3D() {
     GLint size = 0;
@@ -144,6 +127,9 @@ TimeStepInfo timeStepInfo(const Series& series, std::size_t index, const glm::iv
     info.dims = glm::vec4(glm::vec3(dims), step.mask ? 1.0f : 0.0f);
     info.layer = glm::ivec4(layer, 0, 0, 0);
     info.occupancyOrigin = glm::vec4(glm::vec3(occupancyOrigin), 0.0f);
+    // Relative to the first time-step, so that float keeps the differences of large stamps (days
+    // since 1950) that the linear-trend compositor needs.
+    info.time = glm::vec4(float(step.time - series.steps.front().time), 0.0f, 0.0f, 0.0f);
     if (step.isBeam()) {
         const BeamGrid& grid = step.beam();
         info.worldToVoxel = glm::mat4(glm::inverse(step.placement.gridToWorld()));
@@ -151,7 +137,7 @@ TimeStepInfo timeStepInfo(const Series& series, std::size_t index, const glm::iv
                                                 beamAngleField(index, grid.azimuthDeg, "azimuth"));
         const int elevations = appendBeamAngleRun(grid.elevationDeg, beamAngles, series.manifestPath,
                                                   beamAngleField(index, grid.elevationDeg, "elevation"));
-        info.grid = glm::ivec4(kGridBeam, azimuths, elevations, 0);
+        info.grid = glm::ivec4(contract::GRID_BEAM, azimuths, elevations, 0);
         info.beamRange = glm::vec4(float(grid.minRange), float(grid.maxRange), float(grid.rangeSpacing()), 0.0f);
         return info;
     }
@@ -162,7 +148,7 @@ TimeStepInfo timeStepInfo(const Series& series, std::size_t index, const glm::iv
     info.worldToVoxel = glm::mat4(glm::inverse(voxelToWorld));
     info.flags = glm::ivec4(hasAffineWorldToVoxel(step) ? 1 : 0, 0, 0, 0);
     // Structured grids are told apart by their own table (shaders/structured_grid.glsl).
-    info.grid = glm::ivec4(kGridRectilinear, 0, 0, 0);
+    info.grid = glm::ivec4(contract::GRID_RECTILINEAR, 0, 0, 0);
     return info;
 }
 
@@ -288,16 +274,16 @@ void GpuSeries::updateOccupancy(const std::vector<glm::vec4>& stfTable) {
 }
 
 void GpuSeries::bind() const {
-    densityAtlas_.bindToUnit(binding::kAtlasUnit);
-    maskAtlas_.bindToUnit(binding::kMaskAtlasUnit);
-    occupancyAtlas_.bindToUnit(binding::kOccupancyUnit);
-    timeStepTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kTimeStepBuffer);
-    proxyTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kProxyBuffer);
+    densityAtlas_.bindToUnit(contract::ATLAS_UNIT);
+    maskAtlas_.bindToUnit(contract::MASK_ATLAS_UNIT);
+    occupancyAtlas_.bindToUnit(contract::OCCUPANCY_UNIT);
+    timeStepTable_.bindBase(GL_SHADER_STORAGE_BUFFER, contract::TIME_STEP_BUFFER);
+    proxyTable_.bindBase(GL_SHADER_STORAGE_BUFFER, contract::PROXY_BUFFER);
     structuredGrids_->bind();
-    unevenAxisTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kUnevenAxisBuffer);
-    axisNodeTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kAxisNodeBuffer);
-    beamAngleTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kBeamAngleBuffer);
-    proxyMeshTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kProxyMeshBuffer);
+    unevenAxisTable_.bindBase(GL_SHADER_STORAGE_BUFFER, contract::UNEVEN_AXIS_BUFFER);
+    axisNodeTable_.bindBase(GL_SHADER_STORAGE_BUFFER, contract::AXIS_NODE_BUFFER);
+    beamAngleTable_.bindBase(GL_SHADER_STORAGE_BUFFER, contract::BEAM_ANGLE_BUFFER);
+    proxyMeshTable_.bindBase(GL_SHADER_STORAGE_BUFFER, contract::PROXY_MESH_BUFFER);
     if (packedAtlas_) packedAtlas_->bind();
 }
 

@@ -9,17 +9,13 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "tstyles/data/inverse_map.h"
-#include "tstyles/render/bindings.h"
+#include "tstyles/render/shader_contract.h"
 #include "tstyles/render/proxy_mesh.h"
 
 namespace tstyles {
 namespace {
 
-// Mirrors StructuredGridInfo in shaders/structured_grid.glsl (std430).
-struct StructuredGridInfo {
-    glm::vec4 mapOrigin;  // xyz: first texel of the inverse map in the atlas; w: 1 when structured
-    glm::vec4 mapScale;   // xyz: map texels per lattice voxel; w: world step of gradient differences
-};
+using contract::StructuredGridInfo;
 
 }  // namespace
 
@@ -89,8 +85,8 @@ std::size_t GpuStructuredGrids::gpuBytes() const {
 }
 
 void GpuStructuredGrids::bind() const {
-    inverseMapAtlas_.bindToUnit(binding::kInverseMapUnit);
-    gridTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kStructuredGridBuffer);
+    inverseMapAtlas_.bindToUnit(contract::INVERSE_MAP_UNIT);
+    gridTable_.bindBase(GL_SHADER_STORAGE_BUFFER, contract::STRUCTURED_GRID_BUFFER);
 }
 
 }  // namespace tstyles

@@ -7,7 +7,7 @@
 
 #include "tstyles/core/errors.h"
 #include "tstyles/data/series_summary.h"
-#include "tstyles/render/bindings.h"
+#include "tstyles/render/shader_contract.h"
 #include "tstyles/render/density_texels.h"
 
 namespace tstyles {
@@ -145,10 +145,10 @@ void PackedAlignedAtlas::updateOccupancy(const std::vector<std::uint8_t>& unionV
 }
 
 void PackedAlignedAtlas::bind() const {
-    atlas_.bindToUnit(binding::kPackedAtlasUnit);
-    validityTexture_.bindToUnit(binding::kPackedValidityUnit);
-    occupancy_.bindToUnit(binding::kPackedOccupancyUnit);
-    groupOrigins_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kPackedGroupBuffer);
+    atlas_.bindToUnit(contract::PACKED_ATLAS_UNIT);
+    validityTexture_.bindToUnit(contract::PACKED_VALIDITY_UNIT);
+    occupancy_.bindToUnit(contract::PACKED_OCCUPANCY_UNIT);
+    groupOrigins_.bindBase(GL_SHADER_STORAGE_BUFFER, contract::PACKED_GROUP_BUFFER);
 }
 
 }  // namespace tstyles

@@ -4,47 +4,20 @@
 #include <array>
 #include <string>
 
-#include "tstyles/render/bindings.h"
+#include "tstyles/render/shader_contract.h"
 #include "tstyles/render/brick_occupancy.h"
 #include "tstyles/render/transfer_tables.h"
 
 namespace tstyles {
 namespace {
 
-int compositorDefine(TemporalCompositor compositor) {
-    switch (compositor) {
-        case TemporalCompositor::MaxIntensityProjection: return 0;
-        case TemporalCompositor::Average: return 1;
-        case TemporalCompositor::MaxDensityChange: return 2;
-    }
-    return 0;
-}
-
-int finalModeValue(FinalMode mode) {
+int finalModeCode(FinalMode mode) {
     switch (mode) {
-        case FinalMode::Stf: return 0;
-        case FinalMode::Tstf: return 1;
-        case FinalMode::Modulate: return 2;
+        case FinalMode::Stf: return contract::FINAL_STF;
+        case FinalMode::Tstf: return contract::FINAL_TSTF;
+        case FinalMode::Modulate: return contract::FINAL_MODULATE;
     }
-    return 2;
-}
-
-// PACKED_VALIDITY in shaders/packed_time_steps.glsl.
-int packedValidityDefine(PackedValidity validity) {
-    switch (validity) {
-    case PackedValidity::None: return 0;
-    case PackedValidity::PerGroup: return 1;
-    case PackedValidity::Shared: return 2;
-    }
-    return 0;
-}
-
-// The shader keeps per-ray arrays of the time-steps it meets; their size is a compile-time
-// constant, rounded up so that a few more or fewer time-steps reuse the same program.
-int arrayCapacity(int timeStepCount) {
-    int capacity = 8;
-    while (capacity < timeStepCount) capacity *= 2;
-    return capacity;
+    return contract::FINAL_MODULATE;
 }
 
 }  // namespace
@@ -61,36 +34,16 @@ Raycaster::Raycaster(const ShaderLibrary& shaders)
     statistics_.setData(std::as_bytes(std::span(zero)), GL_DYNAMIC_READ);
 }
 
-const Program& Raycaster::programFor(const RaycastParameters& parameters) {
-    const int capacity = arrayCapacity(parameters.timeStepCount);
-    const auto key = std::make_tuple(compositorDefine(parameters.compositor), parameters.collectStatistics,
-                                     parameters.styled, parameters.naive, parameters.masks,
-                                     parameters.allAffine, parameters.structuredGrids, parameters.packedAligned,
-                                     parameters.packedValidity, capacity, parameters.unevenAxes);
-    auto found = programs_.find(key);
+const Program& Raycaster::programFor(const RaycastVariant& variant) {
+    auto found = programs_.find(variant);
     if (found != programs_.end()) return found->second;
-    const ShaderDefines defines = {
-        {"TEMPORAL_COMPOSITOR", std::to_string(compositorDefine(parameters.compositor))},
-        {"COLLECT_STATISTICS", parameters.collectStatistics ? "1" : "0"},
-        {"MAX_TIME_STEPS", std::to_string(capacity)},
-        {"STYLED", parameters.styled ? "1" : "0"},
-        {"NAIVE_RAYCASTER", parameters.naive ? "1" : "0"},
-        {"HAS_MASKS", parameters.masks ? "1" : "0"},
-        {"ALL_AFFINE", parameters.allAffine ? "1" : "0"},
-        {"STRUCTURED_GRIDS", parameters.structuredGrids ? "1" : "0"},
-        {"PACKED_ALIGNED", parameters.packedAligned ? "1" : "0"},
-        {"BRICK_CELLS", std::to_string(kBrickSize)},
-        {"PACKED_VALIDITY", std::to_string(packedValidityDefine(parameters.packedValidity))},
-        {"UNEVEN_AXES", parameters.unevenAxes ? "1" : "0"},
-    };
-    auto program = Program::build(shaders_, {{GL_VERTEX_SHADER, "fullscreen.vert"},
-                                             {GL_FRAGMENT_SHADER, "raycast.frag"}},
-                                  defines);
-    return programs_.emplace(key, std::move(program)).first->second;
+    auto program = Program::build(shaders_, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "raycast.frag"}},
+                                  variant.defines(), variant.modules());
+    return programs_.emplace(variant, std::move(program)).first->second;
 }
 
-void Raycaster::draw(const RaycastParameters& parameters) {
-    const Program& program = programFor(parameters);
+void Raycaster::draw(const RaycastVariant& variant, const RaycastParameters& parameters) {
+    const Program& program = programFor(variant);
     program.set("inverseViewProjection", parameters.inverseViewProjection);
     program.set("viewportSize", glm::vec2(parameters.viewport));
     program.set("timeStepCount", parameters.timeStepCount);
@@ -101,22 +54,22 @@ void Raycaster::draw(const RaycastParameters& parameters) {
     program.set("referenceLength", parameters.referenceLength);
     program.set("terminationOpacity", parameters.terminationOpacity);
     program.set("background", parameters.background);
-    program.set("finalMode", finalModeValue(parameters.finalMode));
+    program.set("finalMode", finalModeCode(parameters.finalMode));
     program.set("changeRange", parameters.changeRange);
-    if (parameters.packedAligned) {
+    if (variant.walk == TimeStepWalk::PackedGroups) {
         program.set("packedGroupCount", parameters.packedGroupCount);
         program.set("inversePackedAtlasSize", 1.0f / glm::vec3(parameters.packedAtlasSize));
-        if (parameters.packedValidity == PackedValidity::Shared)
+        if (variant.packedValidity == PackedValidity::Shared)
             program.set("inverseSharedValiditySize", 1.0f / glm::vec3(parameters.sharedValiditySize));
     }
-    if (parameters.styled) {
+    if (variant.styled) {
         glProgramUniform2iv(program.id(), glGetUniformLocation(program.id(), "styleTracks"), 3,
                             &parameters.styleTracks[0].x);
         program.set("worldToView", parameters.worldToView);
         program.set("styleFootprint", parameters.styleFootprint);
     }
     statistics_.clearToZero();
-    statistics_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kStatisticsBuffer);
+    statistics_.bindBase(GL_SHADER_STORAGE_BUFFER, contract::STATISTICS_BUFFER);
     glViewport(0, 0, parameters.viewport.x, parameters.viewport.y);
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);

@@ -58,34 +58,37 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     target_.resize(options.size);
     target_.bind();
     entryExitBuffers_.bind();
+    RaycastVariant variant;
+    variant.compositor = scene.compositor;
+    variant.collectStatistics = options.collectStatistics;
+    variant.masks = gpuSeries_->hasMasks();
+    variant.allAffine = gpuSeries_->allAffine();
+    variant.unevenAxes = gpuSeries_->hasUnevenAxes();
+    variant.structuredGrids = gpuSeries_->structuredGrids().layerCount() > 0;
+    variant.styled = styleTextures_.anyStyled();
+    variant.timeStepCapacity = timeStepCapacityFor(int(gpuSeries_->timeStepCount()));
+    variant.walk = options.naive ? TimeStepWalk::Naive : TimeStepWalk::RayList;
+
     RaycastParameters parameters;
     parameters.inverseViewProjection = inverseViewProjection;
     parameters.viewport = options.size;
     parameters.timeStepCount = int(gpuSeries_->timeStepCount());
-    parameters.structuredGrids = gpuSeries_->structuredGrids().layerCount() > 0;
     parameters.atlasSize = gpuSeries_->layout().size;
     parameters.stepLength = float(stepLengthFor(scene) * options.stepScale);
     parameters.referenceLength = float(finestSpacing_);
     parameters.terminationOpacity = float(scene.raycast.termination);
     parameters.background = glm::vec4(scene.background);
-    parameters.compositor = scene.compositor;
     parameters.finalMode = scene.finalMode;
     parameters.changeRange = glm::vec2(float(scene.gradientTstf.rangeLow), float(scene.gradientTstf.rangeHigh));
-    parameters.collectStatistics = options.collectStatistics;
     parameters.exposedSteps = options.soloTimeStep ? glm::ivec2(*options.soloTimeStep)
                                                    : scene.exposure.stepsOf(gpuSeries_->timeStepCount());
-    parameters.naive = options.naive;
-    parameters.masks = gpuSeries_->hasMasks();
-    parameters.allAffine = gpuSeries_->allAffine();
-    parameters.unevenAxes = gpuSeries_->hasUnevenAxes();
     if (const PackedAlignedAtlas* packed = gpuSeries_->packedAtlas(); packed && options.packAligned && !options.naive) {
-        parameters.packedAligned = true;
-        parameters.packedValidity = packed->validity();
+        variant.walk = TimeStepWalk::PackedGroups;
+        variant.packedValidity = packed->validity();
         parameters.sharedValiditySize = packed->sharedValiditySize();
         parameters.packedGroupCount = packed->groupCount();
         parameters.packedAtlasSize = packed->layout().size;
     }
-    parameters.styled = styleTextures_.anyStyled();
     parameters.styleTracks = styleTextures_.trackRanges();
     parameters.worldToView = glm::mat3(view.viewMatrix);
     parameters.styleFootprint = float(styleFootprint(view, options.size.y, finestSpacing_));
@@ -99,7 +102,7 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
         coveredPixels(worldBounds_, view.projectionMatrix * view.viewMatrix, options.size);
     glEnable(GL_SCISSOR_TEST);
     glScissor(covered.offset.x, covered.offset.y, covered.size.x, covered.size.y);
-    raycaster_.draw(parameters);
+    raycaster_.draw(variant, parameters);
     glDisable(GL_SCISSOR_TEST);
 }
 

@@ -6,16 +6,12 @@
 #include <cstdint>
 
 #include "tstyles/image/image_io.h"
-#include "tstyles/render/bindings.h"
+#include "tstyles/render/shader_contract.h"
 
 namespace tstyles {
 namespace {
 
-// Mirrors StyleNode in shaders/styles.glsl (std430).
-struct StyleNode {
-    glm::vec4 tintAndPosition;  // rgb: tint (a flat node's colour), a: position on the track
-    glm::ivec4 layer;           // x: layer in the style array, -1 for a flat colour
-};
+using contract::StyleNode;
 
 int mipLevels(int size) { return int(std::floor(std::log2(double(size)))) + 1; }
 
@@ -77,8 +73,8 @@ void StyleTextures::update(const std::array<const TransferFunction1D*, 3>& track
 }
 
 void StyleTextures::bind() const {
-    styles_->bindToUnit(binding::kStyleUnit);
-    nodeTable_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kStyleNodeBuffer);
+    styles_->bindToUnit(contract::STYLE_UNIT);
+    nodeTable_.bindBase(GL_SHADER_STORAGE_BUFFER, contract::STYLE_NODE_BUFFER);
 }
 
 }  // namespace tstyles

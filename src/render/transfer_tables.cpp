@@ -1,7 +1,7 @@
 // Baking transfer functions into lookup tables.
 #include "tstyles/render/transfer_tables.h"
 
-#include "tstyles/render/bindings.h"
+#include "tstyles/render/shader_contract.h"
 
 namespace tstyles {
 namespace {
@@ -60,9 +60,9 @@ bool TransferTables::update(const Stf& stf, const IndexTstf& indexTstf, const Gr
 }
 
 void TransferTables::bind() const {
-    stfTable_.bindToUnit(binding::kStfUnit);
-    gradientTstfTable_.bindToUnit(binding::kGradientTstfUnit);
-    indexTstfBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kIndexTstfBuffer);
+    stfTable_.bindToUnit(contract::STF_UNIT);
+    gradientTstfTable_.bindToUnit(contract::GRADIENT_TSTF_UNIT);
+    indexTstfBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, contract::INDEX_TSTF_BUFFER);
 }
 
 }  // namespace tstyles

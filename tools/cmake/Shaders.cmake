@@ -18,6 +18,9 @@ foreach(shader ${TSTYLES_SHADER_FILES})
   if(extension STREQUAL ".glsl")
     continue()  # include files are checked inside every stage that includes them
   endif()
+  if(name STREQUAL "raycast.frag")
+    continue()  # a template: every variant of it is checked below
+  endif()
   set(flat ${CMAKE_BINARY_DIR}/shaders_flat/${name})
   set(stamp ${CMAKE_BINARY_DIR}/shaders_flat/${name}.validated)
   add_custom_command(
@@ -31,6 +34,22 @@ foreach(shader ${TSTYLES_SHADER_FILES})
     VERBATIM)
   list(APPEND TSTYLES_SHADER_STAMPS ${stamp})
 endforeach()
+# The raycasting template in every variant a frame can request (RaycastVariant).
+add_executable(validate_raycast_variants tools/validate_raycast_variants.cpp src/render/raycast_variant.cpp
+               src/gl/shader_preprocessor.cpp)
+target_include_directories(validate_raycast_variants PRIVATE include shaders)
+target_link_libraries(validate_raycast_variants PRIVATE tstyles_model)
+target_compile_options(validate_raycast_variants PRIVATE ${TSTYLES_WARNINGS})
+set(variants_stamp ${CMAKE_BINARY_DIR}/shaders_flat/raycast_variants.validated)
+add_custom_command(
+  OUTPUT ${variants_stamp}
+  COMMAND validate_raycast_variants ${CMAKE_SOURCE_DIR}/shaders ${GLSLANG_VALIDATOR}
+          ${CMAKE_BINARY_DIR}/shaders_flat/raycast_variants ${variants_stamp}
+  DEPENDS ${TSTYLES_SHADER_FILES} validate_raycast_variants
+  COMMENT "Validating every raycasting variant with glslangValidator"
+  VERBATIM)
+list(APPEND TSTYLES_SHADER_STAMPS ${variants_stamp})
+
 add_custom_target(tstyles_shaders_validated ALL DEPENDS ${TSTYLES_SHADER_STAMPS})
 
 set(TSTYLES_EMBEDDED_SHADERS_CPP ${CMAKE_BINARY_DIR}/generated/embedded_shaders.cpp)

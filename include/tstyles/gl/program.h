@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -26,7 +27,8 @@ public:
     // TSTYLES_SHADER_DIR if set, else `overrideDirectory` if given, else the embedded copy.
     static ShaderLibrary fromEnvironment(const std::optional<std::filesystem::path>& overrideDirectory);
 
-    FlattenedShader flatten(const std::string& entry, const ShaderDefines& defines) const;
+    FlattenedShader flatten(const std::string& entry, const ShaderDefines& defines,
+                            const ShaderModules& modules = {}) const;
     std::string describe() const;
 
 private:
@@ -43,7 +45,7 @@ public:
     // Compiles and links; throws std::runtime_error whose message names the shader file and line
     // of each compiler error.
     static Program build(const ShaderLibrary& library, const std::vector<ShaderStage>& stages,
-                         const ShaderDefines& defines = {});
+                         const ShaderDefines& defines = {}, const ShaderModules& modules = {});
 
     GLuint id() const { return handle_.id(); }
     void use() const { glUseProgram(id()); }
@@ -60,9 +62,14 @@ public:
 
 private:
     explicit Program(GLuint id) : handle_(id) {}
+    // The uniform's location; -1 for a uniform that the compiler optimised away. A name that no
+    // stage declares is a programming error (a misspelt name would otherwise write nowhere,
+    // silently): std::logic_error.
     GLint location(const char* name) const;
 
     GlHandle<ProgramTraits> handle_;
+    std::string stageNames_;  // for messages
+    std::unordered_set<std::string> declaredUniforms_;
     mutable std::unordered_map<std::string, GLint> locations_;
 };
 

@@ -10,14 +10,15 @@
 #include <glm/glm.hpp>
 
 #include "tstyles/data/series.h"
+#include "tstyles/render/shader_contract.h"
 
 namespace tstyles {
 
 // 4 rather than 8: the finer grid skips about a quarter of the samples of the super-ellipsoid
 // scenes that 8³ bricks left (transparent samples inside partly visible bricks), and a jump per
 // brick still costs less than the samples it saves; 2 takes more samples than it skips
-// (docs/performance.md). Given to the raycaster as BRICK_CELLS.
-inline constexpr int kBrickSize = 4;
+// (docs/performance.md). BRICK_CELLS in shaders/contract.glsl.
+inline constexpr int kBrickSize = contract::BRICK_CELLS;
 
 struct BrickGrid {
     glm::ivec3 bricks{0};  // ceil((dims - 1) / kBrickSize) along each axis

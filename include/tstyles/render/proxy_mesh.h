@@ -8,14 +8,12 @@
 #include <glm/glm.hpp>
 
 #include "tstyles/data/series.h"
+#include "tstyles/render/shader_contract.h"
 
 namespace tstyles {
 
-// std430 layout of ProxyVertex in shaders/proxy_mesh.glsl.
-struct ProxyMeshVertex {
-    glm::vec4 position;  // xyz: world position; w: layer
-    glm::vec4 normal;    // xyz: the triangle's outward normal
-};
+// A vertex of the proxy mesh table (ProxyVertex in shaders/contract.glsl).
+using ProxyMeshVertex = contract::ProxyVertex;
 
 // Appends the enclosing mesh of a beam time-step's fan (tstyles/data/beam_geometry.h), placed in
 // the world, three vertices per triangle.

@@ -1,22 +1,22 @@
 // The multi-volume raycasting pass: overlap extraction, ray iteration, temporal compositor, TSTF
-// and final processing in one fragment shader (shaders/raycast.frag), one program per compositor.
+// and final processing in one fragment shader (shaders/raycast.frag), one program per RaycastVariant.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <limits>
 #include <map>
-#include <tuple>
 
 #include <glm/glm.hpp>
 
 #include "tstyles/gl/objects.h"
 #include "tstyles/gl/program.h"
-#include "tstyles/render/packed_aligned_atlas.h"
+#include "tstyles/render/raycast_variant.h"
 #include "tstyles/scene/scene.h"
 
 namespace tstyles {
 
+// The uniforms of a raycasting pass; which program it needs is its RaycastVariant.
 struct RaycastParameters {
     glm::mat4 inverseViewProjection{1.0f};
     glm::ivec2 viewport{0};
@@ -26,27 +26,16 @@ struct RaycastParameters {
     float referenceLength = 0.01f;
     float terminationOpacity = 0.99f;
     glm::vec4 background{0.0f};
-    TemporalCompositor compositor = TemporalCompositor::MaxIntensityProjection;
     FinalMode finalMode = FinalMode::Modulate;
     glm::vec2 changeRange{0.0f, 1.0f};
-    bool collectStatistics = false;
     // The time-steps that take part, first and last inclusive (the scene's exposure, or a solo step).
     glm::ivec2 exposedSteps{0, std::numeric_limits<int>::max()};
-    bool naive = false;     // the benchmark's baseline raycaster
-    bool masks = false;     // whether any time-step has a segmentation mask
-    bool allAffine = false; // whether every time-step's world -> voxel map is affine
-    bool structuredGrids = false;  // the series has structured time-steps (inverse-map lookups compiled in)
-    bool unevenAxes = true;        // some time-step has an uneven axis (node lookups compiled in)
-    // Fully aligned series: read four time-steps per fetch from the packed atlas (PackedAlignedAtlas).
-    bool packedAligned = false;
-    // With missing values the packed validities are read too (PackedAlignedAtlas::validity()).
-    PackedValidity packedValidity = PackedValidity::None;
+    // The packed atlas (RaycastVariant::walk PackedGroups).
     glm::ivec3 sharedValiditySize{1};
     int packedGroupCount = 0;
     glm::ivec3 packedAtlasSize{1};
-    // Lit-sphere styles: whether any track is styled, each track's node range, the view rotation
-    // and the style-image footprint of a pixel.
-    bool styled = false;
+    // Lit-sphere styles (RaycastVariant::styled): each track's node range, the view rotation and
+    // the style-image footprint of a pixel.
     std::array<glm::ivec2, 3> styleTracks{};
     glm::mat3 worldToView{1.0f};
     float styleFootprint = 0.0f;
@@ -65,7 +54,7 @@ public:
     // Draws into the currently bound framebuffer, which must hold the premultiplied background:
     // pixels whose ray meets no time-step are discarded. Series, transfer tables and entry/exit
     // buffers must be bound.
-    void draw(const RaycastParameters& parameters);
+    void draw(const RaycastVariant& variant, const RaycastParameters& parameters);
     // Counters of the last draw with collectStatistics (waits for the GPU).
     RaycastStatistics lastStatistics() const;
     // Rays of the last draw that stopped before their exit and below the termination opacity:
@@ -74,14 +63,10 @@ public:
     std::uint32_t lastCutShortRays() const;
 
 private:
-    const Program& programFor(const RaycastParameters& parameters);
+    const Program& programFor(const RaycastVariant& variant);
 
     const ShaderLibrary& shaders_;
-    // Keyed by compositor, statistics on/off, styled or not, naive or not, masks or not, all
-    // affine or not, structured grids or not, packed or not, how packed validity is held, the
-    // time-step capacity of the shader's arrays and uneven axes or not.
-    std::map<std::tuple<int, bool, bool, bool, bool, bool, bool, bool, PackedValidity, int, bool>, Program>
-        programs_;
+    std::map<RaycastVariant, Program> programs_;
     VertexArray emptyVertexArray_;
     Buffer statistics_;
 };

@@ -1,0 +1,55 @@
+// Which raycasting program a frame needs: its temporal compositor module, its walk over the
+// time-steps and its compile-time switches. The one place where those choices become #defines and
+// modules, where each switch has its default, and the program cache's key.
+#pragma once
+
+#include <compare>
+#include <vector>
+
+#include "tstyles/gl/program.h"
+#include "tstyles/render/packed_aligned_atlas.h"
+#include "tstyles/scene/scene.h"
+
+namespace tstyles {
+
+// How the time-steps at a sample are found and read.
+enum class TimeStepWalk {
+    RayList,       // the ray's list of the time-steps it meets, with empty-space skipping
+    PackedGroups,  // fully aligned series: four time-steps per fetch from the packed atlas
+    Naive,         // the benchmark's baseline: every time-step at every sample, nothing skipped
+};
+
+struct RaycastVariant {
+    TemporalCompositor compositor = TemporalCompositor::MaxIntensityProjection;
+    TimeStepWalk walk = TimeStepWalk::RayList;
+    bool styled = false;           // a transfer function uses lit-sphere styles
+    bool masks = false;            // a time-step has a segmentation mask
+    bool allAffine = false;        // every time-step's world -> voxel map is affine
+    bool structuredGrids = false;  // the series has structured time-steps (inverse-map lookups)
+    bool unevenAxes = false;       // a time-step has an uneven axis (node lookups)
+    // PackedGroups with missing values: how the packed validities are held.
+    PackedValidity packedValidity = PackedValidity::None;
+    // Capacity of the shader's per-ray arrays of time-steps (timeStepCapacityFor).
+    int timeStepCapacity = 8;
+    bool collectStatistics = false;
+
+    auto operator<=>(const RaycastVariant&) const = default;
+
+    // Every switch of shaders/variant_switches.glsl.
+    ShaderDefines defines() const;
+    // What "compositor.glsl" and "time_step_walk.glsl" stand for.
+    ShaderModules modules() const;
+    // "temporal-average, ray list, styled, masks, ..." for messages.
+    std::string describe() const;
+};
+
+// The per-ray array capacity for a series of `timeStepCount` time-steps: a power of two from 8 up,
+// so that a few more or fewer time-steps reuse the same program.
+int timeStepCapacityFor(int timeStepCount);
+
+// Every variant a frame can ask for, up to the array capacity (which changes array sizes only):
+// every compositor x walk x grid kind x styled, with masks and statistics on and off. The build
+// validates each of them (tools/validate_raycast_variants.cpp).
+std::vector<RaycastVariant> requestableRaycastVariants();
+
+}  // namespace tstyles

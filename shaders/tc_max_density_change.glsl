@@ -1,0 +1,33 @@
+// Temporal maximum density change (paper 5.3): the largest difference between the densities of the
+// time-steps at the sample, into the gradient TSTF. The sample takes its STF colour and style from
+// the time-step with the highest STF opacity; where only one time-step has data the change is
+// undefined, and that time-step's STF shows alone.
+#include "temporal_sample.glsl"
+
+struct CompositorState {
+    float minimumDensity;
+    float maximumDensity;
+    TimeStepSample strongest;
+    bool anyInMask;
+    int withData;  // time-steps with data at the sample: a change needs two
+};
+
+CompositorState compositorInit() {
+    return CompositorState(1.0, 0.0, noTimeStep(), false, 0);
+}
+
+void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 position, inout int fetches) {
+    state.minimumDensity = min(state.minimumDensity, s.density);
+    state.maximumDensity = max(state.maximumDensity, s.density);
+    state.anyInMask = state.anyInMask || s.inMask;
+    state.withData += 1;
+    if (s.stf.a > state.strongest.stf.a || state.strongest.step < 0) state.strongest = s;
+}
+
+TemporalCharacteristic compositorFinish(CompositorState state) {
+    if (!(state.strongest.stf.a > 0.0 && state.withData >= 1)) return transparentCharacteristic();
+    TimeStepSample representative = state.strongest;
+    representative.inMask = state.anyInMask;
+    if (state.withData < 2) return characteristicOf(READS_STF, 0.0, representative);
+    return characteristicOf(READS_GRADIENT_TSTF, state.maximumDensity - state.minimumDensity, representative);
+}

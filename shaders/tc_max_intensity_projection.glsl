@@ -1,0 +1,30 @@
+// Temporal maximum intensity projection (paper 5.3): the time-step with the highest STF opacity
+// wins, and the index TSTF shows which one it is. Inside overlapping opaque bodies the STF
+// opacities tie; then the time-step that the index TSTF shows most strongly wins (the focus of
+// Figure 1 stays opaque where its neighbours overlap it), then the earlier time-step.
+#include "temporal_sample.glsl"
+
+struct CompositorState {
+    TimeStepSample winner;
+    vec4 winnerTstf;
+};
+
+CompositorState compositorInit() {
+    return CompositorState(noTimeStep(), vec4(0.0));
+}
+
+void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 position, inout int fetches) {
+    if (s.stf.a < state.winner.stf.a || s.stf.a <= 0.0) return;
+    vec4 tstf = classifyIndexTstf(s.step);
+    bool stronger = s.stf.a > state.winner.stf.a || tstf.a > state.winnerTstf.a ||
+                    (tstf.a == state.winnerTstf.a && s.step < state.winner.step);
+    if (stronger) {
+        state.winner = s;
+        state.winnerTstf = tstf;
+    }
+}
+
+TemporalCharacteristic compositorFinish(CompositorState state) {
+    if (state.winner.step < 0) return transparentCharacteristic();
+    return characteristicOf(READS_INDEX_TSTF, float(state.winner.step), state.winner);
+}

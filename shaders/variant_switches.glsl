@@ -1,0 +1,18 @@
+// The compile-time switches of the raycasting program. RaycastVariant::defines()
+// (src/render/raycast_variant.cpp) defines every one of them, and is the one place of their
+// defaults; a program built without one stops here instead of taking a default silently.
+//   STYLED              1 when a transfer function of the scene uses a lit-sphere style
+//   HAS_MASKS           1 when a time-step has a segmentation mask
+//   ALL_AFFINE          1 when every time-step's world -> voxel map is affine (even rectilinear grids)
+//   STRUCTURED_GRIDS    1 when the series has explicit structured time-steps
+//   UNEVEN_AXES         1 when a time-step has an uneven rectilinear axis
+//   PACKED_ALIGNED      1 when the packed groups of four are walked (walk_packed_groups.glsl)
+//   PACKED_VALIDITY     a PACKED_VALIDITY_* code of contract.glsl
+//   MAX_TIME_STEPS      capacity of the per-ray arrays of time-steps
+//   COLLECT_STATISTICS  1 to count rays, samples and fetches
+// Each is a switch and not a run-time test because llvmpipe runs both sides of a branch, masked.
+#if !defined(STYLED) || !defined(HAS_MASKS) || !defined(ALL_AFFINE) || !defined(STRUCTURED_GRIDS) || \
+    !defined(UNEVEN_AXES) || !defined(PACKED_ALIGNED) || !defined(PACKED_VALIDITY) ||                \
+    !defined(MAX_TIME_STEPS) || !defined(COLLECT_STATISTICS)
+#error "a raycasting switch is not defined: build the program through RaycastVariant"
+#endif

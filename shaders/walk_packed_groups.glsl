@@ -1,0 +1,51 @@
+// The walk over the time-steps of a fully aligned series (packed_time_steps.glsl): every time-step
+// contains every sample of the ray (they share one interval), read in groups of four with one fetch
+// per group, with one occupancy test for all of them. Packed series are rectilinear and have no
+// masks, so every sample in the interval is in every grid.
+#include "variant_switches.glsl"
+#include "ray.glsl"
+#include "overlap_extraction.glsl"
+#include "voxel_rays.glsl"
+#include "packed_time_steps.glsl"
+#include "time_step_visit.glsl"
+
+const bool WALK_SKIPS_EMPTY_SPACE = true;
+
+struct SamplePoint {
+    vec3 position;  // in the world
+    float t;        // on the ray
+    AlignedSample aligned;
+};
+
+void prepareWalk(Ray ray) {
+    prepareVoxelRays(ray);
+}
+
+void advanceWalk(float t) {
+    advanceLiveWindow(t);
+}
+
+SamplePoint samplePointAt(vec3 position, float t) {
+    return SamplePoint(position, t, alignedSampleAt(t));
+}
+
+float emptySpaceUntil(SamplePoint point) {
+    return packedEmptySpaceUntil(point.aligned, point.t);
+}
+
+void accumulateTimeSteps(inout CompositorState state, SamplePoint point, inout TemporalSample result) {
+    vec3 voxel = point.aligned.voxel;
+    float sharedValidity = sharedValidityAt(voxel);
+    result.fetches += PACKED_FETCHES_PER_SAMPLE;
+    for (int group = 0; group < packedGroupCount; ++group) {
+        vec4 groupDensities = packedDensities(group, voxel, sharedValidity);
+        result.fetches += PACKED_FETCHES_PER_GROUP;
+        for (int lane = 0; lane < 4; ++lane) {
+            int step = 4 * group + lane;
+            if (step >= timeStepCount) break;
+            if (step < exposedSteps.x || step > exposedSteps.y) continue;
+            // No masks in a packed series: the atlas position is never read.
+            visitTimeStep(state, step, vec3(0.0), groupDensities[lane], point.position, result);
+        }
+    }
+}

@@ -1,0 +1,72 @@
+// The walk over the time-steps at a sample through the ray's list (overlap_extraction.glsl): only
+// the time-steps whose entry/exit interval contains the sample, each at the voxel position stepped
+// along the ray (voxel_rays.glsl), with empty-space skipping over all of them at once.
+#include "variant_switches.glsl"
+#include "ray.glsl"
+#include "overlap_extraction.glsl"
+#include "voxel_rays.glsl"
+#include "volume_sampling.glsl"
+#include "time_step_visit.glsl"
+
+const bool WALK_SKIPS_EMPTY_SPACE = true;
+
+struct SamplePoint {
+    vec3 position;  // in the world
+    float t;        // on the ray
+};
+
+void prepareWalk(Ray ray) {
+    prepareVoxelRays(ray);
+}
+
+void advanceWalk(float t) {
+    advanceLiveWindow(t);
+}
+
+SamplePoint samplePointAt(vec3 position, float t) {
+    return SamplePoint(position, t);
+}
+
+bool listSlotContains(int slot, float t) {
+    return t >= activeIntervals[slot].x && t <= activeIntervals[slot].y;
+}
+
+// Whether all time-steps at the sample lie in empty bricks: -1 if not, else where the first of
+// their bricks ends.
+float emptySpaceUntil(SamplePoint point) {
+    float emptyUntil = 1.0e30;
+    bool anyStep = false;
+    for (int i = liveBegin; i < liveEnd; ++i) {
+        if (!listSlotContains(i, point.t)) continue;
+        int step = activeSteps[i];
+        anyStep = true;
+        // Outside a beam fan or a structured grid but inside its proxy: nothing here, and no jump
+        // past this sample.
+        if (!insideGridShape(step, point.position)) {
+            emptyUntil = min(emptyUntil, point.t);
+            continue;
+        }
+        vec3 voxel = voxelAtSample(i, step, point.position, point.t);
+        if (brickVisible(step, voxel)) return -1.0;
+#if ALL_AFFINE
+        vec3 gridLocal = voxel;
+#else
+        vec3 gridLocal = activeAffine[i] ? voxel : gridLocalAtSample(i, point.t);
+#endif
+        emptyUntil = min(emptyUntil,
+                         emptyBrickEnd(step, voxel, gridLocal, point.t, point.position, activeVoxelDirection[i]));
+    }
+    return anyStep ? emptyUntil : -1.0;
+}
+
+void accumulateTimeSteps(inout CompositorState state, SamplePoint point, inout TemporalSample result) {
+    for (int i = liveBegin; i < liveEnd; ++i) {
+        if (!listSlotContains(i, point.t)) continue;
+        int step = activeSteps[i];
+        if (!insideGridShape(step, point.position)) continue;
+        vec3 atlasPosition = atlasCoordinateOfVoxel(step, voxelAtSample(i, step, point.position, point.t));
+        float density = sampleDensity(atlasPosition);
+        result.fetches += 1;
+        visitTimeStep(state, step, atlasPosition, density, point.position, result);
+    }
+}

@@ -1,0 +1,138 @@
+// Raycasting program variants: their #defines, their modules and the list the build validates.
+#include "tstyles/render/raycast_variant.h"
+
+#include <string>
+
+#include "tstyles/render/shader_contract.h"
+
+namespace tstyles {
+namespace {
+
+// The compositor modules, shaders/tc_*.glsl.
+const char* compositorModule(TemporalCompositor compositor) {
+    switch (compositor) {
+        case TemporalCompositor::MaxIntensityProjection: return "tc_max_intensity_projection.glsl";
+        case TemporalCompositor::Average: return "tc_average.glsl";
+        case TemporalCompositor::MaxDensityChange: return "tc_max_density_change.glsl";
+    }
+    return "tc_max_intensity_projection.glsl";
+}
+
+const char* walkModule(TimeStepWalk walk) {
+    switch (walk) {
+        case TimeStepWalk::RayList: return "walk_ray_list.glsl";
+        case TimeStepWalk::PackedGroups: return "walk_packed_groups.glsl";
+        case TimeStepWalk::Naive: return "walk_naive.glsl";
+    }
+    return "walk_ray_list.glsl";
+}
+
+const char* walkName(TimeStepWalk walk) {
+    switch (walk) {
+        case TimeStepWalk::RayList: return "ray list";
+        case TimeStepWalk::PackedGroups: return "packed groups";
+        case TimeStepWalk::Naive: return "naive";
+    }
+    return "ray list";
+}
+
+int packedValidityCode(PackedValidity validity) {
+    switch (validity) {
+        case PackedValidity::None: return contract::PACKED_VALIDITY_NONE;
+        case PackedValidity::PerGroup: return contract::PACKED_VALIDITY_PER_GROUP;
+        case PackedValidity::Shared: return contract::PACKED_VALIDITY_SHARED;
+    }
+    return contract::PACKED_VALIDITY_NONE;
+}
+
+const char* flag(bool value) { return value ? "1" : "0"; }
+
+// The kinds of grid a series can hold, as the switches that the renderer derives from it.
+struct GridKind {
+    bool allAffine;
+    bool unevenAxes;
+    bool structuredGrids;
+    bool rectilinear;  // only rectilinear series can be packed
+};
+
+constexpr GridKind kGridKinds[] = {
+    {true, false, false, true},   // even rectilinear
+    {false, true, false, true},   // uneven rectilinear
+    {false, false, false, false}, // beam grids
+    {false, false, true, false},  // structured grids
+    {false, true, true, false},   // structured and uneven rectilinear together
+};
+
+constexpr TemporalCompositor kCompositors[] = {TemporalCompositor::MaxIntensityProjection,
+                                              TemporalCompositor::Average, TemporalCompositor::MaxDensityChange};
+
+}  // namespace
+
+ShaderDefines RaycastVariant::defines() const {
+    return {
+        {"STYLED", flag(styled)},
+        {"HAS_MASKS", flag(masks)},
+        {"ALL_AFFINE", flag(allAffine)},
+        {"STRUCTURED_GRIDS", flag(structuredGrids)},
+        {"UNEVEN_AXES", flag(unevenAxes)},
+        {"PACKED_ALIGNED", flag(walk == TimeStepWalk::PackedGroups)},
+        {"PACKED_VALIDITY", std::to_string(packedValidityCode(packedValidity))},
+        {"MAX_TIME_STEPS", std::to_string(timeStepCapacity)},
+        {"COLLECT_STATISTICS", flag(collectStatistics)},
+    };
+}
+
+ShaderModules RaycastVariant::modules() const {
+    return {{"compositor.glsl", compositorModule(compositor), std::nullopt},
+            {"time_step_walk.glsl", walkModule(walk), std::nullopt}};
+}
+
+std::string RaycastVariant::describe() const {
+    std::string text = toString(compositor) + ", " + walkName(walk);
+    for (const auto& [name, value] : defines()) text += ", " + name + "=" + value;
+    return text;
+}
+
+int timeStepCapacityFor(int timeStepCount) {
+    int capacity = 8;
+    while (capacity < timeStepCount) capacity *= 2;
+    return capacity;
+}
+
+std::vector<RaycastVariant> requestableRaycastVariants() {
+    std::vector<RaycastVariant> variants;
+    for (TemporalCompositor compositor : kCompositors) {
+        for (TimeStepWalk walk : {TimeStepWalk::RayList, TimeStepWalk::PackedGroups, TimeStepWalk::Naive}) {
+            for (const GridKind& kind : kGridKinds) {
+                if (walk == TimeStepWalk::PackedGroups && !kind.rectilinear) continue;
+                for (bool styled : {false, true}) {
+                    RaycastVariant variant;
+                    variant.compositor = compositor;
+                    variant.walk = walk;
+                    variant.styled = styled;
+                    variant.allAffine = kind.allAffine;
+                    variant.unevenAxes = kind.unevenAxes;
+                    variant.structuredGrids = kind.structuredGrids;
+                    // Statistics on in half of the set, so that both sides of that switch compile.
+                    variant.collectStatistics = !styled;
+                    if (walk == TimeStepWalk::PackedGroups) {
+                        // Packed series have no masks; their validities come in three kinds.
+                        for (PackedValidity validity :
+                             {PackedValidity::None, PackedValidity::PerGroup, PackedValidity::Shared}) {
+                            variant.packedValidity = validity;
+                            variants.push_back(variant);
+                        }
+                        continue;
+                    }
+                    for (bool masks : {false, true}) {
+                        variant.masks = masks;
+                        variants.push_back(variant);
+                    }
+                }
+            }
+        }
+    }
+    return variants;
+}
+
+}  // namespace tstyles
