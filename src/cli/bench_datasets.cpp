@@ -1,7 +1,10 @@
 // The dataset table of the benchmark matrix (bench_datasets.h).
 #include "bench_datasets.h"
 
+
 #include <algorithm>
+
+#include "tstyles/scene/temporal_compositors.h"
 
 namespace tstyles::cli {
 
@@ -25,13 +28,15 @@ BenchDataset benchDatasetFor(const std::string& folder) {
 }
 
 std::string benchSceneFor(const BenchDataset& dataset, TemporalCompositor compositor, bool styled) {
+    // The bundled scene whose transfer functions suit what reads the compositor.
+    const CompositorReads reads = compositorInfo(compositor).reads;
     if (!dataset.indexScene.empty())
-        return compositor == TemporalCompositor::MaxDensityChange ? dataset.changeScene : dataset.indexScene;
+        return reads == CompositorReads::GradientTstf ? dataset.changeScene : dataset.indexScene;
     const std::string prefix = dataset.scenePrefix + (styled ? "styled-" : "");
-    switch (compositor) {
-        case TemporalCompositor::MaxIntensityProjection: return prefix + "temporal-mip";
-        case TemporalCompositor::Average: return prefix + "temporal-average";
-        case TemporalCompositor::MaxDensityChange: return prefix + "max-density-change";
+    switch (reads) {
+        case CompositorReads::IndexTstf: return prefix + "temporal-mip";
+        case CompositorReads::Composited: return prefix + "temporal-average";
+        case CompositorReads::GradientTstf: return prefix + "max-density-change";
     }
     return prefix + "temporal-mip";
 }

@@ -75,6 +75,7 @@ int runRender(const RenderOptions& options) {
         fitted.scene = sceneAtFrame(fitted.scene, *options.frame);
     }
     fitted.scene.exposure.stepsOf(fitted.series.size(), options.inputs.front());
+    fitted.scene.compositorOptions.differenceSteps(fitted.series.size(), options.inputs.front());
     const Series& series = fitted.series;
     const auto context = createHeadlessContext(parseBackend(options.gl.backend), glDebugOutputRequested());
     Renderer renderer(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));

@@ -1,6 +1,7 @@
 // Scene files or automatic scenes, and command-line overrides (scene_source.h).
 #include "scene_source.h"
 
+
 #include <cstdlib>
 
 #include <nlohmann/json.hpp>
@@ -9,6 +10,7 @@
 #include "tstyles/scene/automatic_scene.h"
 #include "tstyles/scene/input_kind.h"
 #include "tstyles/scene/scene_file.h"
+#include "tstyles/scene/temporal_compositors.h"
 
 namespace tstyles::cli {
 namespace {
@@ -45,11 +47,18 @@ DisplaySettings displayFromOptions(const std::string& key, const std::string& op
     }
 }
 
+// One line per compositor: its name and what it shows.
+std::string compositorHelp() {
+    std::string help = "Temporal compositor (docs/compositors.md):";
+    for (const TemporalCompositorInfo& info : temporalCompositors())
+        if (info.compositor != TemporalCompositor::Custom) help += std::string("\n  ") + info.name + ": " + info.summary;
+    return help;
+}
+
 }  // namespace
 
 void addSceneOverrides(CLI::App& command, SceneOverrides& overrides) {
-    command.add_option("--tc", overrides.compositor, "Temporal compositor: temporal-mip, temporal-average, temporal-max-change")
-        ->check(CLI::IsMember(temporalCompositorNames()));
+    command.add_option("--tc", overrides.compositor, compositorHelp())->check(CLI::IsMember(temporalCompositorNames()));
     command.add_option("--orientation", overrides.orientation,
                        "Which data axes show as right, up and toward the viewer: auto (from the file's axis meaning), "
                        "data (as stored), or three signed axes such as +x,+z,-y");

@@ -4,19 +4,23 @@
 #include <string>
 
 #include "tstyles/render/shader_contract.h"
+#include "tstyles/scene/temporal_compositors.h"
 
 namespace tstyles {
 namespace {
 
-// The compositor modules, shaders/tc_*.glsl.
-const char* compositorModule(TemporalCompositor compositor) {
-    switch (compositor) {
-        case TemporalCompositor::MaxIntensityProjection: return "tc_max_intensity_projection.glsl";
-        case TemporalCompositor::Average: return "tc_average.glsl";
-        case TemporalCompositor::MaxDensityChange: return "tc_max_density_change.glsl";
+// A custom compositor's body for the build's validation: it reads every input.
+constexpr const char* kExampleCustomBody = R"(
+    float best = -1.0;
+    int peak = -1;
+    for (int i = 0; i < count; ++i) {
+        if (hasData[i] && inMask[i] && stf[i].a > 0.0 && density[i] + 0.0 * time[i] > best) {
+            best = density[i];
+            peak = i;
+        }
     }
-    return "tc_max_intensity_projection.glsl";
-}
+    return float(peak);
+)";
 
 const char* walkModule(TimeStepWalk walk) {
     switch (walk) {
@@ -63,8 +67,25 @@ constexpr GridKind kGridKinds[] = {
     {false, true, true, false},   // structured and uneven rectilinear together
 };
 
-constexpr TemporalCompositor kCompositors[] = {TemporalCompositor::MaxIntensityProjection,
-                                              TemporalCompositor::Average, TemporalCompositor::MaxDensityChange};
+// The custom compositor twice, once for each transfer function that may read it.
+std::vector<RaycastVariant> compositorChoices() {
+    std::vector<RaycastVariant> choices;
+    for (const TemporalCompositorInfo& info : temporalCompositors()) {
+        RaycastVariant variant;
+        variant.compositor = info.compositor;
+        if (info.compositor != TemporalCompositor::Custom) {
+            choices.push_back(variant);
+            continue;
+        }
+        variant.customCode = kExampleCustomBody;
+        variant.customCodeName = "example custom compositor";
+        for (CompositorReads reads : {CompositorReads::IndexTstf, CompositorReads::GradientTstf}) {
+            variant.customReads = reads;
+            choices.push_back(variant);
+        }
+    }
+    return choices;
+}
 
 }  // namespace
 
@@ -79,12 +100,19 @@ ShaderDefines RaycastVariant::defines() const {
         {"PACKED_VALIDITY", std::to_string(packedValidityCode(packedValidity))},
         {"MAX_TIME_STEPS", std::to_string(timeStepCapacity)},
         {"COLLECT_STATISTICS", flag(collectStatistics)},
+        {"CUSTOM_READS_INDEX", flag(customReads == CompositorReads::IndexTstf)},
     };
 }
 
 ShaderModules RaycastVariant::modules() const {
-    return {{"compositor.glsl", compositorModule(compositor), std::nullopt},
-            {"time_step_walk.glsl", walkModule(walk), std::nullopt}};
+    ShaderModules modules{{"time_step_walk.glsl", walkModule(walk), std::nullopt}};
+    if (compositor == TemporalCompositor::Custom) {
+        modules.push_back({"compositor.glsl", "tc_custom.glsl", std::nullopt});
+        modules.push_back({"custom_compositor_body.glsl", customCodeName, customCode});
+    } else {
+        modules.push_back({"compositor.glsl", compositorInfo(compositor).shaderModule, std::nullopt});
+    }
+    return modules;
 }
 
 std::string RaycastVariant::describe() const {
@@ -101,13 +129,12 @@ int timeStepCapacityFor(int timeStepCount) {
 
 std::vector<RaycastVariant> requestableRaycastVariants() {
     std::vector<RaycastVariant> variants;
-    for (TemporalCompositor compositor : kCompositors) {
+    for (const RaycastVariant& choice : compositorChoices()) {
         for (TimeStepWalk walk : {TimeStepWalk::RayList, TimeStepWalk::PackedGroups, TimeStepWalk::Naive}) {
             for (const GridKind& kind : kGridKinds) {
                 if (walk == TimeStepWalk::PackedGroups && !kind.rectilinear) continue;
                 for (bool styled : {false, true}) {
-                    RaycastVariant variant;
-                    variant.compositor = compositor;
+                    RaycastVariant variant = choice;
                     variant.walk = walk;
                     variant.styled = styled;
                     variant.allAffine = kind.allAffine;

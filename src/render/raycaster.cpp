@@ -2,14 +2,27 @@
 #include "tstyles/render/raycaster.h"
 
 #include <array>
+#include <sstream>
 #include <string>
 
 #include "tstyles/render/shader_contract.h"
 #include "tstyles/render/brick_occupancy.h"
 #include "tstyles/render/transfer_tables.h"
+#include "tstyles/core/errors.h"
+#include "tstyles/scene/temporal_compositors.h"
 
 namespace tstyles {
 namespace {
+
+// The lines of a compiler log about `file` (the scene's code), or the whole log if none is.
+std::string linesNaming(const std::string& log, const std::string& file) {
+    std::istringstream lines(log);
+    std::string line;
+    std::string result;
+    while (std::getline(lines, line))
+        if (line.find(file + ":") != std::string::npos) result += line + "\n";
+    return result.empty() ? log : result;
+}
 
 int finalModeCode(FinalMode mode) {
     switch (mode) {
@@ -37,9 +50,18 @@ Raycaster::Raycaster(const ShaderLibrary& shaders)
 const Program& Raycaster::programFor(const RaycastVariant& variant) {
     auto found = programs_.find(variant);
     if (found != programs_.end()) return found->second;
-    auto program = Program::build(shaders_, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "raycast.frag"}},
-                                  variant.defines(), variant.modules());
-    return programs_.emplace(variant, std::move(program)).first->second;
+    const std::vector<ShaderStage> stages{{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "raycast.frag"}};
+    if (variant.compositor != TemporalCompositor::Custom)
+        return programs_.emplace(variant, Program::build(shaders_, stages, variant.defines(), variant.modules()))
+            .first->second;
+    // The scene's own code: the compiler's complaint is about the user's input, and names its lines.
+    try {
+        return programs_.emplace(variant, Program::build(shaders_, stages, variant.defines(), variant.modules()))
+            .first->second;
+    } catch (const std::runtime_error& error) {
+        throw InputError(variant.customCodeName + ": does not compile:\n" +
+                         linesNaming(error.what(), variant.customCodeName));
+    }
 }
 
 void Raycaster::draw(const RaycastVariant& variant, const RaycastParameters& parameters) {
@@ -56,6 +78,9 @@ void Raycaster::draw(const RaycastVariant& variant, const RaycastParameters& par
     program.set("background", parameters.background);
     program.set("finalMode", finalModeCode(parameters.finalMode));
     program.set("changeRange", parameters.changeRange);
+    const TemporalCompositorInfo& compositor = compositorInfo(variant.compositor);
+    if (compositor.takesThreshold) program.set("compositorThreshold", parameters.compositorThreshold);
+    if (compositor.takesSteps) program.set("compositorSteps", parameters.compositorSteps);
     if (variant.walk == TimeStepWalk::PackedGroups) {
         program.set("packedGroupCount", parameters.packedGroupCount);
         program.set("inversePackedAtlasSize", 1.0f / glm::vec3(parameters.packedAtlasSize));

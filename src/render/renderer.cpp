@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "tstyles/render/covered_pixels.h"
+#include "tstyles/scene/temporal_compositors.h"
 
 namespace tstyles {
 namespace {
@@ -60,6 +61,11 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     entryExitBuffers_.bind();
     RaycastVariant variant;
     variant.compositor = scene.compositor;
+    if (const auto& custom = scene.compositorOptions.custom; scene.compositor == TemporalCompositor::Custom && custom) {
+        variant.customCode = custom->glsl;
+        variant.customCodeName = custom->ownFile ? custom->origin.string() : custom->origin.string() + ": compositor.glsl";
+        variant.customReads = custom->reads;
+    }
     variant.collectStatistics = options.collectStatistics;
     variant.masks = gpuSeries_->hasMasks();
     variant.allAffine = gpuSeries_->allAffine();
@@ -80,6 +86,9 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     parameters.background = glm::vec4(scene.background);
     parameters.finalMode = scene.finalMode;
     parameters.changeRange = glm::vec2(float(scene.gradientTstf.rangeLow), float(scene.gradientTstf.rangeHigh));
+    parameters.compositorThreshold = float(scene.compositorOptions.threshold);
+    if (compositorInfo(scene.compositor).takesSteps)
+        parameters.compositorSteps = scene.compositorOptions.differenceSteps(gpuSeries_->timeStepCount());
     parameters.exposedSteps = options.soloTimeStep ? glm::ivec2(*options.soloTimeStep)
                                                    : scene.exposure.stepsOf(gpuSeries_->timeStepCount());
     if (const PackedAlignedAtlas* packed = gpuSeries_->packedAtlas(); packed && options.packAligned && !options.naive) {

@@ -8,6 +8,7 @@
 
 #include "automatic_opacity.h"
 #include "tstyles/data/density_sampling.h"
+#include "tstyles/scene/temporal_compositors.h"
 #include "tstyles/scene/visible_bounds.h"
 #include "time_colours.h"
 
@@ -184,12 +185,31 @@ Bounds framedBounds(const Scene& scene, const Series& series) {
     return scene.camera.framing == Framing::Visible ? visibleBounds(series, scene.stf) : series.worldBounds();
 }
 
+std::pair<double, double> automaticGradientRange(const Scene& scene, const Series& series) {
+    const double change = typicalLargestChange(series, scene.stf);
+    const AutomaticRange range = scene.compositor == TemporalCompositor::Custom
+                                     ? AutomaticRange::Change
+                                     : compositorInfo(scene.compositor).range;
+    switch (range) {
+        case AutomaticRange::Change: return {0.0, change};
+        case AutomaticRange::HalfChange: return {0.0, 0.5 * change};
+        case AutomaticRange::SignedChange: return {-change, change};
+        case AutomaticRange::SignedPerTime: {
+            const double span = series.steps.back().time - series.steps.front().time;
+            const double perTime = span > 0.0 ? change / span : change;
+            return {-perTime, perTime};
+        }
+    }
+    return {0.0, change};
+}
+
 SceneOnSeries fitSceneToSeries(Scene scene, Series series) {
     const DisplayFrame frame = chooseDisplayFrame(scene.display, series);
     Series display = applyDisplayFrame(std::move(series), frame);
     if (scene.gradientTstf.automaticRange) {
-        scene.gradientTstf.rangeLow = 0.0;
-        scene.gradientTstf.rangeHigh = typicalLargestChange(display, scene.stf);
+        const auto [low, high] = automaticGradientRange(scene, display);
+        scene.gradientTstf.rangeLow = low;
+        scene.gradientTstf.rangeHigh = high;
     }
     const Bounds framed = framedBounds(scene, display);
     return {std::move(scene), std::move(display), frame, framed};

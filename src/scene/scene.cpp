@@ -6,17 +6,12 @@
 
 #include "name_table.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/scene/temporal_compositors.h"
 
 namespace tstyles {
 namespace {
 
 // One table per enum, so that the name of a value and the value of a name cannot drift apart.
-constexpr std::array compositorNames{
-    std::pair{TemporalCompositor::MaxIntensityProjection, "temporal-mip"},
-    std::pair{TemporalCompositor::Average, "temporal-average"},
-    std::pair{TemporalCompositor::MaxDensityChange, "temporal-max-change"},
-};
-
 constexpr std::array finalModeNameTable{
     std::pair{FinalMode::Stf, "stf"},
     std::pair{FinalMode::Tstf, "tstf"},
@@ -25,10 +20,12 @@ constexpr std::array finalModeNameTable{
 
 }  // namespace
 
-std::string toString(TemporalCompositor tc) { return nameOf(compositorNames, tc); }
+std::string toString(TemporalCompositor tc) { return compositorInfo(tc).name; }
 
 std::optional<TemporalCompositor> temporalCompositorFromString(const std::string& name) {
-    return valueOf(compositorNames, name);
+    for (const auto& info : temporalCompositors())
+        if (name == info.name) return info.compositor;
+    return std::nullopt;
 }
 
 std::string toString(FinalMode mode) { return nameOf(finalModeNameTable, mode); }
@@ -37,13 +34,29 @@ std::optional<FinalMode> finalModeFromString(const std::string& name) {
     return valueOf(finalModeNameTable, name);
 }
 
-std::vector<std::string> temporalCompositorNames() { return allNames(compositorNames); }
+std::vector<std::string> temporalCompositorNames() {
+    std::vector<std::string> names;
+    for (const auto& info : temporalCompositors())
+        if (info.compositor != TemporalCompositor::Custom) names.emplace_back(info.name);
+    return names;
+}
 
 std::vector<std::string> finalModeNames() { return allNames(finalModeNameTable); }
 
 }  // namespace tstyles
 
 namespace tstyles {
+
+glm::ivec2 CompositorOptions::differenceSteps(std::size_t stepCount, const std::filesystem::path& sceneFile) const {
+    const int lastStep = int(stepCount) - 1;
+    const int to = differenceTo.value_or(lastStep);
+    for (const auto& [index, step] : {std::pair{0, differenceFrom}, std::pair{1, to}})
+        if (step < 0 || step > lastStep)
+            throwInputError(sceneFile, "compositor.steps[" + std::to_string(index) + "]",
+                            "is " + std::to_string(step) + " (the series has " + std::to_string(stepCount) +
+                                " time-steps, 0 to " + std::to_string(lastStep) + ")");
+    return {differenceFrom, to};
+}
 
 glm::ivec2 Exposure::stepsOf(std::size_t stepCount, const std::filesystem::path& sceneFile) const {
     const int lastStep = int(stepCount) - 1;

@@ -107,9 +107,10 @@ void readCurve(const JsonFieldReader& fields, const json& object, const std::str
 void readGradientRange(const JsonFieldReader& fields, const json& value, const std::string& path,
                        GradientTstf& tstf) {
     if (!value.is_array()) fields.fail(path, "expected [low, high] or \"auto\", got " + std::string(value.type_name()));
-    const std::vector<double> range = fields.numbers(value, path, 2, nonNegative);
+    // Signed characteristics (a trend, a difference) take a range around 0.
+    const std::vector<double> range = fields.numbers(value, path, 2, Interval{-1.0e30, 1.0e30});
     if (!(range[0] < range[1])) {
-        fields.fail(path, "must be [low, high] with 0 <= low < high, got [" + formatNumber(range[0]) + ", " +
+        fields.fail(path, "must be [low, high] with low < high, got [" + formatNumber(range[0]) + ", " +
                               formatNumber(range[1]) + "]");
     }
     tstf.rangeLow = range[0];
@@ -348,10 +349,8 @@ Scene parseScene(const std::string& text, const std::filesystem::path& origin) {
         readCamera(fields, *camera, scene.camera);
     if (const json* raycast = JsonFieldReader::member(root, "raycast")) readRaycast(fields, *raycast, scene);
     if (const json* stf = JsonFieldReader::member(root, "stf")) readStf(fields, *stf, scene);
-    if (const json* compositor = JsonFieldReader::member(root, "compositor")) {
-        scene.compositor = fields.name<TemporalCompositor>(
-            *compositor, "compositor", temporalCompositorFromString, temporalCompositorNames());
-    }
+    if (const json* compositor = JsonFieldReader::member(root, "compositor"))
+        readCompositor(fields, *compositor, origin, scene);
     if (const json* tstf = JsonFieldReader::member(root, "tstf")) readTstf(fields, *tstf, scene);
     if (const json* exposure = JsonFieldReader::member(root, "exposure")) readExposure(fields, *exposure, scene.exposure);
     if (const json* finalMode = JsonFieldReader::member(root, "final")) {

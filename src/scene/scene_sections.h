@@ -16,6 +16,11 @@ Animation readAnimation(const JsonFieldReader& fields, const nlohmann::json& val
                         const std::filesystem::path& origin);
 nlohmann::ordered_json animationJson(const Animation& animation);
 
+// "compositor": sets scene.compositor and scene.compositorOptions.
+void readCompositor(const JsonFieldReader& fields, const nlohmann::json& value, const std::filesystem::path& origin,
+                    Scene& scene);
+nlohmann::ordered_json compositorJson(const Scene& scene, const std::filesystem::path& sceneFolder);
+
 Annotations readAnnotations(const JsonFieldReader& fields, const nlohmann::json& value);
 nlohmann::ordered_json annotationsJson(const Annotations& annotations);
 

@@ -159,7 +159,7 @@ std::string sceneToJson(const Scene& scene, const std::filesystem::path& sceneFo
     raycast["termination"] = scene.raycast.termination;
 
     root["stf"] = curveJson(scene.stf.curve, sceneFolder);
-    root["compositor"] = toString(scene.compositor);
+    root["compositor"] = compositorJson(scene, sceneFolder);
 
     ordered_json& tstf = root["tstf"];
     tstf["index"] = curveJson(scene.indexTstf.curve, sceneFolder);

@@ -26,7 +26,15 @@ std::shared_ptr<const Series> fitSeries(Scene& scene, const std::vector<std::fil
                                         DisplayFrame& frame) {
     if (opened == nullptr && paths.size() == 1 && current != nullptr && current->series &&
         sameFile(paths.front(), current->series->manifestPath) && current->scene.display == scene.display) {
-        if (scene.gradientTstf.automaticRange) scene.gradientTstf.rangeHigh = current->scene.gradientTstf.rangeHigh;
+        if (scene.gradientTstf.automaticRange) {
+            // The fit depends on the compositor (a trend's range is signed): refit only when it changed.
+            const auto [low, high] = scene.compositor == current->scene.compositor
+                                         ? std::pair{current->scene.gradientTstf.rangeLow,
+                                                     current->scene.gradientTstf.rangeHigh}
+                                         : automaticGradientRange(scene, *current->series);
+            scene.gradientTstf.rangeLow = low;
+            scene.gradientTstf.rangeHigh = high;
+        }
         frame = current->frame;
         return current->series;
     }

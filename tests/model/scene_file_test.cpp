@@ -208,7 +208,7 @@ const BadScene badScenes[] = {
     {R"({"dataset": "a", "tstf": {"index": {"opacity": [{"at": "1", "opacity": 1}]}}})",
      "tstf.index.opacity[0].at", "expected a number"},
     {R"({"dataset": "a", "tstf": {"gradient": {"range": [1, 0.5]}}})", "tstf.gradient.range",
-     "0 <= low < high, got [1, 0.5]"},
+     "low < high, got [1, 0.5]"},
     {R"({"dataset": "a", "tstf": {"gradient": {"range": [-1, 1]}}})", "tstf.gradient.range[0]",
      "must be >= 0"},
     {R"({"dataset": "a", "tstf": {"gradient": {"color": [{"at": 2, "color": [0, 0, 0]}]}}})",

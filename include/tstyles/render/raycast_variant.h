@@ -21,6 +21,10 @@ enum class TimeStepWalk {
 
 struct RaycastVariant {
     TemporalCompositor compositor = TemporalCompositor::MaxIntensityProjection;
+    // TemporalCompositor::Custom: the scene's code, its name in compiler messages, what reads it.
+    std::string customCode;
+    std::string customCodeName;
+    CompositorReads customReads = CompositorReads::IndexTstf;
     TimeStepWalk walk = TimeStepWalk::RayList;
     bool styled = false;           // a transfer function uses lit-sphere styles
     bool masks = false;            // a time-step has a segmentation mask
@@ -48,7 +52,8 @@ struct RaycastVariant {
 int timeStepCapacityFor(int timeStepCount);
 
 // Every variant a frame can ask for, up to the array capacity (which changes array sizes only):
-// every compositor x walk x grid kind x styled, with masks and statistics on and off. The build
+// every compositor x walk x grid kind x styled, with masks and statistics on and off (the custom
+// compositor with an example body that reads each input, for both of its readers). The build
 // validates each of them (tools/validate_raycast_variants.cpp).
 std::vector<RaycastVariant> requestableRaycastVariants();
 

@@ -28,6 +28,10 @@ struct RaycastParameters {
     glm::vec4 background{0.0f};
     FinalMode finalMode = FinalMode::Modulate;
     glm::vec2 changeRange{0.0f, 1.0f};
+    // The compositor's options (those its table line takes): first-arrival and last-above's
+    // density threshold, difference's time-steps [from, to].
+    float compositorThreshold = 0.5f;
+    glm::ivec2 compositorSteps{0};
     // The time-steps that take part, first and last inclusive (the scene's exposure, or a solo step).
     glm::ivec2 exposedSteps{0, std::numeric_limits<int>::max()};
     // The packed atlas (RaycastVariant::walk PackedGroups).

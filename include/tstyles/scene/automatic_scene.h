@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tstyles/data/display_frame.h"
@@ -44,5 +45,8 @@ Bounds framedBounds(const Scene& scene, const Series& series);
 // The change (max - min density over time-steps) below which 99 % of the visible voxels' changes
 // lie: the automatic gradient TSTF range is [0, this].
 double typicalLargestChange(const Series& series, const Stf& stf);
+// The gradient TSTF's range that "auto" stands for with the scene's compositor
+// (AutomaticRange of tstyles/scene/temporal_compositors.h).
+std::pair<double, double> automaticGradientRange(const Scene& scene, const Series& series);
 
 }  // namespace tstyles

@@ -16,11 +16,53 @@
 
 namespace tstyles {
 
-// The temporal compositor: how the n values that overlap at a sample become one temporal characteristic.
+// The temporal compositor: how the n values that overlap at a sample become one temporal
+// characteristic. What each one computes and which TSTF reads it: tstyles/scene/temporal_compositors.h.
 enum class TemporalCompositor {
-    MaxIntensityProjection,  // time-step with the highest STF opacity wins; its index feeds the index TSTF
-    Average,                 // colours and opacities averaged over the non-transparent time-steps
-    MaxDensityChange,        // max - min density feeds the gradient-magnitude TSTF
+    MaxIntensityProjection,
+    Average,
+    MaxDensityChange,
+    Minimum,
+    StandardDeviation,
+    TimeOfMaximum,
+    FirstArrival,
+    LastAbove,
+    LinearTrend,
+    Chronovolume,
+    Difference,
+    Custom,  // the scene's own GLSL (CompositorOptions::custom)
+};
+
+// Which transfer function reads a compositor's temporal characteristic.
+enum class CompositorReads {
+    IndexTstf,     // a time-step index
+    GradientTstf,  // a value in density units, through the gradient TSTF's range
+    Composited,    // each time-step is styled on its own and the results are combined
+};
+
+// A scene's own compositor: a GLSL function body over the documented inputs (docs/compositors.md).
+struct CustomCompositor {
+    std::string glsl;
+    // Where the code came from, for messages: the scene file (inline "glsl"), or the file the scene
+    // names ("file", then `ownFile`).
+    std::filesystem::path origin;
+    bool ownFile = false;
+    CompositorReads reads = CompositorReads::IndexTstf;
+    bool operator==(const CustomCompositor&) const = default;
+};
+
+// The settings some compositors take.
+struct CompositorOptions {
+    double threshold = 0.5;  // first-arrival, last-above: the density to reach
+    // difference: the time-steps [from, to]; the difference is density(to) - density(from).
+    // No `to`: the series' last time-step.
+    int differenceFrom = 0;
+    std::optional<int> differenceTo;
+    std::optional<CustomCompositor> custom;
+    bool operator==(const CompositorOptions&) const = default;
+    // [from, to] of the difference on a series of `stepCount` time-steps; an InputError naming
+    // "compositor.steps" of `sceneFile` where they do not fit it.
+    glm::ivec2 differenceSteps(std::size_t stepCount, const std::filesystem::path& sceneFile = {}) const;
 };
 
 // What the compositor returns: STF alone, TSTF alone, or the STF modulated by the TSTF.
@@ -30,7 +72,8 @@ std::string toString(TemporalCompositor tc);
 std::optional<TemporalCompositor> temporalCompositorFromString(const std::string& name);
 std::string toString(FinalMode mode);
 std::optional<FinalMode> finalModeFromString(const std::string& name);
-// Every accepted name, in declaration order (for messages and UI lists).
+// Every accepted name, in declaration order (for messages and UI lists); the custom compositor,
+// which needs its code, is not among the compositor names.
 std::vector<std::string> temporalCompositorNames();
 std::vector<std::string> finalModeNames();
 
@@ -69,6 +112,7 @@ struct Scene {
     Stf stf = defaultStf();
     Exposure exposure;
     TemporalCompositor compositor = TemporalCompositor::MaxIntensityProjection;
+    CompositorOptions compositorOptions;
     IndexTstf indexTstf = defaultIndexTstf();
     GradientTstf gradientTstf = defaultGradientTstf();
     FinalMode finalMode = FinalMode::Modulate;

@@ -1,0 +1,23 @@
+// Last time above: the latest time-step whose density at the sample reaches the threshold (a
+// departure map), by its STF and the index TSTF. Where no time-step reaches it, nothing shows.
+#include "temporal_sample.glsl"
+
+uniform float compositorThreshold;
+
+struct CompositorState {
+    TimeStepSample last;
+};
+
+CompositorState compositorInit() {
+    return CompositorState(noTimeStep());
+}
+
+void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 position, inout int fetches) {
+    if (s.density < compositorThreshold) return;
+    if (s.step > state.last.step) state.last = s;
+}
+
+TemporalCharacteristic compositorFinish(CompositorState state) {
+    if (state.last.step < 0 || state.last.stf.a <= 0.0) return transparentCharacteristic();
+    return characteristicOf(READS_INDEX_TSTF, float(state.last.step), state.last);
+}

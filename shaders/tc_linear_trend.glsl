@@ -1,0 +1,41 @@
+// Linear trend: the least-squares slope of density over the time-steps' time stamps at the sample
+// (density units per unit of the series' time), signed, by the gradient TSTF over its range, which
+// for a diverging colour map is centred on 0. Running means and co-moments (Welford) keep it exact
+// for stamps far from 0. Colour and style come from the time-step with the highest STF opacity;
+// a slope needs two time-steps with data at different times, else the STF shows alone.
+#include "temporal_sample.glsl"
+
+struct CompositorState {
+    float meanTime;
+    float meanDensity;
+    float timeVariance;  // sum of squared time differences from the mean
+    float covariance;    // sum of products of time and density differences
+    int withData;
+    TimeStepSample strongest;
+    bool anyInMask;
+};
+
+CompositorState compositorInit() {
+    return CompositorState(0.0, 0.0, 0.0, 0.0, 0, noTimeStep(), false);
+}
+
+void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 position, inout int fetches) {
+    float time = timeSteps.steps[s.step].time.x;
+    state.withData += 1;
+    float weight = 1.0 / float(state.withData);
+    float timeDelta = time - state.meanTime;
+    state.meanTime += timeDelta * weight;
+    state.meanDensity += (s.density - state.meanDensity) * weight;
+    state.timeVariance += timeDelta * (time - state.meanTime);
+    state.covariance += timeDelta * (s.density - state.meanDensity);
+    state.anyInMask = state.anyInMask || s.inMask;
+    if (s.stf.a > state.strongest.stf.a || state.strongest.step < 0) state.strongest = s;
+}
+
+TemporalCharacteristic compositorFinish(CompositorState state) {
+    if (state.withData == 0 || state.strongest.stf.a <= 0.0) return transparentCharacteristic();
+    TimeStepSample representative = state.strongest;
+    representative.inMask = state.anyInMask;
+    if (state.withData < 2 || state.timeVariance <= 0.0) return characteristicOf(READS_STF, 0.0, representative);
+    return characteristicOf(READS_GRADIENT_TSTF, state.covariance / state.timeVariance, representative);
+}

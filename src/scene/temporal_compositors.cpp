@@ -1,0 +1,56 @@
+// The table of temporal compositors (paper 5.3 and the ones users of temporal data ask for).
+#include "tstyles/scene/temporal_compositors.h"
+
+#include <array>
+#include <stdexcept>
+
+namespace tstyles {
+namespace {
+
+using enum TemporalCompositor;
+using enum CompositorReads;
+using enum AutomaticRange;
+
+constexpr std::array kCompositors{
+    TemporalCompositorInfo{MaxIntensityProjection, "temporal-mip", "tc_max_intensity_projection.glsl", IndexTstf,
+                           Change, false, false, "the time-step with the highest STF opacity, by the index TSTF"},
+    TemporalCompositorInfo{Average, "temporal-average", "tc_average.glsl", Composited, Change, false, false,
+                           "colours and opacities averaged over the visible time-steps"},
+    TemporalCompositorInfo{MaxDensityChange, "temporal-max-change", "tc_max_density_change.glsl", GradientTstf,
+                           Change, false, false, "largest minus smallest density, by the gradient TSTF"},
+    TemporalCompositorInfo{Minimum, "temporal-min", "tc_minimum.glsl", IndexTstf, Change, false, false,
+                           "the time-step with the lowest density, by the index TSTF"},
+    TemporalCompositorInfo{StandardDeviation, "temporal-std-dev", "tc_standard_deviation.glsl", GradientTstf,
+                           HalfChange, false, false, "standard deviation of the densities, by the gradient TSTF"},
+    TemporalCompositorInfo{TimeOfMaximum, "time-of-max", "tc_time_of_maximum.glsl", IndexTstf, Change, false,
+                           false, "the time-step of the highest density (time to peak), by the index TSTF"},
+    TemporalCompositorInfo{FirstArrival, "first-arrival", "tc_first_arrival.glsl", IndexTstf, Change, true, false,
+                           "the first time-step at or above the threshold, by the index TSTF"},
+    TemporalCompositorInfo{LastAbove, "last-above", "tc_last_above.glsl", IndexTstf, Change, true, false,
+                           "the last time-step at or above the threshold, by the index TSTF"},
+    TemporalCompositorInfo{LinearTrend, "linear-trend", "tc_linear_trend.glsl", GradientTstf, SignedPerTime, false,
+                           false, "least-squares slope of density over time, by the gradient TSTF"},
+    TemporalCompositorInfo{Chronovolume, "chronovolume", "tc_chronovolume.glsl", Composited, Change, false, false,
+                           "the time-steps composited front to back in time order"},
+    TemporalCompositorInfo{Difference, "difference", "tc_difference.glsl", GradientTstf, SignedChange, false, true,
+                           "density of one time-step minus another's, by the gradient TSTF"},
+    TemporalCompositorInfo{Custom, "custom", "", IndexTstf, Change, false, false,
+                           "the scene's own GLSL over the time-steps at the sample"},
+};
+
+}  // namespace
+
+std::span<const TemporalCompositorInfo> temporalCompositors() { return kCompositors; }
+
+const TemporalCompositorInfo& compositorInfo(TemporalCompositor compositor) {
+    for (const auto& info : kCompositors)
+        if (info.compositor == compositor) return info;
+    throw std::logic_error("a temporal compositor without a line in the table");
+}
+
+CompositorReads compositorReads(const Scene& scene) {
+    if (scene.compositor == Custom && scene.compositorOptions.custom) return scene.compositorOptions.custom->reads;
+    return compositorInfo(scene.compositor).reads;
+}
+
+}  // namespace tstyles
