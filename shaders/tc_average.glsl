@@ -3,6 +3,8 @@
 // time-step does not wash out the colour of an opaque one.
 #include "temporal_sample.glsl"
 
+const int COMPOSITOR_READS = READS_COMPOSITED;
+
 struct CompositorState {
     vec4 premultipliedSum;
     int nonTransparent;

@@ -4,6 +4,8 @@
 // later ones where they are opaque.
 #include "temporal_sample.glsl"
 
+const int COMPOSITOR_READS = READS_COMPOSITED;
+
 // The walk meets the time-steps in the order the ray enters their grids, not in time order: each
 // one's colour waits here, indexed by time-step, until the finish composites them in order. Marked
 // with the sample's generation instead of cleared, so a sample costs only the time-steps it meets.

@@ -6,6 +6,8 @@
 // gradient TSTF, as the scene's "reads" says (CUSTOM_READS).
 #include "temporal_sample.glsl"
 
+const int COMPOSITOR_READS = CUSTOM_READS_INDEX != 0 ? READS_INDEX_TSTF : READS_GRADIENT_TSTF;
+
 float customCompositor(const int count, const float density[MAX_TIME_STEPS], const bool hasData[MAX_TIME_STEPS],
                        const bool inMask[MAX_TIME_STEPS], const vec4 stf[MAX_TIME_STEPS],
                        const float time[MAX_TIME_STEPS]) {

@@ -3,6 +3,8 @@
 // has no data, nothing shows. Colour and style come from the more opaque of the two.
 #include "temporal_sample.glsl"
 
+const int COMPOSITOR_READS = READS_GRADIENT_TSTF;
+
 uniform ivec2 compositorSteps;  // from, to
 
 struct CompositorState {

@@ -2,6 +2,8 @@
 // arrival map), by its STF and the index TSTF. Where no time-step reaches it, nothing shows.
 #include "temporal_sample.glsl"
 
+const int COMPOSITOR_READS = READS_INDEX_TSTF;
+
 uniform float compositorThreshold;
 
 struct CompositorState {

@@ -5,6 +5,8 @@
 // a slope needs two time-steps with data at different times, else the STF shows alone.
 #include "temporal_sample.glsl"
 
+const int COMPOSITOR_READS = READS_GRADIENT_TSTF;
+
 struct CompositorState {
     float meanTime;
     float meanDensity;

@@ -4,6 +4,8 @@
 // undefined, and that time-step's STF shows alone.
 #include "temporal_sample.glsl"
 
+const int COMPOSITOR_READS = READS_GRADIENT_TSTF;
+
 struct CompositorState {
     float minimumDensity;
     float maximumDensity;

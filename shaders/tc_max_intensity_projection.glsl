@@ -4,6 +4,8 @@
 // Figure 1 stays opaque where its neighbours overlap it), then the earlier time-step.
 #include "temporal_sample.glsl"
 
+const int COMPOSITOR_READS = READS_INDEX_TSTF;
+
 struct CompositorState {
     TimeStepSample winner;
     vec4 winnerTstf;

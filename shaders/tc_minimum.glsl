@@ -3,6 +3,8 @@
 // enough for the STF: what persists through the whole series.
 #include "temporal_sample.glsl"
 
+const int COMPOSITOR_READS = READS_INDEX_TSTF;
+
 struct CompositorState {
     TimeStepSample lowest;
 };

@@ -4,6 +4,8 @@
 // from the time-step with the highest STF opacity; with data in one time-step only, its STF shows.
 #include "temporal_sample.glsl"
 
+const int COMPOSITOR_READS = READS_GRADIENT_TSTF;
+
 struct CompositorState {
     float mean;
     float sumOfSquares;  // of the differences from the mean

@@ -2,6 +2,8 @@
 // the sample (the earlier one on a tie), by its STF and the index TSTF.
 #include "temporal_sample.glsl"
 
+const int COMPOSITOR_READS = READS_INDEX_TSTF;
+
 struct CompositorState {
     TimeStepSample highest;
 };

@@ -7,6 +7,7 @@
 #include "temporal_sample.glsl"
 #include "compositor.glsl"
 #include "time_step_walk.glsl"
+#include "characteristic_style.glsl"
 
 TemporalSample compositeTemporal(vec3 position, float t) {
     TemporalSample result = TemporalSample(vec4(0.0), 0, 0, -1.0);

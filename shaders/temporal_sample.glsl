@@ -1,8 +1,9 @@
 // The interface between the walk over the time-steps at a sample and a temporal compositor
 // (paper 5.3). The walk hands every time-step with data at the sample to the compositor as a
 // TimeStepSample; the compositor's finish returns a TemporalCharacteristic, which names the transfer
-// function that reads it; styledCharacteristic() applies that transfer function, the styles and
-// the final processing. A compositor module (tc_*.glsl) defines
+// function that reads it; styledCharacteristic() (characteristic_style.glsl) applies that transfer
+// function, the styles and the final processing. A compositor module (tc_*.glsl) defines
+//   const int COMPOSITOR_READS         READS_INDEX_TSTF, READS_GRADIENT_TSTF or READS_COMPOSITED
 //   struct CompositorState
 //   CompositorState compositorInit()
 //   void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 position, inout int fetches)
@@ -69,20 +70,4 @@ vec4 styledTimeStep(TimeStepSample s, vec3 position, inout int fetches) {
     SphereCoordinate sphere = styleCoordinate(s.step, position, fetches);
     return finalProcessing(applyStyle(STF_TRACK, s.density, s.stf, sphere),
                            applyStyle(INDEX_TSTF_TRACK, float(s.step), tstf, sphere), s.inMask);
-}
-
-// The gradient TSTF's range: `value` from [changeRange.x, changeRange.y] goes to [0, 1].
-uniform vec2 changeRange;
-
-// The sample's colour and opacity for a compositor's characteristic.
-vec4 styledCharacteristic(TemporalCharacteristic c, vec3 position, inout int fetches) {
-    if (c.reads == READS_NOTHING) return vec4(0.0);
-    if (c.reads == READS_COMPOSITED) return c.colorOpacity;
-    if (c.reads == READS_INDEX_TSTF) return styledTimeStep(c.representative, position, fetches);
-    SphereCoordinate sphere = styleCoordinate(c.representative.step, position, fetches);
-    vec4 stf = applyStyle(STF_TRACK, c.representative.density, c.representative.stf, sphere);
-    if (c.reads == READS_STF) return stf;
-    float scaled = (c.value - changeRange.x) / (changeRange.y - changeRange.x);
-    vec4 tstf = applyStyle(GRADIENT_TSTF_TRACK, clamp(scaled, 0.0, 1.0), classifyGradientTstf(scaled), sphere);
-    return finalProcessing(stf, tstf, c.representative.inMask);
 }

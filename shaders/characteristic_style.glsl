@@ -1,0 +1,23 @@
+// A sample's colour and opacity from the compositor's temporal characteristic: the transfer
+// function that reads it, the styles and the final processing. Which transfer function can read
+// the program's compositor is a constant of its module (COMPOSITOR_READS), so only that path is in
+// the program: llvmpipe runs every path of a branch, masked, and the index path alone costs a
+// gradient (6 fetches) when styled.
+#include "temporal_sample.glsl"
+#include "compositor.glsl"
+
+// The gradient TSTF's range: `value` from [changeRange.x, changeRange.y] goes to [0, 1].
+uniform vec2 changeRange;
+
+// The sample's colour and opacity for a compositor's characteristic.
+vec4 styledCharacteristic(TemporalCharacteristic c, vec3 position, inout int fetches) {
+    if (c.reads == READS_NOTHING) return vec4(0.0);
+    if (COMPOSITOR_READS == READS_COMPOSITED) return c.colorOpacity;
+    if (COMPOSITOR_READS == READS_INDEX_TSTF) return styledTimeStep(c.representative, position, fetches);
+    SphereCoordinate sphere = styleCoordinate(c.representative.step, position, fetches);
+    vec4 stf = applyStyle(STF_TRACK, c.representative.density, c.representative.stf, sphere);
+    if (c.reads == READS_STF) return stf;
+    float scaled = (c.value - changeRange.x) / (changeRange.y - changeRange.x);
+    vec4 tstf = applyStyle(GRADIENT_TSTF_TRACK, clamp(scaled, 0.0, 1.0), classifyGradientTstf(scaled), sphere);
+    return finalProcessing(stf, tstf, c.representative.inMask);
+}
