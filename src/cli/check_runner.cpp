@@ -2,6 +2,7 @@
 // CaseWorker (context, renderer, datasets) and take the next case from a shared counter.
 #include "check_runner.h"
 
+#include <algorithm>
 #include <atomic>
 #include <charconv>
 #include <exception>
