@@ -2,6 +2,7 @@
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
+#include <mutex>
 #include <vector>
 
 #include "tstyles/core/errors.h"
@@ -68,10 +69,32 @@ OpenedDisplay openDisplay() {
     throw GlUnavailableError("EGL: no headless display: " + (tried.empty() ? std::string("no platform extensions") : tried));
 }
 
+// EGL hands every caller of eglGetPlatformDisplay with the same arguments the same display, and
+// one eglTerminate ends it for all; contexts on several threads (`tstyles check --jobs`) therefore
+// share one display, initialised by the first and terminated by the last.
+class SharedDisplay {
+public:
+    static OpenedDisplay acquire() {
+        const std::lock_guard lock(mutex_);
+        if (users_ == 0) opened_ = openDisplay();
+        ++users_;
+        return opened_;
+    }
+    static void release() {
+        const std::lock_guard lock(mutex_);
+        if (--users_ == 0) eglTerminate(opened_.display);
+    }
+
+private:
+    static inline std::mutex mutex_;
+    static inline int users_ = 0;
+    static inline OpenedDisplay opened_;
+};
+
 class EglContext final : public HeadlessContext {
 public:
     explicit EglContext(bool debugOutput) {
-        auto opened = openDisplay();
+        auto opened = SharedDisplay::acquire();
         display_ = opened.display;
         platform_ = opened.platform;
         try {
@@ -84,6 +107,7 @@ public:
     ~EglContext() override { release(); }
 
     std::string description() const override { return platform_ + ": " + currentGlRenderer(); }
+    GlBackend backend() const override { return GlBackend::Egl; }
 
 private:
     void create(bool debugOutput) {
@@ -115,7 +139,7 @@ private:
         if (display_ == EGL_NO_DISPLAY) return;
         eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
-        eglTerminate(display_);
+        SharedDisplay::release();
         display_ = EGL_NO_DISPLAY;
         context_ = EGL_NO_CONTEXT;
     }

@@ -1,6 +1,8 @@
 // Run-time loading of the GL entry points listed in gl_functions.inc.
 #include "tstyles/gl/gl_api.h"
 
+#include <mutex>
+
 #include "tstyles/core/errors.h"
 
 namespace tstyles::gl_api {
@@ -13,9 +15,16 @@ namespace tstyles::gl_api {
 
 namespace tstyles {
 
+// Contexts made on several threads at once (`tstyles check --jobs`) load the same entry points
+// while other threads already call them: EGL and OSMesa return context-independent addresses, so
+// a pointer is only written when it changes (the first context, or a switch of backend), and
+// threads that load the same values only read. The mutex keeps two first loads from racing.
 void loadGlFunctions(GlProcLoader loader) {
+    static std::mutex loading;
+    const std::lock_guard lock(loading);
 #define TSTYLES_GL_FUNCTION(type, name)                                                       \
-    gl_api::name = reinterpret_cast<type>(loader(#name));                                     \
+    if (auto loaded = reinterpret_cast<type>(loader(#name)); loaded != gl_api::name)          \
+        gl_api::name = loaded;                                                                \
     if (gl_api::name == nullptr)                                                              \
         throw GlUnavailableError("the OpenGL implementation does not provide " #name);
 #include "tstyles/gl/gl_functions.inc"

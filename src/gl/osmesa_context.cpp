@@ -38,6 +38,7 @@ public:
     ~OsMesaContext() override { OSMesaDestroyContext(context_); }
 
     std::string description() const override { return "OSMesa: " + currentGlRenderer(); }
+    GlBackend backend() const override { return GlBackend::OsMesa; }
 
 private:
     static constexpr int kSurfaceSize = 4;

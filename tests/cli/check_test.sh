@@ -88,6 +88,101 @@ case_deterministic_renders() {
     expect_exit 0
 }
 
+# The table in suite order (after the progress lines and a blank line; the summary line, which
+# names the report folder, left out) without its timings.
+table_of() {
+    sed -n '/^$/,$p' "$1" | sed '$d' | sed -E 's/  \([0-9.]+ s\)$//'
+}
+
+# junit.xml without its time="..." attributes: timings differ from run to run, the rest must not.
+junit_without_times() {
+    sed -E 's/ time="[^"]*"//g' "$1"
+}
+
+# --jobs 1 and --jobs 3 on one backend: the same exit code, table, report and images, whatever
+# order the cases finished in.
+jobs_agree() {
+    local backend=$1
+    write_suite
+    run_tstyles -- check "$SCRATCH/suite.json" --update first --jobs 2 --backend "$backend" --report "$SCRATCH/report"
+    expect_stdout_contains "2 parallel cases (--jobs 2)"
+    for jobs in 1 3; do
+        run_tstyles -- check "$SCRATCH/suite.json" --jobs "$jobs" --backend "$backend" --report "$SCRATCH/report-$jobs"
+        expect_exit 1
+        cp "$OUT_FILE" "$SCRATCH/stdout-$jobs.txt"
+        [ "$(grep -c '^\[[1-3]/3\] [a-z]*: ' "$OUT_FILE")" = 3 ] || fail "not one progress line per case"
+    done
+    head -n 1 "$SCRATCH/stdout-1.txt" | grep -qx "1 case at a time (--jobs 1)" || fail "first line with --jobs 1"
+    head -n 1 "$SCRATCH/stdout-3.txt" | grep -qx "3 parallel cases (--jobs 3)" || fail "first line with --jobs 3"
+    diff <(table_of "$SCRATCH/stdout-1.txt") <(table_of "$SCRATCH/stdout-3.txt") >&2 ||
+        fail "the tables of --jobs 1 and --jobs 3 differ"
+    grep -q "^\[2/3\] second  *FAIL" <(table_of "$SCRATCH/stdout-3.txt") || fail "the table is not in suite order"
+    diff <(junit_without_times "$SCRATCH/report-1/junit.xml") <(junit_without_times "$SCRATCH/report-3/junit.xml") >&2 ||
+        fail "junit.xml of --jobs 1 and --jobs 3 differ"
+    diff -r "$SCRATCH/report-1" "$SCRATCH/report-3" -x junit.xml >&2 ||
+        fail "the reports (index.html, images) of --jobs 1 and --jobs 3 differ"
+}
+case_jobs_agree_egl() { jobs_agree egl; }
+case_jobs_agree_osmesa() { jobs_agree osmesa; }
+
+# --update with cases rendered at once writes the same goldens as one at a time.
+case_update_with_jobs() {
+    write_suite golden/second.png
+    run_tstyles -- check "$SCRATCH/suite.json" --update --all --jobs 1 --report "$SCRATCH/report"
+    expect_exit 0
+    mv "$SCRATCH/golden" "$SCRATCH/golden-1"
+    mkdir "$SCRATCH/golden"
+    run_tstyles -- check "$SCRATCH/suite.json" --update --all --jobs 3 --report "$SCRATCH/report"
+    expect_exit 0
+    expect_stdout_contains "new golden"
+    diff -r "$SCRATCH/golden-1" "$SCRATCH/golden" >&2 || fail "--jobs 3 wrote other goldens than --jobs 1"
+    run_tstyles -- check "$SCRATCH/suite.json" --jobs 2 --report "$SCRATCH/report"
+    expect_exit 0
+    expect_stdout_contains "all 3 cases pass"
+}
+
+# --jobs auto: one case at a time on a software rasteriser, else up to 4; the first line says which.
+case_jobs_auto() {
+    write_suite
+    run_tstyles -- check "$SCRATCH/suite.json" --report "$SCRATCH/report"
+    expect_exit 1
+    local first
+    first=$(head -n 1 "$OUT_FILE")
+    if grep -q "llvmpipe" <(tail -n 1 "$OUT_FILE"); then
+        [ "$first" = "1 case at a time: llvmpipe already uses every core (--jobs N overrides)" ] ||
+            fail "auto on llvmpipe chose: $first"
+    else
+        grep -qE "^([1-3] parallel cases|1 case at a time) \(auto" <<<"$first" || fail "auto chose: $first"
+    fi
+}
+
+bad_jobs() {
+    write_suite
+    run_tstyles -- check "$SCRATCH/suite.json" --jobs "$1" --report "$SCRATCH/report"
+    expect_exit 2
+    expect_stderr_contains "--jobs: is \"$1\"; expected a whole number"
+    [ ! -e "$SCRATCH/report" ] || fail "a report was written for --jobs $1"
+}
+case_jobs_zero() { bad_jobs 0; }
+case_jobs_not_a_number() { bad_jobs x; }
+
+# A case that fails to render (its dataset does not exist) stops the run with exit 2 and the
+# message that one case at a time gives, whatever the other threads were doing; no report.
+case_bad_case_with_jobs() {
+    write_suite
+    sed 's|"dataset": "[^"]*"|"dataset": "nowhere/series.json"|' "$SCENES/figure1-focus-step6.json" >"$SCRATCH/bad.json"
+    sed -i "s|\"scene\": \"$SCENES/figure1-focus-step6.json\"|\"scene\": \"$SCRATCH/bad.json\"|" "$SCRATCH/suite.json"
+    grep -q bad.json "$SCRATCH/suite.json" || fail "the test did not write its bad suite"
+    for jobs in 1 2; do
+        run_tstyles -- check "$SCRATCH/suite.json" --jobs "$jobs" --report "$SCRATCH/report"
+        expect_exit 2
+        expect_stderr_contains "nowhere/series.json"
+        [ ! -e "$SCRATCH/report" ] || fail "a report was written after a bad case (--jobs $jobs)"
+        grep -v '^+ ' "$ERR_FILE" >"$SCRATCH/stderr-$jobs.txt"
+    done
+    diff "$SCRATCH/stderr-1.txt" "$SCRATCH/stderr-2.txt" >&2 || fail "--jobs 2 reports another error than --jobs 1"
+}
+
 bad_suite() {
     local body=$1 expected=$2
     printf '%s\n' "$body" >"$SCRATCH/suite.json"

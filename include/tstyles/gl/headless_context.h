@@ -1,5 +1,7 @@
 // An OpenGL 4.5 core context without a window: EGL surfaceless (or an EGL device) first, OSMesa
 // second. Creating one makes it current on the calling thread and loads the GL entry points.
+// Several threads may each create and use their own context of one backend at once (`tstyles
+// check --jobs`); a context stays current on the thread that created it until it is destroyed there.
 #pragma once
 
 #include <memory>
@@ -21,6 +23,9 @@ public:
 
     // Which backend and renderer this is, e.g. "EGL surfaceless: llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5".
     virtual std::string description() const = 0;
+    // Egl or OsMesa (never Auto): the backend that further contexts of this process must use, as
+    // the GL entry points are process-wide and differ between the two.
+    virtual GlBackend backend() const = 0;
 
 protected:
     HeadlessContext() = default;

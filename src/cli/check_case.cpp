@@ -1,0 +1,83 @@
+// A case of `tstyles check` rendered and compared with its golden, on the calling thread's context.
+#include "check_case.h"
+
+#include <chrono>
+
+#include "commands.h"
+#include "tstyles/image/image_io.h"
+#include "tstyles/render/annotated_rendering.h"
+
+namespace tstyles::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The outcome of a case that is not updated, and what is wrong with it.
+void judge(CaseResult& result, const CheckCase& entry, const std::optional<Image>& expected, const Image& actual) {
+    if (!expected) {
+        result.outcome = CaseOutcome::MissingGolden;
+        result.problems.push_back("no golden image at " + entry.golden.string() + "; --update " + entry.name +
+                                  " writes it (look at it first)");
+    } else if (!result.difference) {
+        result.outcome = CaseOutcome::Failed;
+        result.problems.push_back("the golden is " + std::to_string(expected->width) + "x" +
+                                  std::to_string(expected->height) + ", the render " + std::to_string(actual.width) +
+                                  "x" + std::to_string(actual.height));
+    } else {
+        result.problems = thresholdsExceeded(*result.difference, entry.thresholds);
+        result.outcome = result.problems.empty() ? CaseOutcome::Passed : CaseOutcome::Failed;
+    }
+}
+
+}  // namespace
+
+CaseWorker::CaseWorker(GlBackend backend, const ShaderLibrary& shaders, std::mutex& datasetReading)
+    : context_(createHeadlessContext(backend, glDebugOutputRequested())),
+      renderer_(shaders),
+      datasetReading_(datasetReading) {}
+
+const SceneOnSeries& CaseWorker::fit(const Scene& scene) {
+    auto dataset = datasets_.find(scene.dataset);
+    if (dataset == datasets_.end()) {
+        const std::lock_guard lock(datasetReading_);
+        dataset = datasets_.emplace(scene.dataset, openDataset({scene.dataset}, DatasetOptions{})).first;
+    }
+    const bool sameSeries = fitted_ && uploaded_ == scene.dataset && fitted_->scene.display == scene.display;
+    Series copy = dataset->second;
+    fitted_.emplace(fitSceneToSeries(scene, std::move(copy)));
+    if (!sameSeries) renderer_.setSeries(fitted_->series);
+    uploaded_ = scene.dataset;
+    return *fitted_;
+}
+
+CaseResult CaseWorker::check(const CheckCase& entry, Scene scene, bool update) {
+    const auto start = std::chrono::steady_clock::now();
+    CaseResult result{entry.name, entry.scene};
+    if (entry.width) scene.width = *entry.width;
+    if (entry.height) scene.height = *entry.height;
+    const SceneOnSeries& fitted = fit(scene);
+    AnnotatedRendering rendering(renderer_, fitted);
+    Image actual = rendering.render(fitted.scene);
+    const bool haveGolden = fs::is_regular_file(entry.golden);
+    std::optional<Image> expected;
+    if (haveGolden) expected = readImage(entry.golden);
+    if (expected && expected->width == actual.width && expected->height == actual.height)
+        result.difference = compareImages(actual, *expected, entry.thresholds.pixelThreshold);
+    if (update) {
+        result.outcome = CaseOutcome::Updated;
+        result.problems.push_back(!haveGolden ? "new golden " + entry.golden.string()
+                                  : result.difference ? "golden rewritten; it changed by " + describe(*result.difference)
+                                                      : "golden rewritten at a new size");
+        result.actual = std::move(actual);
+    } else {
+        judge(result, entry, expected, actual);
+        if (result.outcome != CaseOutcome::Passed) {
+            result.expected = std::move(expected);
+            result.actual = std::move(actual);
+        }
+    }
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace tstyles::cli
