@@ -10,10 +10,15 @@
 
 #include "finite_values.h"
 #include "netcdf_file.h"
+#include "series_assembly.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/core/input_limits.h"
 
 namespace tstyles {
 namespace {
+
+// Far beyond any volume a GPU holds (a 3D texture is at most 16384 wide), small enough for int.
+constexpr std::size_t kMaxAxisSamples = std::size_t(1) << 20;
 
 std::string joined(const std::vector<std::string>& names) {
     std::string text;
@@ -185,9 +190,11 @@ TimeAxis timeAxisOf(const NetcdfFile& nc, const NetcdfVariable& variable, int ti
                           nc.path(), name);
 }
 
-std::vector<double> stepTimes(const NetcdfFile& nc, const NetcdfVariable& variable, int timeDimension) {
+std::vector<double> stepTimes(const NetcdfFile& nc, const NetcdfVariable& variable, int timeDimension,
+                              std::uint64_t cap) {
     if (timeDimension < 0) return {0.0};
     const NetcdfDimension& dimension = variable.dimensions[std::size_t(timeDimension)];
+    requireStepCount(nc.path(), dimension.name, dimension.length, cap);
     std::vector<double> times(dimension.length);
     for (std::size_t index = 0; index < times.size(); ++index) times[index] = double(index);
     const auto id = nc.findVariable(dimension.name);
@@ -230,10 +237,15 @@ SourceSeries openNetcdf(const std::filesystem::path& file, const ReadOptions& op
     std::array<AxisFrame, 3> frames;
     for (int axis = 0; axis < 3; ++axis) {
         const NetcdfDimension& dimension = variable.dimensions[std::size_t(spatial[std::size_t(2 - axis)])];
-        if (dimension.length < 2 || dimension.length > 1u << 20)
+        if (dimension.length < 2)
             throwInputError(file, variable.name,
                             "dimension " + dimension.name + " has " + std::to_string(dimension.length) +
                                 " samples: each spatial axis needs at least 2");
+        if (dimension.length > kMaxAxisSamples)
+            throwInputError(file, variable.name,
+                            "dimension " + dimension.name + " has " + std::to_string(dimension.length) +
+                                " samples: too large, a spatial axis may have at most " +
+                                std::to_string(kMaxAxisSamples));
         dims[axis] = int(dimension.length);
         frames[std::size_t(axis)] = axisFrame(*nc, dimension, options.indexAxes);
     }
@@ -253,7 +265,7 @@ SourceSeries openNetcdf(const std::filesystem::path& file, const ReadOptions& op
     source.format = nc->formatName();
     source.time = timeAxisOf(*nc, variable, timeDimension);
     source.valueUnit = nc->textAttribute(variable.id, "units").value_or("");
-    for (double time : stepTimes(*nc, variable, timeDimension)) {
+    for (double time : stepTimes(*nc, variable, timeDimension, memoryCap(options.maxMemoryBytes))) {
         source.steps.push_back({time, grid, placement, type, file});
     }
     source.readStep = [nc, variable, timeDimension, dims, frames, packing](std::size_t index) {
