@@ -1,10 +1,20 @@
 // Redirection of file descriptor 2 into a temporary file, undone in the destructor.
 #include "tstyles/core/stderr_capture.h"
 
+#include <iostream>
+
 #include <unistd.h>
 
 namespace tstyles {
 namespace {
+
+// C stdio and the C++ streams each buffer on their own (std::clog fully: OpenImageIO's PNG reader
+// writes there), so both are emptied into whichever file descriptor 2 is at the time.
+void flushAll() {
+    std::fflush(stderr);
+    std::clog.flush();
+    std::cerr.flush();
+}
 
 std::string withoutPrefix(std::string line) {
     for (const char* prefix : {"libpng error: ", "libpng warning: ", "** ERROR: ", "** WARNING: ", "** "})
@@ -15,7 +25,7 @@ std::string withoutPrefix(std::string line) {
 }  // namespace
 
 StderrCapture::StderrCapture() {
-    std::fflush(stderr);
+    flushAll();
     captured_ = std::tmpfile();
     if (captured_ == nullptr) return;  // nothing to capture into: the library prints as it would
     savedDescriptor_ = ::dup(STDERR_FILENO);
@@ -26,7 +36,7 @@ StderrCapture::StderrCapture() {
 }
 
 StderrCapture::~StderrCapture() {
-    std::fflush(stderr);
+    flushAll();
     if (savedDescriptor_ >= 0) {
         ::dup2(savedDescriptor_, STDERR_FILENO);
         ::close(savedDescriptor_);
@@ -36,7 +46,7 @@ StderrCapture::~StderrCapture() {
 
 std::string StderrCapture::text() const {
     if (captured_ == nullptr || savedDescriptor_ < 0) return "";
-    std::fflush(stderr);
+    flushAll();
     std::string all;
     std::rewind(captured_);
     char buffer[4096];

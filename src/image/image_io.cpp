@@ -15,6 +15,15 @@
 namespace tstyles {
 
 namespace {
+
+// OpenImageIO gathers several lines (its own, then the plugin's); our message is one line.
+std::string oneLine(std::string text) {
+    while (!text.empty() && text.back() == '\n') text.pop_back();
+    for (std::size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at))
+        text.replace(at, 1, "; ");
+    return text;
+}
+
 bool isFloatFormat(const std::filesystem::path& file) {
     std::string extension = file.extension().string();
     for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
@@ -58,7 +67,7 @@ Image readImage(const std::filesystem::path& file) {
         return said.empty() || message.find(said) != std::string::npos ? message : message + " (" + said + ")";
     };
     auto input = OIIO::ImageInput::open(file.string());
-    if (!input) throwInputError(file, "", withLibraryText("cannot read as an image: " + OIIO::geterror()));
+    if (!input) throwInputError(file, "", withLibraryText("cannot read as an image: " + oneLine(OIIO::geterror())));
     const OIIO::ImageSpec& spec = input->spec();
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) throwInputError(file, "", "the image is empty");
     // The header's size is checked before the pixels get memory: the file's float copy plus ours.
@@ -70,7 +79,7 @@ Image readImage(const std::filesystem::path& file) {
     const int channels = spec.nchannels;
     std::vector<float> pixels(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(channels));
     if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
-        throwInputError(file, "", withLibraryText("cannot read the pixels (truncated or damaged?): " + input->geterror()));
+        throwInputError(file, "", withLibraryText("cannot read the pixels (truncated or damaged?): " + oneLine(input->geterror())));
     for (int y = 0; y < spec.height; ++y)
         for (int x = 0; x < spec.width; ++x) {
             const float* pixel = &pixels[(std::size_t(y) * std::size_t(spec.width) + std::size_t(x)) * std::size_t(channels)];
