@@ -32,9 +32,7 @@ const std::vector<SeriesFormat>& seriesFormats() {
              return openNetcdf(file, options);
          })},
         {"NIfTI", {".nii", ".nii.gz"}, ".nii .nii.gz", {}, hasNiftiSignature,
-         stackedFiles([](const std::filesystem::path& file, const ReadOptions& options) {
-             return openNifti(file, options);
-         })},
+         stackedFiles([](const std::filesystem::path& file, const ReadOptions&) { return openNifti(file); })},
         {"NRRD", {".nrrd", ".nhdr"}, ".nrrd .nhdr", {}, startsWithNrrdMagic,
          stackedFiles([](const std::filesystem::path& file, const ReadOptions&) { return openNrrd(file); })},
         // By name only: ".bin" alone says too little.

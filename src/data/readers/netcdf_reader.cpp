@@ -12,7 +12,6 @@
 #include "netcdf_file.h"
 #include "series_assembly.h"
 #include "tstyles/core/errors.h"
-#include "tstyles/core/input_limits.h"
 
 namespace tstyles {
 namespace {
@@ -190,11 +189,10 @@ TimeAxis timeAxisOf(const NetcdfFile& nc, const NetcdfVariable& variable, int ti
                           nc.path(), name);
 }
 
-std::vector<double> stepTimes(const NetcdfFile& nc, const NetcdfVariable& variable, int timeDimension,
-                              std::uint64_t cap) {
+std::vector<double> stepTimes(const NetcdfFile& nc, const NetcdfVariable& variable, int timeDimension) {
     if (timeDimension < 0) return {0.0};
     const NetcdfDimension& dimension = variable.dimensions[std::size_t(timeDimension)];
-    requireStepCount(nc.path(), dimension.name, dimension.length, cap);
+    requireStepCount(nc.path(), dimension.name, dimension.length);
     std::vector<double> times(dimension.length);
     for (std::size_t index = 0; index < times.size(); ++index) times[index] = double(index);
     const auto id = nc.findVariable(dimension.name);
@@ -265,7 +263,7 @@ SourceSeries openNetcdf(const std::filesystem::path& file, const ReadOptions& op
     source.format = nc->formatName();
     source.time = timeAxisOf(*nc, variable, timeDimension);
     source.valueUnit = nc->textAttribute(variable.id, "units").value_or("");
-    for (double time : stepTimes(*nc, variable, timeDimension, memoryCap(options.maxMemoryBytes))) {
+    for (double time : stepTimes(*nc, variable, timeDimension)) {
         source.steps.push_back({time, grid, placement, type, file});
     }
     source.readStep = [nc, variable, timeDimension, dims, frames, packing](std::size_t index) {

@@ -118,7 +118,7 @@ void requireVoxelData(const nifti_image& image, const std::filesystem::path& dat
 
 }  // namespace
 
-SourceSeries openNifti(const std::filesystem::path& file, const ReadOptions& options) {
+SourceSeries openNifti(const std::filesystem::path& file) {
     std::shared_ptr<nifti_image> image(readHeader(file).release(), NiftiFree{});
     if (image->ndim < 3 || image->nx < 2 || image->ny < 2 || image->nz < 2)
         throwInputError(file, "dim",
@@ -134,7 +134,7 @@ SourceSeries openNifti(const std::filesystem::path& file, const ReadOptions& opt
 
     const std::filesystem::path dataFile = image->iname ? std::filesystem::path(image->iname) : file;
     requireVoxelData(*image, dataFile);
-    requireStepCount(file, "dim[4]", stepCount, memoryCap(options.maxMemoryBytes));
+    requireStepCount(file, "dim[4]", stepCount);
 
     SourceSeries source;
     source.name = file.filename().string();

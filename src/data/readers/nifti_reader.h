@@ -6,11 +6,10 @@
 #include <filesystem>
 
 #include "source_series.h"
-#include "tstyles/data/read_options.h"
 
 namespace tstyles {
 
-SourceSeries openNifti(const std::filesystem::path& file, const ReadOptions& options);
+SourceSeries openNifti(const std::filesystem::path& file);
 
 // True when the file starts with a NIfTI-1 or NIfTI-2 header (either byte order; gzip is opened).
 bool hasNiftiSignature(const std::filesystem::path& file);

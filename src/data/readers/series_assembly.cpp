@@ -144,13 +144,12 @@ std::array<double, 2> rangeFromData(const SourceSeries& source, const Series& se
 
 }  // namespace
 
-void requireStepCount(const std::filesystem::path& file, const std::string& field, std::uint64_t count,
-                      std::uint64_t cap) {
+void requireStepCount(const std::filesystem::path& file, const std::string& field, std::uint64_t count) {
     if (count > kMaxTimeSteps)
         throwInputError(file, field,
                         "declares " + std::to_string(count) + " time-steps, more than the " +
                             std::to_string(kMaxTimeSteps) + " a series may have (damaged file?)");
-    requireMemory(file, field, double(count) * double(sizeof(SourceStep) + sizeof(TimeStep)), cap,
+    requireMemory(file, field, double(count) * double(sizeof(SourceStep) + sizeof(TimeStep)), defaultMemoryCap(),
                   "the descriptions of " + std::to_string(count) + " time-steps");
 }
 

@@ -17,9 +17,9 @@ namespace tstyles {
 inline constexpr std::uint64_t kMaxTimeSteps = std::uint64_t(1) << 20;
 
 // Refuses a time-step count read from a file (`field` names it) above kMaxTimeSteps, or whose
-// descriptions alone would not fit under the memory cap, before anything is allocated for them.
-void requireStepCount(const std::filesystem::path& file, const std::string& field, std::uint64_t count,
-                      std::uint64_t cap);
+// descriptions alone would not fit in half of the machine's memory, before anything is allocated
+// for them. (--max-memory counts the values; the few steps it selects are checked there.)
+void requireStepCount(const std::filesystem::path& file, const std::string& field, std::uint64_t count);
 
 // The series as read, values still raw (missing ones NaN); `valueRange` is the range the density
 // mapping will use. `convert` writes this; everything else normalises it with toDensity.
