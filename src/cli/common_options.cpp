@@ -1,5 +1,7 @@
 // Options and lookups shared by the subcommands.
 #include <cstdlib>
+#include <filesystem>
+#include <new>
 
 #include "commands.h"
 #include "tstyles/core/errors.h"
@@ -70,7 +72,19 @@ ReadOptions toReadOptions(const DatasetOptions& options) {
 }
 
 Series openDataset(const std::vector<std::filesystem::path>& inputs, const DatasetOptions& options) {
-    return openSeries(inputs, toReadOptions(options));
+    const ReadOptions read = toReadOptions(options);
+    // The readers check sizes against the files and the memory cap; these are the backstops for a
+    // size that got past them, said as the input problem they are.
+    try {
+        return openSeries(inputs, read);
+    } catch (const std::bad_alloc&) {
+        throwInputError(inputs.front(), "",
+                        "not enough memory to read it (the sizes it declares are too large for this machine; "
+                        "--max-memory or --steps can ask for less)");
+    } catch (const std::filesystem::filesystem_error& error) {
+        throwInputError(error.path1().empty() ? inputs.front() : error.path1(), "",
+                        "cannot be read: " + error.code().message());
+    }
 }
 
 }  // namespace tstyles::cli

@@ -18,6 +18,7 @@
 #include "raw_values.h"
 #include "structured_grid_files.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/core/input_limits.h"
 
 namespace tstyles {
 namespace {
@@ -55,13 +56,25 @@ std::string parserMessage(const nlohmann::json::exception& error) {
     return end == std::string::npos ? message : message.substr(end + 2);
 }
 
+// A scene (it names a dataset, may hold comments) given where a dataset belongs: said as such
+// rather than as the manifest keys it lacks.
+bool looksLikeScene(const std::string& text) {
+    const nlohmann::json document = nlohmann::json::parse(text, nullptr, false, true);
+    return document.is_object() && document.contains("dataset") && !document.contains("format");
+}
+
 nlohmann::json parseManifest(const std::filesystem::path& file) {
     std::error_code error;
     if (!std::filesystem::exists(file, error)) throwInputError(file, "", "manifest not found");
+    requireRegularFile(file, "manifest");
     std::ifstream in(file, std::ios::binary);
     if (!in) throwInputError(file, "", "cannot open the manifest for reading");
     const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
     if (in.bad()) throwInputError(file, "", "cannot read the manifest");
+    if (looksLikeScene(text))
+        throwInputError(file, "",
+                        "is a scene file, not a dataset: render it with `tstyles render " + file.string() +
+                            " -o OUT.png`, or give `info` the dataset it names");
     try {
         return nlohmann::json::parse(text);
     } catch (const nlohmann::json::exception& parseError) {
@@ -284,6 +297,20 @@ std::array<SpatialAxis, 3> readAxes(const ManifestField& field) {
     return axes;
 }
 
+// Before any value file is read: the whole series under the memory limit.
+void requireSeriesMemory(const std::filesystem::path& manifest, const std::vector<StepEntry>& entries,
+                         const ManifestLimits& limits) {
+    double bytes = 0.0;
+    for (const StepEntry& entry : entries) {
+        const glm::ivec3 dims = entry.step.dims();
+        const double voxels = double(dims.x) * double(dims.y) * double(dims.z);
+        bytes += voxels * double(sizeof(float) + limits.gpuBytesPerVoxel + (entry.maskField.empty() ? 0 : 1));
+    }
+    requireMemory(manifest, "time_steps", bytes, memoryCap(limits.maxMemoryBytes),
+                  "the series' " + std::to_string(entries.size()) + " time-step(s) (4 bytes a voxel in memory, " +
+                      std::to_string(limits.gpuBytesPerVoxel) + " on the GPU, 1 per mask)");
+}
+
 std::string defaultName(const std::filesystem::path& manifest) {
     std::error_code error;
     const std::filesystem::path absolute = std::filesystem::absolute(manifest, error);
@@ -292,7 +319,7 @@ std::string defaultName(const std::filesystem::path& manifest) {
 
 }  // namespace
 
-Series loadSeries(const std::filesystem::path& manifestPath) {
+Series loadSeries(const std::filesystem::path& manifestPath, const ManifestLimits& limits) {
     const std::filesystem::path manifest = manifestFileOf(manifestPath);
     const nlohmann::json document = parseManifest(manifest);
     const ManifestField root(manifest, document, "");
@@ -320,6 +347,7 @@ Series loadSeries(const std::filesystem::path& manifestPath) {
     series.time = readTimeAxis(manifest, root);
     if (const auto axes = root.optionalMember("axes")) series.axes = readAxes(*axes);
 
+    requireSeriesMemory(manifest, entries, limits);
     for (std::size_t index = 0; index < entries.size(); ++index) {
         readStepFiles(manifest, index, entries[index], missingMarker);
     }

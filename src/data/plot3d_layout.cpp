@@ -10,6 +10,7 @@
 #include <system_error>
 
 #include "tstyles/core/errors.h"
+#include "tstyles/core/input_limits.h"
 
 namespace tstyles {
 namespace {
@@ -160,12 +161,15 @@ std::string dimsText(const std::vector<glm::ivec3>& dims) {
 }
 
 std::vector<std::uint8_t> readWholeFile(const std::filesystem::path& path) {
-    std::error_code error;
-    if (!std::filesystem::is_regular_file(path, error)) throwInputError(path, "", "file not found");
+    // Read whole to find its layout: its size is what it takes, checked first (a sparse file can
+    // claim terabytes it does not hold).
+    const std::uint64_t size = regularFileSize(path, "Plot3D file");
+    requireMemory(path, "", double(size), defaultMemoryCap(), "reading the whole Plot3D file would");
     std::ifstream in(path, std::ios::binary);
     if (!in) throwInputError(path, "", "cannot open the file for reading");
-    std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (in.bad()) throwInputError(path, "", "cannot read the file");
+    std::vector<std::uint8_t> bytes(size);
+    in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size));
+    if (!in || std::uint64_t(in.gcount()) != size) throwInputError(path, "", "cannot read the file");
     return bytes;
 }
 

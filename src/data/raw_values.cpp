@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "tstyles/core/errors.h"
+#include "tstyles/core/input_limits.h"
 #include "value_decoding.h"
 
 namespace tstyles {
@@ -29,7 +30,9 @@ std::string dimsText(const glm::ivec3& dims) {
 std::vector<std::uint8_t> readExactly(const RawFileSource& source, const std::string& kind,
                                       std::size_t expectedBytes, const std::string& layout) {
     std::error_code error;
-    if (!std::filesystem::is_regular_file(source.file, error)) failFile(source, kind, "not found");
+    if (!std::filesystem::exists(source.file, error)) failFile(source, kind, "not found");
+    if (!std::filesystem::is_regular_file(source.file, error))
+        failFile(source, kind, "is not a regular file (a folder, device or FIFO cannot be read as data)");
     const std::uintmax_t actualBytes = std::filesystem::file_size(source.file, error);
     if (error) failFile(source, kind, "cannot be read: " + error.message());
     if (actualBytes != expectedBytes) {
@@ -38,6 +41,10 @@ std::vector<std::uint8_t> readExactly(const RawFileSource& source, const std::st
                  std::string(verdict) + ": expected " + std::to_string(expectedBytes) + " bytes (" + layout +
                      "), found " + std::to_string(actualBytes) + " bytes");
     }
+    // The manifest's series is checked against the cap before its files are read; this is the
+    // backstop for files read before that (a structured grid's coordinates).
+    requireMemory(source.manifest, source.field, double(expectedBytes), defaultMemoryCap(),
+                  kind + " '" + source.file.string() + "' (" + layout + ") would");
     std::vector<std::uint8_t> bytes(expectedBytes);
     std::ifstream in(source.file, std::ios::binary);
     in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));

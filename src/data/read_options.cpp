@@ -1,8 +1,8 @@
 // The command-line spellings of ReadOptions, and the step selection they describe.
 #include "tstyles/data/read_options.h"
 
+#include <cctype>
 #include <cmath>
-#include <regex>
 
 #include "tstyles/core/errors.h"
 
@@ -26,6 +26,22 @@ std::optional<double> parseFiniteNumber(const std::string& text) {
     }
     if (used != text.size() || !std::isfinite(value)) return std::nullopt;
     return value;
+}
+
+// "125x125x25": `count` whole numbers of 1 to 5 digits joined by 'x'.
+std::optional<std::vector<int>> parseSizes(const std::string& text, std::size_t count) {
+    std::vector<int> sizes;
+    std::size_t start = 0;
+    while (sizes.size() < count) {
+        std::size_t end = start;
+        while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end]))) ++end;
+        if (end == start || end - start > 5) return std::nullopt;
+        sizes.push_back(std::stoi(text.substr(start, end - start)));
+        const bool last = sizes.size() == count;
+        if (last ? end != text.size() : end >= text.size() || text[end] != 'x') return std::nullopt;
+        start = end + 1;
+    }
+    return sizes;
 }
 
 }  // namespace
@@ -76,21 +92,37 @@ std::array<double, 2> parseValueRange(const std::string& text, const std::string
 }
 
 glm::ivec3 parseDims(const std::string& text, const std::string& option) {
-    std::smatch match;
-    if (!std::regex_match(text, match, std::regex(R"((\d{1,5})x(\d{1,5})x(\d{1,5}))")))
-        throwInputError("", option, "expected NXxNYxNZ such as 125x125x25, got \"" + text + "\"");
-    const glm::ivec3 dims{std::stoi(match[1]), std::stoi(match[2]), std::stoi(match[3])};
+    const auto sizes = parseSizes(text, 3);
+    if (!sizes) throwInputError("", option, "expected NXxNYxNZ such as 125x125x25, got \"" + text + "\"");
+    const glm::ivec3 dims{(*sizes)[0], (*sizes)[1], (*sizes)[2]};
     if (glm::any(glm::lessThan(dims, glm::ivec3(2))))
         throwInputError("", option, "each size must be at least 2, got \"" + text + "\"");
     return dims;
 }
 
 std::uint64_t parseMemorySize(const std::string& text, const std::string& option) {
-    std::smatch match;
-    if (!std::regex_match(text, match, std::regex(R"(([0-9]+(\.[0-9]+)?)\s*([KMGT]?)(i?B)?)", std::regex::icase)))
+    // NUMBER[.FRACTION], optional spaces, an optional K/M/G/T, an optional "B" or "iB" (any case).
+    std::size_t end = 0;
+    while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end]))) ++end;
+    bool valid = end > 0;
+    if (valid && end < text.size() && text[end] == '.') {
+        const std::size_t fraction = ++end;
+        while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end]))) ++end;
+        valid = end > fraction;
+    }
+    const std::string numberText = text.substr(0, end);
+    while (end < text.size() && std::isspace(static_cast<unsigned char>(text[end]))) ++end;
+    std::string suffix;
+    for (char c : text.substr(end)) suffix += char(std::toupper(static_cast<unsigned char>(c)));
+    std::string unit;
+    if (!suffix.empty() && std::string("KMGT").find(suffix[0]) != std::string::npos) {
+        unit = suffix.substr(0, 1);
+        suffix.erase(0, 1);
+    }
+    valid = valid && (suffix.empty() || suffix == "B" || suffix == "IB");
+    if (!valid)
         throwInputError("", option, "expected a size such as 512M, 2G or 800000 (bytes), got \"" + text + "\"");
-    const double number = std::stod(match[1]);
-    const std::string unit = match[3];
+    const double number = std::stod(numberText);
     double scale = 1.0;
     for (char step : std::string("KMGT")) {
         if (unit.empty()) break;

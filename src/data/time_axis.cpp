@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
-#include <regex>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -212,6 +212,78 @@ std::string toString(Calendar calendar) {
     return "standard";
 }
 
+// A left-to-right reader of the reference date's few shapes.
+class DateCursor {
+public:
+    explicit DateCursor(const std::string& text) : text_(text) {}
+    bool atEnd() const { return at_ == text_.size(); }
+    char peek(std::size_t ahead = 0) const { return at_ + ahead < text_.size() ? text_[at_ + ahead] : '\0'; }
+    bool accept(char c) {
+        if (peek() != c) return false;
+        ++at_;
+        return true;
+    }
+    bool accept(const char* word) {
+        if (text_.compare(at_, std::string(word).size(), word) != 0) return false;
+        at_ += std::string(word).size();
+        return true;
+    }
+    // `least` to `most` digits (as many as there are); empty when fewer than `least`.
+    std::string digits(std::size_t least, std::size_t most) {
+        std::size_t end = at_;
+        while (end < text_.size() && end - at_ < most && std::isdigit(static_cast<unsigned char>(text_[end]))) ++end;
+        if (end - at_ < least) return "";
+        std::string found = text_.substr(at_, end - at_);
+        at_ = end;
+        return found;
+    }
+    void skipSpaces() {
+        while (std::isspace(static_cast<unsigned char>(peek()))) ++at_;
+    }
+
+private:
+    const std::string& text_;
+    std::size_t at_ = 0;
+};
+
+// [-]Y-M-D, optionally [ t]h[:m[:s[.fraction]]], then an optional zone of UTC (z, utc, +00:00).
+std::optional<CalendarDate> parseReferenceDate(const std::string& text) {
+    DateCursor cursor(text);
+    CalendarDate date;
+    const bool negative = cursor.accept('-');
+    const std::string year = cursor.digits(1, 4);
+    if (year.empty() || !cursor.accept('-')) return std::nullopt;
+    const std::string month = cursor.digits(1, 2);
+    if (month.empty() || !cursor.accept('-')) return std::nullopt;
+    const std::string day = cursor.digits(1, 2);
+    if (day.empty()) return std::nullopt;
+    date.year = (negative ? -1 : 1) * std::stoi(year);
+    date.month = std::stoi(month);
+    date.day = std::stoi(day);
+    if ((cursor.peek() == ' ' || cursor.peek() == 't') && std::isdigit(static_cast<unsigned char>(cursor.peek(1)))) {
+        cursor.accept(cursor.peek());
+        date.hour = std::stoi(cursor.digits(1, 2));
+        if (cursor.peek() == ':' && std::isdigit(static_cast<unsigned char>(cursor.peek(1)))) {
+            cursor.accept(':');
+            date.minute = std::stoi(cursor.digits(1, 2));
+            if (cursor.peek() == ':' && std::isdigit(static_cast<unsigned char>(cursor.peek(1)))) {
+                cursor.accept(':');
+                std::string second = cursor.digits(1, 2);
+                if (cursor.accept('.')) second += "." + cursor.digits(0, 64);
+                date.second = std::stod(second);
+            }
+        }
+    }
+    cursor.skipSpaces();
+    if (!cursor.accept('z') && !cursor.accept("utc") && (cursor.accept('+') || cursor.accept('-'))) {
+        const std::string hours = cursor.digits(1, 2);
+        cursor.accept(':');
+        const std::string minutes = cursor.digits(0, 2);
+        if (hours.empty() || (hours + minutes).find_first_not_of('0') != std::string::npos) return std::nullopt;
+    }
+    return cursor.atEnd() ? std::optional<CalendarDate>(date) : std::nullopt;
+}
+
 std::optional<Calendar> calendarFromString(const std::string& name) {
     const std::string text = lowercase(trimmed(name));
     if (text == "standard" || text == "gregorian" || text.empty()) return Calendar::Standard;
@@ -249,20 +321,12 @@ TimeAxis parseTimeUnits(const std::string& units, const std::string& calendar, c
     if (since == std::string::npos) return axis;
     // 1950-01-01, 1950-1-1 00:00:00, 2009-07-01T06:00:00Z, 1950-01-01 00:00:0.0, 2000-01-01 0 (UDUNITS
     // takes an hour alone), with an optional zone of UTC.
-    static const std::regex kDate(
-        R"(^(-?\d{1,4})-(\d{1,2})-(\d{1,2})(?:[ t](\d{1,2})(?::(\d{1,2})(?::(\d{1,2}(?:\.\d*)?))?)?)?\s*(?:z|utc|[+-]0{1,2}:?0{0,2})?$)");
     const std::string dateTextIn = trimmed(text.substr(since + 7));
-    std::smatch match;
-    if (!std::regex_match(dateTextIn, match, kDate))
+    const auto parsed = parseReferenceDate(dateTextIn);
+    if (!parsed)
         throwInputError(file, field + ":units", "\"" + units + "\": cannot read the reference date \"" + dateTextIn +
                                                     "\" (expected YYYY-MM-DD, optionally with hh:mm:ss)");
-    CalendarDate date;
-    date.year = std::stoi(match[1]);
-    date.month = std::stoi(match[2]);
-    date.day = std::stoi(match[3]);
-    if (match[4].matched) date.hour = std::stoi(match[4]);
-    if (match[5].matched) date.minute = std::stoi(match[5]);
-    if (match[6].matched) date.second = std::stod(match[6]);
+    const CalendarDate date = *parsed;
     const bool valid = date.month >= 1 && date.month <= 12 && date.day >= 1 &&
                        date.day <= monthLength(axis.calendar, date.year, date.month) && date.hour < 24 &&
                        date.minute < 60 && date.second < 61.0;

@@ -1,12 +1,63 @@
 // #include resolution with #line bookkeeping for GLSL.
 #include "tstyles/gl/shader_preprocessor.h"
 
-#include <regex>
+#include <cctype>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
 namespace tstyles {
 namespace {
+
+bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+std::size_t skipBlanks(const std::string& text, std::size_t at) {
+    while (at < text.size() && isBlank(text[at])) ++at;
+    return at;
+}
+
+// The end of the run of digits starting at `at` (== at when there is none).
+std::size_t digitsEnd(const std::string& text, std::size_t at) {
+    while (at < text.size() && std::isdigit(static_cast<unsigned char>(text[at]))) ++at;
+    return at;
+}
+
+// Where a driver's log line names a source: Mesa "FILE:LINE(COLUMN):", NVIDIA "FILE(LINE) :".
+struct LogLocation {
+    std::size_t begin = 0, end = 0;
+    std::string file, line, column;  // column empty for NVIDIA's form
+};
+
+std::optional<LogLocation> findLogLocation(const std::string& text) {
+    for (std::size_t start = 0; start < text.size(); ++start) {
+        if (!std::isdigit(static_cast<unsigned char>(text[start])) ||
+            (start > 0 && std::isdigit(static_cast<unsigned char>(text[start - 1]))))
+            continue;
+        const std::size_t fileEnd = digitsEnd(text, start);
+        LogLocation found{start, 0, text.substr(start, fileEnd - start), "", ""};
+        if (fileEnd < text.size() && text[fileEnd] == ':') {
+            const std::size_t lineEnd = digitsEnd(text, fileEnd + 1);
+            if (lineEnd > fileEnd + 1 && lineEnd < text.size() && text[lineEnd] == '(') {
+                const std::size_t columnEnd = digitsEnd(text, lineEnd + 1);
+                if (columnEnd > lineEnd + 1 && text.compare(columnEnd, 2, "):") == 0) {
+                    found.line = text.substr(fileEnd + 1, lineEnd - fileEnd - 1);
+                    found.column = text.substr(lineEnd + 1, columnEnd - lineEnd - 1);
+                    found.end = columnEnd + 2;
+                    return found;
+                }
+            }
+        }
+        if (fileEnd < text.size() && text[fileEnd] == '(') {
+            const std::size_t lineEnd = digitsEnd(text, fileEnd + 1);
+            if (lineEnd > fileEnd + 1 && text.compare(lineEnd, 3, ") :") == 0) {
+                found.line = text.substr(fileEnd + 1, lineEnd - fileEnd - 1);
+                found.end = lineEnd + 3;
+                return found;
+            }
+        }
+    }
+    return std::nullopt;
+}
 
 struct Flattener {
     const ShaderFileReader& reader;
@@ -27,10 +78,19 @@ struct Flattener {
     }
 
     static std::optional<std::string> includeTarget(const std::string& line) {
-        static const std::regex pattern(R"(^\s*#\s*include\s+"([^"]+)\"\s*(//.*)?$)");
-        std::smatch match;
-        if (std::regex_match(line, match, pattern)) return match[1].str();
-        return std::nullopt;
+        // #include "NAME", blanks allowed around '#', an optional // comment after.
+        std::size_t at = skipBlanks(line, 0);
+        if (at >= line.size() || line[at] != '#') return std::nullopt;
+        at = skipBlanks(line, at + 1);
+        if (line.compare(at, 7, "include") != 0) return std::nullopt;
+        const std::size_t afterKeyword = at + 7;
+        at = skipBlanks(line, afterKeyword);
+        if (at == afterKeyword || at >= line.size() || line[at] != '"') return std::nullopt;
+        const std::size_t close = line.find('"', at + 1);
+        if (close == std::string::npos || close == at + 1) return std::nullopt;
+        const std::size_t rest = skipBlanks(line, close + 1);
+        if (rest < line.size() && line.compare(rest, 2, "//") != 0) return std::nullopt;
+        return line.substr(at + 1, close - at - 1);
     }
 
     void append(const std::string& name, const std::string& source, std::ostringstream& out,
@@ -103,8 +163,6 @@ FlattenedShader flattenShader(const std::string& entryName, const ShaderFileRead
 }
 
 std::string FlattenedShader::translateLog(const std::string& log) const {
-    static const std::regex mesa(R"((\d+):(\d+)\((\d+)\):)");
-    static const std::regex nvidia(R"((\d+)\((\d+)\) :)");
     std::istringstream lines(log);
     std::ostringstream out;
     std::string line;
@@ -113,13 +171,9 @@ std::string FlattenedShader::translateLog(const std::string& log) const {
         return index < files.size() ? files[index] : "source " + number;
     };
     while (std::getline(lines, line)) {
-        std::smatch match;
-        if (std::regex_search(line, match, mesa))
-            line = match.prefix().str() + fileName(match[1]) + ":" + match[2].str() + ":" +
-                   match[3].str() + ":" + match.suffix().str();
-        else if (std::regex_search(line, match, nvidia))
-            line = match.prefix().str() + fileName(match[1]) + ":" + match[2].str() + ":" +
-                   match.suffix().str();
+        if (const auto found = findLogLocation(line))
+            line = line.substr(0, found->begin) + fileName(found->file) + ":" + found->line + ":" +
+                   (found->column.empty() ? "" : found->column + ":") + line.substr(found->end);
         out << line << "\n";
     }
     return out.str();

@@ -9,10 +9,21 @@
 
 #include "tstyles/core/atomic_file.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/core/input_limits.h"
+#include "tstyles/core/stderr_capture.h"
 
 namespace tstyles {
 
 namespace {
+
+// OpenImageIO gathers several lines (its own, then the plugin's); our message is one line.
+std::string oneLine(std::string text) {
+    while (!text.empty() && text.back() == '\n') text.pop_back();
+    for (std::size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at))
+        text.replace(at, 1, "; ");
+    return text;
+}
+
 bool isFloatFormat(const std::filesystem::path& file) {
     std::string extension = file.extension().string();
     for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
@@ -47,16 +58,28 @@ void writeImage(const Image& image, const std::filesystem::path& file) {
 }
 
 Image readImage(const std::filesystem::path& file) {
-    if (!std::filesystem::exists(file)) throwInputError(file, "", "no such file");
+    // A device (/dev/zero) or FIFO would keep OpenImageIO reading forever.
+    requireRegularFile(file, "image file");
+    // libpng prints its complaints itself; they become part of our one line instead.
+    const StderrCapture libraryMessages;
+    const auto withLibraryText = [&](std::string message) {
+        const std::string said = libraryMessages.text();
+        return said.empty() || message.find(said) != std::string::npos ? message : message + " (" + said + ")";
+    };
     auto input = OIIO::ImageInput::open(file.string());
-    if (!input) throwInputError(file, "", "cannot read as an image: " + OIIO::geterror());
+    if (!input) throwInputError(file, "", withLibraryText("cannot read as an image: " + oneLine(OIIO::geterror())));
     const OIIO::ImageSpec& spec = input->spec();
-    if (spec.width <= 0 || spec.height <= 0) throwInputError(file, "", "the image is empty");
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) throwInputError(file, "", "the image is empty");
+    // The header's size is checked before the pixels get memory: the file's float copy plus ours.
+    const double pixelCount = double(spec.width) * double(spec.height);
+    requireMemory(file, "", pixelCount * double(sizeof(float)) * double(spec.nchannels + 4), defaultMemoryCap(),
+                  "the pixels of its " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
+                      " image header");
     Image image(spec.width, spec.height);
     const int channels = spec.nchannels;
     std::vector<float> pixels(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(channels));
     if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
-        throwInputError(file, "", "cannot read the pixels: " + input->geterror());
+        throwInputError(file, "", withLibraryText("cannot read the pixels (truncated or damaged?): " + oneLine(input->geterror())));
     for (int y = 0; y < spec.height; ++y)
         for (int x = 0; x < spec.width; ++x) {
             const float* pixel = &pixels[(std::size_t(y) * std::size_t(spec.width) + std::size_t(x)) * std::size_t(channels)];

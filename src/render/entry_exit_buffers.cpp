@@ -3,6 +3,8 @@
 
 #include <array>
 
+#include "render_size_limits.h"
+
 #include "tstyles/render/shader_contract.h"
 #include "tstyles/render/gpu_series.h"
 
@@ -19,8 +21,10 @@ EntryExitBuffers::EntryExitBuffers(const ShaderLibrary& shaders)
 
 void EntryExitBuffers::resize(glm::ivec2 viewport, int layers) {
     if (viewport == size_ && layers == layers_) return;
+    requireRenderableSize(viewport, layers);
     Texture depths = Texture::create(GL_TEXTURE_2D_ARRAY);
     glTextureStorage3D(depths.id(), 1, GL_RG32F, viewport.x, viewport.y, layers);
+    requireAllocated(viewport, "entry/exit depth layers");
     depths.setFilter(GL_NEAREST, GL_NEAREST);
     depths_.emplace(std::move(depths));
     framebuffer_.emplace(Framebuffer::create());

@@ -3,12 +3,15 @@
 
 #include <algorithm>
 
+#include "render_size_limits.h"
+
 namespace tstyles {
 
 void RenderTarget::resize(glm::ivec2 size) {
     if (size == size_ && color_) return;
     color_.emplace(Texture::create(GL_TEXTURE_2D));
     glTextureStorage2D(color_->id(), 1, GL_RGBA32F, size.x, size.y);
+    requireAllocated(size, "RGBA32F colour buffer");
     color_->setFilter(GL_NEAREST, GL_NEAREST);
     framebuffer_.emplace(Framebuffer::create());
     framebuffer_->attachTexture(GL_COLOR_ATTACHMENT0, *color_);

@@ -16,6 +16,7 @@
 
 #include <netcdf.h>
 #include <nifti2_io.h>
+#include <zlib.h>
 
 namespace {
 
@@ -147,6 +148,75 @@ void writeIsabel(const std::filesystem::path& folder) {
     }
 }
 
+// classic.nc (CDF-1) and offset64.nc (CDF-2): temp(time 3, z 2, y 2, x 3) float over an unlimited
+// time dimension, value = 100 t + index (0..11), with a time coordinate (hours 0, 1, 2). Two record
+// variables, so every record is both slabs, each padded to 4 bytes: 8 + 48 bytes a record.
+void writeClassic(const std::filesystem::path& file, int format) {
+    int nc = 0, dims[4] = {}, temp = 0, time = 0;
+    check(nc_create(file.c_str(), NC_CLOBBER | format, &nc), file.string());
+    check(nc_def_dim(nc, "time", NC_UNLIMITED, &dims[0]), "time");
+    const char* names[3] = {"z", "y", "x"};
+    const std::size_t lengths[3] = {2, 2, 3};
+    for (int axis = 0; axis < 3; ++axis) check(nc_def_dim(nc, names[axis], lengths[axis], &dims[axis + 1]), names[axis]);
+    check(nc_def_var(nc, "time", NC_DOUBLE, 1, &dims[0], &time), "time var");
+    check(nc_put_att_text(nc, time, "units", 24, "hours since 2000-01-01 0"), "units");
+    check(nc_def_var(nc, "temp", NC_FLOAT, 4, dims, &temp), "temp");
+    check(nc_enddef(nc), "enddef");
+    const double times[3] = {0, 1, 2};
+    const std::size_t start[1] = {0}, count[1] = {3};
+    check(nc_put_vara_double(nc, time, start, count, times), "times");
+    std::vector<float> values(36);
+    for (std::size_t index = 0; index < values.size(); ++index) values[index] = float(100 * (index / 12) + index % 12);
+    const std::size_t starts[4] = {0, 0, 0, 0}, counts[4] = {3, 2, 2, 3};
+    check(nc_put_vara_float(nc, temp, starts, counts, values.data()), "temp values");
+    check(nc_close(nc), "close");
+}
+
+// bigaxis.nc (netCDF-4, nothing written): v(time 1, z 2, y 2, x 1000000000) float; chunked, so
+// the file stays small while its x axis is far too large to read.
+void writeBigAxis(const std::filesystem::path& file) {
+    int nc = 0, dims[4] = {}, variable = 0;
+    check(nc_create(file.c_str(), NC_NETCDF4 | NC_CLOBBER, &nc), file.string());
+    const char* names[4] = {"time", "z", "y", "x"};
+    const std::size_t lengths[4] = {1, 2, 2, 1000000000};
+    for (int axis = 0; axis < 4; ++axis) check(nc_def_dim(nc, names[axis], lengths[axis], &dims[axis]), names[axis]);
+    check(nc_def_var(nc, "v", NC_FLOAT, 4, dims, &variable), "v");
+    const std::size_t chunks[4] = {1, 2, 2, 1024};
+    check(nc_def_var_chunking(nc, variable, NC_CHUNKED, chunks), "chunking");
+    check(nc_close(nc), "close");
+}
+
+void appendBigEndian(std::string& bytes, std::uint32_t value) {
+    for (int shift = 24; shift >= 0; shift -= 8) bytes += char((value >> shift) & 0xff);
+}
+
+// A PNG chunk: length, type, data, and the CRC of type and data (zlib's crc32 is PNG's).
+void appendPngChunk(std::string& png, const std::string& type, const std::string& data) {
+    appendBigEndian(png, std::uint32_t(data.size()));
+    const std::string typed = type + data;
+    png += typed;
+    appendBigEndian(png, std::uint32_t(crc32(0, reinterpret_cast<const Bytef*>(typed.data()), uInt(typed.size()))));
+}
+
+// huge.png: a valid PNG header (IHDR) announcing 1000000 x 1000000 RGBA pixels, followed by a few
+// bytes of image data: what a damaged or hostile style image looks like.
+void writeHugePng(const std::filesystem::path& file) {
+    std::string png = "\x89PNG\r\n\x1a\n";
+    std::string header;
+    appendBigEndian(header, 1000000);
+    appendBigEndian(header, 1000000);
+    header += std::string("\x08\x06\x00\x00\x00", 5);  // 8 bits, RGBA, deflate, no filter, no interlace
+    appendPngChunk(png, "IHDR", header);
+    const std::string row(16, '\0');
+    std::vector<Bytef> compressed(compressBound(uLong(row.size())));
+    uLongf size = uLongf(compressed.size());
+    if (compress(compressed.data(), &size, reinterpret_cast<const Bytef*>(row.data()), uLong(row.size())) != Z_OK)
+        throw std::runtime_error("compress failed");
+    appendPngChunk(png, "IDAT", std::string(reinterpret_cast<const char*>(compressed.data()), size));
+    appendPngChunk(png, "IEND", "");
+    writeBytes(file, png);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -164,6 +234,10 @@ int main(int argc, char** argv) {
         writeNrrd(folder / "volume.nrrd");
         writeNifti(folder / "bold.nii.gz");
         writeIsabel(folder);
+        writeClassic(folder / "classic.nc", 0);
+        writeClassic(folder / "offset64.nc", NC_64BIT_OFFSET);
+        writeBigAxis(folder / "bigaxis.nc");
+        writeHugePng(folder / "huge.png");
     } catch (const std::exception& error) {
         std::cerr << "write_reader_samples: " << error.what() << "\n";
         return 1;

@@ -1,6 +1,8 @@
 // Reading and writing a series as a JSON manifest plus raw value files (format: docs/dataset-format.md).
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 
@@ -8,10 +10,18 @@
 
 namespace tstyles {
 
+// What a series may take: memory (none given: half of the machine's, defaultMemoryCap()) for 4
+// bytes a voxel in memory, a mask byte where there is a mask, and the GPU's copy.
+struct ManifestLimits {
+    std::optional<std::uint64_t> maxMemoryBytes;  // --max-memory
+    std::size_t gpuBytesPerVoxel = 2;             // --precision 16
+};
+
 // Loads the manifest and every value and mask file it names (paths relative to the manifest).
-// Any problem is an InputError naming the file, the field and what is wrong. A dataset folder may be
-// given instead of its manifest: it stands for the folder's series.json.
-Series loadSeries(const std::filesystem::path& manifestPath);
+// Any problem is an InputError naming the file, the field and what is wrong; a series over the
+// memory limit is refused, with the figure it needs, before any value file is read. A dataset
+// folder may be given instead of its manifest: it stands for the folder's series.json.
+Series loadSeries(const std::filesystem::path& manifestPath, const ManifestLimits& limits = {});
 
 // One time-step's values as they should be written to disk.
 struct RawTimeStep {

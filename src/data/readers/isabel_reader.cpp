@@ -2,12 +2,14 @@
 #include "isabel_reader.h"
 
 #include <algorithm>
-#include <regex>
+#include <cctype>
+#include <optional>
 
 #include "../value_decoding.h"
 #include "file_bytes.h"
 #include "finite_values.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/core/input_limits.h"
 
 namespace tstyles {
 namespace {
@@ -17,9 +19,31 @@ constexpr glm::ivec3 kIsabelDims{500, 500, 100};
 // Land and points below ground hold 1.0e35; anything this large is that marker.
 constexpr float kMissingThreshold = 0.99e35f;
 
-const std::regex& isabelName() {
-    static const std::regex pattern(R"(([A-Za-z]+)f([0-9]{1,3})\.bin(\.gz)?)");
-    return pattern;
+struct IsabelName {
+    std::string variable;
+    int hour = 0;
+    bool gzipSuffix = false;
+};
+
+bool endsWith(const std::string& text, const std::string& suffix) {
+    return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// VARIABLEfHH.bin or VARIABLEfHH.bin.gz: letters, "f", one to three digits.
+std::optional<IsabelName> parseIsabelName(std::string name) {
+    IsabelName parsed;
+    parsed.gzipSuffix = endsWith(name, ".gz");
+    if (parsed.gzipSuffix) name.resize(name.size() - 3);
+    if (!endsWith(name, ".bin")) return std::nullopt;
+    name.resize(name.size() - 4);
+    std::size_t digits = 0;
+    while (digits < name.size() && std::isdigit(static_cast<unsigned char>(name[name.size() - 1 - digits]))) ++digits;
+    if (digits == 0 || digits > 3 || name.size() < digits + 2 || name[name.size() - digits - 1] != 'f') return std::nullopt;
+    parsed.variable = name.substr(0, name.size() - digits - 1);
+    for (char c : parsed.variable)
+        if (!std::isalpha(static_cast<unsigned char>(c))) return std::nullopt;
+    parsed.hour = std::stoi(name.substr(name.size() - digits));
+    return parsed;
 }
 
 struct IsabelFile {
@@ -30,17 +54,35 @@ struct IsabelFile {
 };
 
 IsabelFile describe(const std::filesystem::path& path) {
-    std::smatch match;
-    const std::string name = path.filename().string();
-    if (!std::regex_match(name, match, isabelName()))
+    const auto name = parseIsabelName(path.filename().string());
+    if (!name)
         throwInputError(path, "", "not named like a Hurricane Isabel file (VARIABLEfHH.bin or .bin.gz, e.g. QCLOUDf01.bin)");
-    return {path, match[1], std::stoi(match[2]), match[3].matched || isGzipFile(path)};
+    return {path, name->variable, name->hour, name->gzipSuffix || isGzipFile(path)};
+}
+
+std::string layoutText(const glm::ivec3& dims) {
+    return std::to_string(dims.x) + " x " + std::to_string(dims.y) + " x " + std::to_string(dims.z) +
+           " big-endian float32 values";
+}
+
+// Every file holds one volume: a raw file exactly its bytes, a gzip file at least enough
+// compressed bytes for them (the exact count is known once inflated). Checked on opening, before
+// memory is planned for data that is not there.
+void checkSize(const IsabelFile& file, const glm::ivec3& dims) {
+    const std::uint64_t expected = std::uint64_t(dims.x) * std::uint64_t(dims.y) * std::uint64_t(dims.z) * 4;
+    if (file.gzip) return requireDataInFile(file.path, 0, double(expected), DataEncoding::Gzip, layoutText(dims));
+    const std::uint64_t size = regularFileSize(file.path, "Hurricane Isabel file");
+    if (size != expected)
+        throwInputError(file.path, "",
+                        std::string(size < expected ? "is truncated" : "is too large") + ": expected " +
+                            std::to_string(expected) + " bytes (" + layoutText(dims) + "), found " +
+                            std::to_string(size) + " (files of another size need --dims NXxNYxNZ)");
 }
 
 }  // namespace
 
 bool isIsabelFileName(const std::filesystem::path& file) {
-    return std::regex_match(file.filename().string(), isabelName());
+    return parseIsabelName(file.filename().string()).has_value();
 }
 
 SourceSeries openIsabel(const std::vector<std::filesystem::path>& paths, const std::optional<glm::ivec3>& dims) {
@@ -63,6 +105,7 @@ SourceSeries openIsabel(const std::vector<std::filesystem::path>& paths, const s
     source.file = files[0].path;
     source.format = "Hurricane Isabel raw";
     for (const IsabelFile& file : files) {
+        checkSize(file, gridDims);
         SourceStep step;
         step.time = double(file.hour);
         RectilinearGrid grid;
@@ -78,17 +121,10 @@ SourceSeries openIsabel(const std::vector<std::filesystem::path>& paths, const s
     source.readStep = [files, gridDims](std::size_t index) {
         const IsabelFile& file = files[index];
         const std::size_t count = std::size_t(gridDims.x) * std::size_t(gridDims.y) * std::size_t(gridDims.z);
-        const std::string layout = std::to_string(gridDims.x) + " x " + std::to_string(gridDims.y) + " x " +
-                                   std::to_string(gridDims.z) + " big-endian float32 values";
-        if (!file.gzip) {
-            const std::uintmax_t size = std::filesystem::file_size(file.path);
-            if (size != count * 4)
-                throwInputError(file.path, "",
-                                std::string(size < count * 4 ? "is truncated" : "is too large") + ": expected " +
-                                    std::to_string(count * 4) + " bytes (" + layout + "), found " +
-                                    std::to_string(size) + " (files of another size need --dims NXxNYxNZ)");
-        }
-        const auto bytes = readDataBytes(file.path, 0, count * 4, file.gzip ? DataEncoding::Gzip : DataEncoding::Raw, layout);
+        const std::string layout = layoutText(gridDims);
+        // A gzip file must hold exactly one volume too: more means --dims does not match the file.
+        const auto bytes = readDataBytes(file.path, 0, count * 4, file.gzip ? DataEncoding::Gzip : DataEncoding::Raw,
+                                         layout, TrailingData::Refused);
         std::vector<float> values = decodeValues(bytes.data(), count, ValueType::Float32, ByteOrder::Big);
         // NaN or Inf was never a marker: only 1.0e35 is (and it is finite), so check first.
         requireFiniteValues(values, gridDims, file.path, index, "only 1.0e35 marks missing data in these files");

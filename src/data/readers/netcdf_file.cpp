@@ -5,21 +5,25 @@
 
 #include <netcdf.h>
 
+#include "netcdf_classic_check.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/core/input_limits.h"
+#include "tstyles/core/stderr_capture.h"
 
 namespace tstyles {
 
 NetcdfFile::NetcdfFile(std::filesystem::path file) : path_(std::move(file)) {
-    std::error_code error;
-    if (!std::filesystem::is_regular_file(path_, error)) throwInputError(path_, "", "not found");
+    const std::uint64_t bytes = regularFileSize(path_, "NetCDF file");
+    // A classic header is only handed to the library once its counts and sizes fit the file;
+    // netCDF-4 (HDF5) files are checked by the library, whose HDF5 error stack we capture.
+    if (hasClassicNetcdfMagic(path_)) checkClassicNetcdf(path_);
+    const StderrCapture libraryMessages;
     const int status = nc_open(path_.c_str(), NC_NOWRITE, &id_);
     if (status != NC_NOERR) {
         id_ = -1;
-        const auto bytes = std::filesystem::file_size(path_, error);
         throwInputError(path_, "",
-                        std::string("not a readable NetCDF file (truncated or damaged? ") +
-                            (error ? std::string("size unknown") : std::to_string(bytes) + " bytes") +
-                            "): " + nc_strerror(status));
+                        "not a readable NetCDF file (truncated or damaged? " + std::to_string(bytes) +
+                            " bytes): " + nc_strerror(status));
     }
 }
 
@@ -28,6 +32,9 @@ NetcdfFile::~NetcdfFile() {
 }
 
 void NetcdfFile::check(int status, const std::string& field, const std::string& doing) const {
+    // An HDF5 read error in a netCDF-4 file is most often a cut or damaged file.
+    if (status == NC_EHDFERR)
+        throwInputError(path_, field, "cannot " + doing + ": the file is truncated or damaged (" + nc_strerror(status) + ")");
     if (status != NC_NOERR) throwInputError(path_, field, "cannot " + doing + ": " + nc_strerror(status));
 }
 
@@ -115,7 +122,10 @@ std::vector<double> NetcdfFile::readAll(int id) const {
     const NetcdfVariable whole = variable(id);
     std::size_t count = 1;
     for (const auto& dimension : whole.dimensions) count *= dimension.length;
+    if (count > std::size_t(1) << 26)
+        throwInputError(path_, whole.name, "has " + std::to_string(count) + " values: too many for a coordinate variable");
     std::vector<double> values(count);
+    const StderrCapture libraryMessages;
     check(nc_get_var_double(id_, id, values.data()), whole.name, "read the values");
     return values;
 }
@@ -160,6 +170,7 @@ NetcdfVolume NetcdfFile::readVolume(const NetcdfVariable& variable, int timeDime
         total *= count.back();
     }
     std::vector<double> stored(total);
+    const StderrCapture libraryMessages;
     check(nc_get_vara_double(id_, variable.id, start.data(), count.data(), stored.data()), variable.name,
           "read time index " + std::to_string(timeIndex));
     NetcdfVolume volume;

@@ -10,10 +10,14 @@
 
 #include "finite_values.h"
 #include "netcdf_file.h"
+#include "series_assembly.h"
 #include "tstyles/core/errors.h"
 
 namespace tstyles {
 namespace {
+
+// Far beyond any volume a GPU holds (a 3D texture is at most 16384 wide), small enough for int.
+constexpr std::size_t kMaxAxisSamples = std::size_t(1) << 20;
 
 std::string joined(const std::vector<std::string>& names) {
     std::string text;
@@ -188,6 +192,7 @@ TimeAxis timeAxisOf(const NetcdfFile& nc, const NetcdfVariable& variable, int ti
 std::vector<double> stepTimes(const NetcdfFile& nc, const NetcdfVariable& variable, int timeDimension) {
     if (timeDimension < 0) return {0.0};
     const NetcdfDimension& dimension = variable.dimensions[std::size_t(timeDimension)];
+    requireStepCount(nc.path(), dimension.name, dimension.length);
     std::vector<double> times(dimension.length);
     for (std::size_t index = 0; index < times.size(); ++index) times[index] = double(index);
     const auto id = nc.findVariable(dimension.name);
@@ -230,10 +235,15 @@ SourceSeries openNetcdf(const std::filesystem::path& file, const ReadOptions& op
     std::array<AxisFrame, 3> frames;
     for (int axis = 0; axis < 3; ++axis) {
         const NetcdfDimension& dimension = variable.dimensions[std::size_t(spatial[std::size_t(2 - axis)])];
-        if (dimension.length < 2 || dimension.length > 1u << 20)
+        if (dimension.length < 2)
             throwInputError(file, variable.name,
                             "dimension " + dimension.name + " has " + std::to_string(dimension.length) +
                                 " samples: each spatial axis needs at least 2");
+        if (dimension.length > kMaxAxisSamples)
+            throwInputError(file, variable.name,
+                            "dimension " + dimension.name + " has " + std::to_string(dimension.length) +
+                                " samples: too large, a spatial axis may have at most " +
+                                std::to_string(kMaxAxisSamples));
         dims[axis] = int(dimension.length);
         frames[std::size_t(axis)] = axisFrame(*nc, dimension, options.indexAxes);
     }

@@ -1,6 +1,7 @@
 // libnifti2 reads the header and one volume at a time; we only translate its fields.
 #include "nifti_reader.h"
 
+#include <algorithm>
 #include <bit>
 #include <cstdlib>
 #include <cstring>
@@ -12,7 +13,11 @@
 #include "../value_decoding.h"
 #include "finite_values.h"
 #include "oriented_axes.h"
+#include "file_bytes.h"
+#include "series_assembly.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/core/input_limits.h"
+#include "tstyles/core/stderr_capture.h"
 
 namespace tstyles {
 namespace {
@@ -83,12 +88,32 @@ std::array<SpatialAxis, 3> niftiAxes(const nifti_image& image) {
 }
 
 NiftiImage readHeader(const std::filesystem::path& file) {
-    std::error_code error;
-    if (!std::filesystem::is_regular_file(file, error)) throwInputError(file, "", "not found");
+    requireRegularFile(file, "NIfTI file");
     nifti_set_debug_level(0);  // its messages would go to stderr; ours say what went wrong
+    // Some of its complaints are printed whatever the debug level: captured, quoted in ours.
+    const StderrCapture libraryMessages;
     NiftiImage image(nifti_image_read(file.c_str(), 0));
-    if (!image) throwInputError(file, "", "not a readable NIfTI-1 or NIfTI-2 image (bad or truncated header)");
+    if (!image) {
+        const std::string said = libraryMessages.text();
+        throwInputError(file, "", "not a readable NIfTI-1 or NIfTI-2 image (bad or truncated header)" +
+                                      (said.empty() ? std::string() : ": " + said));
+    }
     return image;
+}
+
+// The voxel data must be in the file before anything is allocated for it: every byte of an
+// uncompressed file, enough compressed bytes in a gzip one (the rest is checked on inflating).
+void requireVoxelData(const nifti_image& image, const std::filesystem::path& dataFile) {
+    const double dataBytes = double(image.nvox) * double(image.nbyper);
+    const std::uint64_t offset = std::uint64_t(std::max<std::int64_t>(0, image.iname_offset));
+    if (nifti_is_gzfile(dataFile.c_str()) != 0)
+        return requireDataInFile(dataFile, offset, dataBytes, DataEncoding::Gzip, "the NIfTI voxel data");
+    const std::uint64_t size = regularFileSize(dataFile, "NIfTI data file");
+    if (double(size) < double(offset) + dataBytes)
+        throwInputError(dataFile, "",
+                        "is truncated: the header asks for " + std::to_string(std::uint64_t(dataBytes)) +
+                            " bytes of voxel data from byte " + std::to_string(offset) + ", the file has " +
+                            std::to_string(size) + " bytes");
 }
 
 }  // namespace
@@ -107,17 +132,9 @@ SourceSeries openNifti(const std::filesystem::path& file) {
     const std::size_t stepCount = std::size_t(std::max<std::int64_t>(1, image->nt));
     const double step = image->dt > 0.0 ? image->dt : 1.0;
 
-    // Uncompressed data must all be there; a gzip file is checked when it is inflated.
-    const std::uint64_t dataBytes = std::uint64_t(image->nvox) * std::uint64_t(image->nbyper);
     const std::filesystem::path dataFile = image->iname ? std::filesystem::path(image->iname) : file;
-    if (nifti_is_gzfile(dataFile.c_str()) == 0) {
-        std::error_code error;
-        const std::uintmax_t size = std::filesystem::file_size(dataFile, error);
-        if (!error && size < std::uint64_t(image->iname_offset) + dataBytes)
-            throwInputError(dataFile, "",
-                            "is truncated: the header asks for " + std::to_string(dataBytes) + " bytes of voxel data from byte " +
-                                std::to_string(image->iname_offset) + ", the file has " + std::to_string(size) + " bytes");
-    }
+    requireVoxelData(*image, dataFile);
+    requireStepCount(file, "dim[4]", stepCount);
 
     SourceSeries source;
     source.name = file.filename().string();
@@ -145,11 +162,17 @@ SourceSeries openNifti(const std::filesystem::path& file) {
     source.readStep = [image, dims, frame, type, scaled, dataFile](std::size_t index) {
         const std::int64_t select[8] = {0, -1, -1, -1, std::int64_t(index), -1, -1, -1};
         void* raw = nullptr;
+        const StderrCapture libraryMessages;
         const std::int64_t read = nifti_read_collapsed_image(image.get(), select, &raw);
         std::unique_ptr<void, MallocFree> owned(raw);
         const std::size_t count = std::size_t(dims.x) * std::size_t(dims.y) * std::size_t(dims.z);
-        if (read < std::int64_t(count * bytesPerValue(type)) || raw == nullptr)
-            throwInputError(dataFile, "", "is truncated or corrupt: cannot read the voxels of volume " + std::to_string(index));
+        if (read < std::int64_t(count * bytesPerValue(type)) || raw == nullptr) {
+            const std::string said = libraryMessages.text();
+            throwInputError(dataFile, "",
+                            "is truncated or corrupt: cannot read the " + std::to_string(count * bytesPerValue(type)) +
+                                " bytes of volume (time-step) " + std::to_string(index) +
+                                (said.empty() ? std::string() : " (" + said + ")"));
+        }
         // The library has already swapped bytes into the host's order.
         std::vector<float> values(count);
         const auto* bytes = static_cast<const std::uint8_t*>(raw);

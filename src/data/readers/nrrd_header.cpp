@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "tstyles/core/errors.h"
+#include "tstyles/core/input_limits.h"
 
 namespace tstyles {
 namespace {
@@ -111,6 +112,7 @@ struct RawHeader {
 };
 
 RawHeader readRawHeader(const std::filesystem::path& file) {
+    const std::uint64_t size = regularFileSize(file, "NRRD file");
     std::ifstream in(file, std::ios::binary);
     if (!in) throwInputError(file, "", "cannot be opened for reading");
     std::string line;
@@ -127,7 +129,7 @@ RawHeader readRawHeader(const std::filesystem::path& file) {
         header.fields[line.substr(0, colon)] = trim(line.substr(colon + 2));
         if (header.fields.size() > 1000) throwInputError(file, "", "header has too many fields");
     }
-    header.endOffset = in.eof() ? std::filesystem::file_size(file) : std::uint64_t(in.tellg());
+    header.endOffset = in.eof() ? size : std::uint64_t(in.tellg());
     return header;
 }
 
@@ -161,12 +163,22 @@ void readDataLocation(const HeaderFields& fields, const RawHeader& raw, NrrdHead
         header.dataFile = name.is_absolute() ? name : header.headerFile.parent_path() / name;
         header.dataOffset = 0;
     }
-    std::int64_t lineSkip = 0;
-    if (const auto text = fields.get({"line skip", "lineskip"})) lineSkip = std::int64_t(fields.number("line skip", *text));
-    std::int64_t byteSkip = 0;
-    if (const auto text = fields.get({"byte skip", "byteskip"})) byteSkip = std::int64_t(fields.number("byte skip", *text));
+    // Whatever the header says, the data file must be one we can read to its end: a folder or a
+    // device here would surface later as a filesystem error, or block.
+    requireRegularFile(header.dataFile, "NRRD data file");
+    const std::uint64_t dataFileSize = regularFileSize(header.dataFile, "NRRD data file");
+    const auto skip = [&](const char* name, std::initializer_list<const char*> spellings) -> std::int64_t {
+        const auto text = fields.get(spellings);
+        if (!text) return 0;
+        const double value = fields.number(name, *text);
+        if (value != std::floor(value) || value < -1.0 || value > double(dataFileSize))
+            fields.fail(name, "\"" + *text + "\" is not a count between -1 and the data file's " +
+                                  std::to_string(dataFileSize) + " bytes");
+        return std::int64_t(value);
+    };
+    const std::int64_t lineSkip = skip("line skip", {"line skip", "lineskip"});
+    const std::int64_t byteSkip = skip("byte skip", {"byte skip", "byteskip"});
     if (lineSkip < 0) fields.fail("line skip", "must not be negative");
-    if (byteSkip < -1) fields.fail("byte skip", "must be -1 or more");
     if (header.encoding == DataEncoding::Gzip && byteSkip != 0)
         fields.fail("byte skip", "is not supported with gzip encoding");
     if (lineSkip > 0) {
@@ -196,9 +208,10 @@ NrrdHeader readNrrdHeader(const std::filesystem::path& file) {
                                 "\" (supported: int8, uint8, int16, uint16, int32, float, double)");
     header.type = *type;
 
-    header.dimension = int(fields.number("dimension", fields.require("dimension")));
-    if (header.dimension != 3 && header.dimension != 4)
-        fields.fail("dimension", "must be 3 (a volume) or 4 (a volume series), found " + std::to_string(header.dimension));
+    const std::string dimension = fields.require("dimension");
+    if (dimension != "3" && dimension != "4")
+        fields.fail("dimension", "must be 3 (a volume) or 4 (a volume series), found \"" + dimension + "\"");
+    header.dimension = dimension == "3" ? 3 : 4;
     const auto sizes = words(fields.require("sizes"));
     if (int(sizes.size()) != header.dimension)
         fields.fail("sizes", "expected " + std::to_string(header.dimension) + " sizes, found " + std::to_string(sizes.size()));

@@ -11,7 +11,9 @@
 #include "finite_values.h"
 #include "nrrd_header.h"
 #include "oriented_axes.h"
+#include "file_bytes.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/core/input_limits.h"
 
 namespace tstyles {
 namespace {
@@ -69,6 +71,12 @@ NrrdLayout layoutOf(const NrrdHeader& header) {
     int next = 0;
     for (int axis = 0; axis < header.dimension; ++axis)
         if (axis != layout.timeAxis) layout.spatialAxes[std::size_t(next++)] = axis;
+    double values = 1.0;
+    for (std::int64_t size : header.sizes) values *= double(size);
+    // Each size is at most 10^6, but four of them multiply past any file and past size_t.
+    if (values > 1e15)
+        throwInputError(header.headerFile, "sizes", "describe " + std::to_string(std::uint64_t(values)) +
+                                                        " values, more than any volume series can hold");
     for (std::int64_t size : header.sizes) {
         layout.strides.push_back(layout.totalValues);
         layout.totalValues *= std::size_t(size);
@@ -132,6 +140,30 @@ std::array<SpatialAxis, 3> nrrdAxes(const NrrdHeader& header) {
     return axes;
 }
 
+// Where the data starts, once it is known to be in the file, before anything is allocated for it
+// ("byte skip: -1": the data is the file's last bytes). A raw file cut short names the first
+// time-step it lacks.
+std::uint64_t checkedDataOffset(const NrrdHeader& header, const NrrdLayout& layout, std::uint64_t stepBytes) {
+    const double totalBytes = double(layout.totalValues) * double(bytesPerValue(header.type));
+    const std::uint64_t size = regularFileSize(header.dataFile, "NRRD data file");
+    if (header.dataAtEnd && totalBytes > double(size))
+        throwInputError(header.dataFile, "",
+                        "is truncated: the NRRD data needs " + std::to_string(std::uint64_t(totalBytes)) +
+                            " bytes, the file has only " + std::to_string(size));
+    const std::uint64_t offset = header.dataAtEnd ? size - std::uint64_t(totalBytes) : header.dataOffset;
+    const std::uint64_t available = size > offset ? size - offset : 0;
+    if (header.encoding == DataEncoding::Raw && layout.timeAxis == 3 && double(available) < totalBytes) {
+        const std::uint64_t step = available / stepBytes;
+        throwInputError(header.dataFile, "",
+                        "is truncated: time-step " + std::to_string(step) + " of " +
+                            std::to_string(header.sizes[3]) + " of the NRRD data needs " + std::to_string(stepBytes) +
+                            " bytes from byte " + std::to_string(offset + step * stepBytes) + ", the file has only " +
+                            std::to_string(available - step * stepBytes));
+    }
+    requireDataInFile(header.dataFile, offset, totalBytes, header.encoding, "the NRRD data");
+    return offset;
+}
+
 }  // namespace
 
 SourceSeries openNrrd(const std::filesystem::path& file) {
@@ -141,6 +173,9 @@ SourceSeries openNrrd(const std::filesystem::path& file) {
     for (int index = 0; index < 3; ++index) dims[index] = int(header.sizes[std::size_t(layout.spatialAxes[std::size_t(index)])]);
     const OrientedAxes frame = frameOf(header, layout, dims);
     const std::size_t stepCount = layout.timeAxis < 0 ? 1 : std::size_t(header.sizes[std::size_t(layout.timeAxis)]);
+    const std::size_t valueBytes = bytesPerValue(header.type);
+    const std::size_t stepValues = std::size_t(dims.x) * std::size_t(dims.y) * std::size_t(dims.z);
+    const std::uint64_t dataOffset = checkedDataOffset(header, layout, stepValues * valueBytes);
 
     SourceSeries source;
     source.name = file.stem().string();
@@ -160,29 +195,21 @@ SourceSeries openNrrd(const std::filesystem::path& file) {
         source.steps.push_back(step);
     }
 
-    const std::size_t valueBytes = bytesPerValue(header.type);
-    const std::size_t stepValues = std::size_t(dims.x) * std::size_t(dims.y) * std::size_t(dims.z);
     // A raw file whose time axis is the slowest is read one time-step at a time; anything else is
     // read whole, once, on the first step asked for.
     const bool sliceable = header.encoding == DataEncoding::Raw && (layout.timeAxis < 0 || layout.timeAxis == 3);
     auto whole = std::make_shared<std::vector<std::uint8_t>>();
-    const auto dataStart = [header, total = layout.totalValues * valueBytes]() {
-        if (!header.dataAtEnd) return header.dataOffset;
-        const std::uint64_t size = std::filesystem::file_size(header.dataFile);
-        if (size < total) throwInputError(header.dataFile, "", "is truncated: NRRD data needs " + std::to_string(total) + " bytes");
-        return size - total;
-    };
-    source.readStep = [header, layout, dims, frame, sliceable, whole, dataStart, valueBytes,
+    source.readStep = [header, layout, dims, frame, sliceable, whole, dataOffset, valueBytes,
                        stepValues](std::size_t index) {
         std::vector<float> values;
         if (sliceable) {
-            const auto bytes = readDataBytes(header.dataFile, dataStart() + index * stepValues * valueBytes,
+            const auto bytes = readDataBytes(header.dataFile, dataOffset + index * stepValues * valueBytes,
                                              stepValues * valueBytes, DataEncoding::Raw,
                                              "time-step " + std::to_string(index) + " of the NRRD data");
             values = decodeValues(bytes.data(), stepValues, header.type, header.byteOrder);
         } else {
             if (whole->empty())
-                *whole = readDataBytes(header.dataFile, dataStart(), layout.totalValues * valueBytes, header.encoding,
+                *whole = readDataBytes(header.dataFile, dataOffset, layout.totalValues * valueBytes, header.encoding,
                                        "the NRRD data");
             values.resize(stepValues);
             const std::size_t base = layout.timeAxis < 0 ? 0 : index * layout.strides[std::size_t(layout.timeAxis)];

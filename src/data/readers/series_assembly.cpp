@@ -11,20 +11,10 @@
 #include "../raw_values.h"
 #include "resampling.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/core/input_limits.h"
 
 namespace tstyles {
 namespace {
-
-// Bytes, KiB, MiB or GiB, whichever says it best (a figure of "0.0 MiB" says nothing).
-std::string mebibytes(double bytes) {
-    std::ostringstream text;
-    text.precision(1);
-    if (bytes < 10240.0) text << std::fixed << std::setprecision(0) << bytes << " bytes";
-    else if (bytes < 1024.0 * 1024.0) text << std::fixed << bytes / 1024.0 << " KiB";
-    else if (bytes < 1024.0 * 1024.0 * 1024.0) text << std::fixed << bytes / (1024.0 * 1024.0) << " MiB";
-    else text << std::fixed << bytes / (1024.0 * 1024.0 * 1024.0) << " GiB";
-    return text.str();
-}
 
 std::string dimsText(const glm::ivec3& dims) {
     return std::to_string(dims.x) + " x " + std::to_string(dims.y) + " x " + std::to_string(dims.z);
@@ -78,16 +68,17 @@ bool anyStructured(const SourceSeries& source) {
         return voxelCount(a) < voxelCount(b);
     });
     throwInputError(source.file, "--max-memory",
-                    "the series needs " + mebibytes(planBytes(plan, options)) + " (" +
+                    "the series needs " + byteCountText(planBytes(plan, options)) + " (" +
                         std::to_string(plan.steps.size()) + " time-steps of up to " + dimsText(largest) +
                         " voxels, 4 bytes each in memory and " + std::to_string(bytesPerDensity(options.precision)) +
-                        " on the GPU), more than the " + mebibytes(double(*options.maxMemoryBytes)) +
-                        " allowed: " + remedy);
+                        " on the GPU), more than the " + byteCountText(double(memoryCap(options.maxMemoryBytes))) +
+                        (options.maxMemoryBytes ? " allowed: " : " allowed by default (half of this machine's memory): ") +
+                        remedy);
 }
 
 // Fewer time-steps, spread evenly over the selection, first and last kept.
 void fitBySteps(const SourceSeries& source, Plan& plan, const ReadOptions& options) {
-    const double allowed = double(*options.maxMemoryBytes);
+    const double allowed = double(memoryCap(options.maxMemoryBytes));
     double largestStep = 0.0;
     for (const glm::ivec3& dims : plan.dims) largestStep = std::max(largestStep, voxelCount(dims) * bytesPerVoxel(options));
     const std::size_t keep = std::min(plan.steps.size(), std::size_t(allowed / largestStep));
@@ -107,7 +98,7 @@ void fitByResolution(const SourceSeries& source, Plan& plan, const ReadOptions& 
     if (anyStructured(source))
         refuse(source, plan, options, "a structured (Plot3D) grid cannot be read at a lower resolution; allow more, "
                                       "or add --fit steps");
-    const double allowed = double(*options.maxMemoryBytes);
+    const double allowed = double(memoryCap(options.maxMemoryBytes));
     double scale = std::cbrt(planBytes(plan, options) / allowed);
     const std::vector<glm::ivec3> original = plan.dims;
     for (int attempt = 0; attempt < 64 && planBytes(plan, options) > allowed; ++attempt) {
@@ -153,9 +144,18 @@ std::array<double, 2> rangeFromData(const SourceSeries& source, const Series& se
 
 }  // namespace
 
+void requireStepCount(const std::filesystem::path& file, const std::string& field, std::uint64_t count) {
+    if (count > kMaxTimeSteps)
+        throwInputError(file, field,
+                        "declares " + std::to_string(count) + " time-steps, more than the " +
+                            std::to_string(kMaxTimeSteps) + " a series may have (damaged file?)");
+    requireMemory(file, field, double(count) * double(sizeof(SourceStep) + sizeof(TimeStep)), defaultMemoryCap(),
+                  "the descriptions of " + std::to_string(count) + " time-steps");
+}
+
 Series assembleRawSeries(const SourceSeries& source, const ReadOptions& options) {
     Plan plan = initialPlan(source, options);
-    if (options.maxMemoryBytes && planBytes(plan, options) > double(*options.maxMemoryBytes)) {
+    if (planBytes(plan, options) > double(memoryCap(options.maxMemoryBytes))) {
         if (options.fit == MemoryFit::Refuse)
             refuse(source, plan, options, "allow more, or add --fit resolution or --fit steps");
         if (options.fit == MemoryFit::Steps) fitBySteps(source, plan, options);

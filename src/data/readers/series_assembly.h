@@ -3,10 +3,23 @@
 // left out) and the mapping to density.
 #pragma once
 
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
 #include "source_series.h"
 #include "tstyles/data/read_options.h"
 
 namespace tstyles {
+
+// Most time-steps a series may declare: each becomes a description in memory and a row of the
+// GPU's tables long before any value is read.
+inline constexpr std::uint64_t kMaxTimeSteps = std::uint64_t(1) << 20;
+
+// Refuses a time-step count read from a file (`field` names it) above kMaxTimeSteps, or whose
+// descriptions alone would not fit in half of the machine's memory, before anything is allocated
+// for them. (--max-memory counts the values; the few steps it selects are checked there.)
+void requireStepCount(const std::filesystem::path& file, const std::string& field, std::uint64_t count);
 
 // The series as read, values still raw (missing ones NaN); `valueRange` is the range the density
 // mapping will use. `convert` writes this; everything else normalises it with toDensity.

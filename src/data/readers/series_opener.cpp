@@ -7,6 +7,7 @@
 #include "format_table.h"
 #include "series_assembly.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/core/input_limits.h"
 #include "tstyles/data/manifest.h"
 
 namespace tstyles {
@@ -41,6 +42,8 @@ const SeriesFormat* formatByExtension(const std::filesystem::path& input) {
 const SeriesFormat& formatOf(const std::filesystem::path& input, const ReadOptions& options) {
     std::error_code error;
     if (!std::filesystem::exists(input, error)) throwInputError(input, "", "no such file or folder");
+    // Sniffing reads the first bytes: a FIFO or device would block or never end.
+    requireRegularFile(input, "data file");
     const SeriesFormat* byExtension = formatByExtension(input);
     if (!options.solutionFiles.empty()) {
         if (byExtension && byExtension->name != kPlot3DFormatName)
@@ -70,7 +73,7 @@ void rejectReadingOptions(const std::filesystem::path& manifest, const ReadOptio
     reject(options.valueRange.has_value(), "--range");
     reject(options.resampleTo.has_value(), "--resample");
     reject(options.rawDims.has_value(), "--dims");
-    reject(options.maxMemoryBytes.has_value(), "--max-memory");
+    reject(options.fit != MemoryFit::Refuse, "--fit");
     reject(!options.solutionFiles.empty(), "--solution");
     reject(options.block != 0, "--block");
     reject(options.gamma != ReadOptions{}.gamma, "--gamma");
@@ -140,7 +143,7 @@ Series openSeries(const std::vector<std::filesystem::path>& inputs, const ReadOp
         if (inputs.size() > 1)
             throwInputError(inputs[1], "", "a tstyles manifest is a whole series: give it alone");
         rejectReadingOptions(inputs.front(), options);
-        Series series = loadSeries(inputs.front());
+        Series series = loadSeries(inputs.front(), {options.maxMemoryBytes, bytesPerDensity(options.precision)});
         series.precision = options.precision;
         return series;
     }
