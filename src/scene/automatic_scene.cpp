@@ -184,13 +184,18 @@ Bounds framedBounds(const Scene& scene, const Series& series) {
     return scene.camera.framing == Framing::Visible ? visibleBounds(series, scene.stf) : series.worldBounds();
 }
 
-SceneOnSeries fitSceneToSeries(Scene scene, Series series) {
-    const DisplayFrame frame = chooseDisplayFrame(scene.display, series);
-    Series display = applyDisplayFrame(std::move(series), frame);
+Scene fitAutomaticParts(Scene scene, const Series& display) {
     if (scene.gradientTstf.automaticRange) {
         scene.gradientTstf.rangeLow = 0.0;
         scene.gradientTstf.rangeHigh = typicalLargestChange(display, scene.stf);
     }
+    return scene;
+}
+
+SceneOnSeries fitSceneToSeries(Scene scene, Series series) {
+    const DisplayFrame frame = chooseDisplayFrame(scene.display, series);
+    Series display = applyDisplayFrame(std::move(series), frame);
+    scene = fitAutomaticParts(std::move(scene), display);
     const Bounds framed = framedBounds(scene, display);
     return {std::move(scene), std::move(display), frame, framed};
 }
