@@ -11,6 +11,7 @@ packages=(
   libnetcdf-dev libnifti2-dev zlib1g-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   libfreetype-dev fonts-dejavu-core
+  pybind11-dev python3-dev python3-numpy python3-xarray python3-netcdf4 python3-pytest
 )
 
 missing=()

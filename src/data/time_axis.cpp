@@ -364,6 +364,23 @@ CalendarDate dateAt(const TimeAxis& axis, double value) {
     return date;
 }
 
+double valueAt(const TimeAxis& axis, const CalendarDate& date, const std::filesystem::path& source,
+               const std::string& field) {
+    const bool exists = date.month >= 1 && date.month <= 12 && date.day >= 1 &&
+                        date.day <= monthLength(axis.calendar, date.year, date.month);
+    if (!exists) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%04d-%02d-%02d", date.year, date.month, date.day);
+        throwInputError(source, field, std::string("the date ") + text + " does not exist in the " +
+                                           toString(axis.calendar) + " calendar");
+    }
+    const CalendarDate& reference = axis.reference.value();
+    const double days = double(dayNumber(axis.calendar, date) - dayNumber(axis.calendar, reference));
+    const double seconds = (date.hour - reference.hour) * 3600.0 + (date.minute - reference.minute) * 60.0 +
+                           (date.second - reference.second);
+    return (days * 86400.0 + seconds) / secondsPer(axis.unit);
+}
+
 std::vector<std::string> formatTimes(const std::vector<double>& values, const TimeAxis& axis) {
     std::vector<std::string> labels(values.size());
     if (axis.reference) {

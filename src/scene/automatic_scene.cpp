@@ -203,14 +203,19 @@ std::pair<double, double> automaticGradientRange(const Scene& scene, const Serie
     return {0.0, change};
 }
 
-SceneOnSeries fitSceneToSeries(Scene scene, Series series) {
-    const DisplayFrame frame = chooseDisplayFrame(scene.display, series);
-    Series display = applyDisplayFrame(std::move(series), frame);
+Scene fitAutomaticParts(Scene scene, const Series& display) {
     if (scene.gradientTstf.automaticRange) {
         const auto [low, high] = automaticGradientRange(scene, display);
         scene.gradientTstf.rangeLow = low;
         scene.gradientTstf.rangeHigh = high;
     }
+    return scene;
+}
+
+SceneOnSeries fitSceneToSeries(Scene scene, Series series) {
+    const DisplayFrame frame = chooseDisplayFrame(scene.display, series);
+    Series display = applyDisplayFrame(std::move(series), frame);
+    scene = fitAutomaticParts(std::move(scene), display);
     const Bounds framed = framedBounds(scene, display);
     return {std::move(scene), std::move(display), frame, framed};
 }

@@ -49,6 +49,12 @@ std::string toCfUnits(const TimeAxis& axis);
 // The date `value` units after the reference (the axis must have one).
 CalendarDate dateAt(const TimeAxis& axis, double value);
 
+// The inverse of dateAt: how many units after the reference `date` is on the axis' calendar (the
+// axis must have a reference). An InputError naming `source` and `field` when the date does not
+// exist in that calendar (February 30 outside 360_day).
+double valueAt(const TimeAxis& axis, const CalendarDate& date, const std::filesystem::path& source,
+               const std::string& field);
+
 // Labels for a series' stamps, as short as keeps neighbours apart: dates ("2009-07-15", with
 // "06:00" or seconds only where needed), values with their unit ("12.2 s", "3 days"), or plain
 // numbers.

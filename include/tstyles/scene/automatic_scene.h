@@ -39,6 +39,10 @@ struct SceneOnSeries {
 
 SceneOnSeries fitSceneToSeries(Scene scene, Series series);
 
+// The second half of fitSceneToSeries, for front ends that keep a series already turned into the
+// scene's display frame across frames (the Python module): the automatic gradient range filled in.
+Scene fitAutomaticParts(Scene scene, const Series& display);
+
 // The bounds an automatic orbit camera frames for this scene on this (display) series.
 Bounds framedBounds(const Scene& scene, const Series& series);
 

@@ -12,6 +12,7 @@
 #include "netcdf_file.h"
 #include "series_assembly.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/data/cf_conventions.h"
 
 namespace tstyles {
 namespace {
@@ -55,19 +56,18 @@ NetcdfVariable chooseVariable(const NetcdfFile& nc, const std::string& wanted) {
     return nc.variable(*nc.findVariable(candidates[0]));
 }
 
-std::string lowercase(std::string text) {
-    for (char& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return text;
+// The CF attributes of a coordinate variable.
+CfAttributes cfAttributes(const NetcdfFile& nc, int id) {
+    return {nc.textAttribute(id, "units").value_or(""), nc.textAttribute(id, "standard_name").value_or(""),
+            nc.textAttribute(id, "axis").value_or(""), nc.textAttribute(id, "positive").value_or("")};
 }
 
-// CF: a coordinate variable with axis = "T" or units "<unit> since <date>"; else a name like time.
 bool looksLikeTime(const NetcdfFile& nc, const std::string& dimension) {
     if (const auto coordinate = nc.findVariable(dimension)) {
-        if (lowercase(nc.textAttribute(*coordinate, "axis").value_or("")) == "t") return true;
-        if (nc.textAttribute(*coordinate, "units").value_or("").find(" since ") != std::string::npos) return true;
+        const CfAttributes attributes = cfAttributes(nc, *coordinate);
+        return cfLooksLikeTime(dimension, &attributes);
     }
-    const std::string name = lowercase(dimension);
-    return name == "t" || name.find("time") != std::string::npos;
+    return cfLooksLikeTime(dimension, nullptr);
 }
 
 int findTimeDimension(const NetcdfFile& nc, const NetcdfVariable& variable, const ReadOptions& options) {
@@ -92,91 +92,16 @@ std::string dimensionList(const NetcdfVariable& variable) {
 }
 
 // One spatial axis: where its nodes are in the world, and whether the data runs against it.
-struct AxisFrame {
-    double origin = 0.0;
-    double spacing = 1.0;
-    std::vector<double> positions;  // uneven axes only
-    bool reversed = false;
-    SpatialAxis meaning;
-};
-
-bool startsWith(const std::string& text, const std::string& prefix) { return text.rfind(prefix, 0) == 0; }
-
-bool isPressureUnit(const std::string& unit) {
-    for (const char* name : {"pa", "hpa", "kpa", "mbar", "millibar", "millibars", "bar", "dbar", "decibar", "atm"})
-        if (unit == name) return true;
-    return false;
-}
-
-// CF: longitude and latitude by standard_name or units (degrees_east, degrees_north), the vertical
-// by axis = "Z", a vertical standard_name, a pressure unit or a `positive` attribute. Vertical
-// coordinates that grow downward (depth, pressure) are negated by the reader, so +axis is up.
-AxisDirection cfDirection(const NetcdfFile& nc, int id, bool& down) {
-    const std::string units = lowercase(nc.textAttribute(id, "units").value_or(""));
-    const std::string standardName = lowercase(nc.textAttribute(id, "standard_name").value_or(""));
-    const std::string axis = lowercase(nc.textAttribute(id, "axis").value_or(""));
-    const std::string positive = lowercase(nc.textAttribute(id, "positive").value_or(""));
-    const bool pressure = isPressureUnit(units) || standardName.find("pressure") != std::string::npos;
-    down = positive == "down" || (positive.empty() && pressure);
-    if (standardName == "longitude" || startsWith(units, "degrees_e") || startsWith(units, "degree_e") ||
-        units == "degreese")
-        return AxisDirection::East;
-    if (standardName == "latitude" || startsWith(units, "degrees_n") || startsWith(units, "degree_n") ||
-        units == "degreesn")
-        return AxisDirection::North;
-    const bool vertical = axis == "z" || !positive.empty() || pressure || standardName == "depth" ||
-                          standardName == "altitude" || standardName == "height" ||
-                          standardName.find("model_level") != std::string::npos;
-    return vertical ? AxisDirection::Up : AxisDirection::Unknown;
-}
-
-AxisFrame axisFrame(const NetcdfFile& nc, const NetcdfDimension& dimension, bool indexAxes) {
-    AxisFrame frame;
-    frame.meaning.name = dimension.name;
+CfSpatialAxis axisFrame(const NetcdfFile& nc, const NetcdfDimension& dimension, bool indexAxes) {
     const auto id = nc.findVariable(dimension.name);
-    if (!id || !nc.isCoordinateVariable(*id)) return frame;
-    bool down = false;
-    frame.meaning.direction = cfDirection(nc, *id, down);
-    if (indexAxes) {
-        // Unit spacing in index order, nothing negated or reversed: +axis follows the file's order.
-        const std::vector<double> values = nc.readAll(*id);
-        const bool decreasing = values.size() >= 2 && values[1] < values[0];
-        if (down != decreasing) frame.meaning.direction = opposite(frame.meaning.direction);
+    if (!id || !nc.isCoordinateVariable(*id)) {
+        CfSpatialAxis frame;
+        frame.meaning.name = dimension.name;
         return frame;
     }
-    frame.meaning.unit = nc.textAttribute(*id, "units").value_or("");
-    std::vector<double> world = nc.readAll(*id);
-    for (double& value : world) {
-        if (!std::isfinite(value))
-            throwInputError(nc.path(), dimension.name, "coordinate variable holds a non-finite value");
-        if (down) value = -value;
-    }
-    if (world.size() >= 2 && world[1] < world[0]) {
-        std::reverse(world.begin(), world.end());
-        frame.reversed = true;
-    }
-    for (std::size_t index = 1; index < world.size(); ++index)
-        if (!(world[index] > world[index - 1]))
-            throwInputError(nc.path(), dimension.name, "coordinate variable is not strictly monotonic");
-    frame.origin = world.front();
-    const double extent = world.back() - world.front();
-    frame.spacing = extent / double(world.size() - 1);
-    bool even = true;
-    for (std::size_t index = 1; index < world.size(); ++index)
-        even = even && std::abs((world[index] - world[index - 1]) - frame.spacing) <= 1e-6 * frame.spacing;
-    if (!even)
-        for (double value : world) frame.positions.push_back(value - world.front());
-    return frame;
-}
-
-// Reverses the values along one grid axis (the file stores that axis against its coordinate).
-void reverseAxis(std::vector<float>& values, const glm::ivec3& dims, int axis) {
-    const std::size_t stride[3] = {1, std::size_t(dims.x), std::size_t(dims.x) * std::size_t(dims.y)};
-    const std::size_t count = std::size_t(dims[axis]);
-    for (std::size_t index = 0; index < values.size(); ++index) {
-        const std::size_t position = (index / stride[axis]) % count;
-        if (position < count / 2) std::swap(values[index], values[index + (count - 1 - 2 * position) * stride[axis]]);
-    }
+    const CfAttributes attributes = cfAttributes(nc, *id);
+    if (indexAxes) return cfIndexAxis(dimension.name, attributes, nc.readAll(*id));
+    return cfSpatialAxis(dimension.name, attributes, nc.readAll(*id), nc.path());
 }
 
 // CF: the time coordinate's units ("days since 1950-01-01") and calendar.
@@ -198,9 +123,7 @@ std::vector<double> stepTimes(const NetcdfFile& nc, const NetcdfVariable& variab
     const auto id = nc.findVariable(dimension.name);
     if (!id || !nc.isCoordinateVariable(*id)) return times;
     const std::vector<double> values = nc.readAll(*id);
-    for (std::size_t index = 0; index < values.size(); ++index)
-        if (!std::isfinite(values[index]) || (index > 0 && !(values[index] > values[index - 1])))
-            throwInputError(nc.path(), dimension.name, "time coordinate is not finite and strictly increasing");
+    requireIncreasingTimes(values, nc.path(), dimension.name);
     return values;
 }
 
@@ -232,7 +155,7 @@ SourceSeries openNetcdf(const std::filesystem::path& file, const ReadOptions& op
     for (int index = 0; index < int(rank); ++index)
         if (index != timeDimension) spatial.push_back(index);
     glm::ivec3 dims;
-    std::array<AxisFrame, 3> frames;
+    std::array<CfSpatialAxis, 3> frames;
     for (int axis = 0; axis < 3; ++axis) {
         const NetcdfDimension& dimension = variable.dimensions[std::size_t(spatial[std::size_t(2 - axis)])];
         if (dimension.length < 2)
@@ -273,7 +196,7 @@ SourceSeries openNetcdf(const std::filesystem::path& file, const ReadOptions& op
         for (std::size_t voxel = 0; voxel < values.size(); ++voxel)
             if (volume.missing[voxel]) values[voxel] = missingDensity();
         for (int axis = 0; axis < 3; ++axis)
-            if (frames[std::size_t(axis)].reversed) reverseAxis(values, dims, axis);
+            if (frames[std::size_t(axis)].reversed) reverseGridAxis(values, dims, axis);
         return values;
     };
     return source;
