@@ -108,7 +108,7 @@ void readGradientRange(const JsonFieldReader& fields, const json& value, const s
                        GradientTstf& tstf) {
     if (!value.is_array()) fields.fail(path, "expected [low, high] or \"auto\", got " + std::string(value.type_name()));
     // Signed characteristics (a trend, a difference) take a range around 0.
-    const std::vector<double> range = fields.numbers(value, path, 2, Interval{-1.0e30, 1.0e30});
+    const std::vector<double> range = fields.numbers(value, path, 2, Interval{-infinity, infinity});
     if (!(range[0] < range[1])) {
         fields.fail(path, "must be [low, high] with low < high, got [" + formatNumber(range[0]) + ", " +
                               formatNumber(range[1]) + "]");
