@@ -13,12 +13,11 @@ struct CompositorState {
     float timeVariance;  // sum of squared time differences from the mean
     float covariance;    // sum of products of time and density differences
     int withData;
-    TimeStepSample strongest;
-    bool anyInMask;
+    Representative representative;
 };
 
 CompositorState compositorInit() {
-    return CompositorState(0.0, 0.0, 0.0, 0.0, 0, noTimeStep(), false);
+    return CompositorState(0.0, 0.0, 0.0, 0.0, 0, noRepresentative());
 }
 
 void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 position, inout int fetches) {
@@ -30,14 +29,12 @@ void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 po
     state.meanDensity += (s.density - state.meanDensity) * weight;
     state.timeVariance += timeDelta * (time - state.meanTime);
     state.covariance += timeDelta * (s.density - state.meanDensity);
-    state.anyInMask = state.anyInMask || s.inMask;
-    if (s.stf.a > state.strongest.stf.a || state.strongest.step < 0) state.strongest = s;
+    noteRepresentative(state.representative, s);
 }
 
 TemporalCharacteristic compositorFinish(CompositorState state) {
-    if (state.withData == 0 || state.strongest.stf.a <= 0.0) return transparentCharacteristic();
-    TimeStepSample representative = state.strongest;
-    representative.inMask = state.anyInMask;
+    TimeStepSample representative = representativeSample(state.representative);
+    if (state.withData == 0 || representative.stf.a <= 0.0) return transparentCharacteristic();
     if (state.withData < 2 || state.timeVariance <= 0.0) return characteristicOf(READS_STF, 0.0, representative);
     return characteristicOf(READS_GRADIENT_TSTF, state.covariance / state.timeVariance, representative);
 }

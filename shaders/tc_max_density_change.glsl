@@ -9,27 +9,24 @@ const int COMPOSITOR_READS = READS_GRADIENT_TSTF;
 struct CompositorState {
     float minimumDensity;
     float maximumDensity;
-    TimeStepSample strongest;
-    bool anyInMask;
+    Representative representative;
     int withData;  // time-steps with data at the sample: a change needs two
 };
 
 CompositorState compositorInit() {
-    return CompositorState(1.0, 0.0, noTimeStep(), false, 0);
+    return CompositorState(1.0, 0.0, noRepresentative(), 0);
 }
 
 void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 position, inout int fetches) {
     state.minimumDensity = min(state.minimumDensity, s.density);
     state.maximumDensity = max(state.maximumDensity, s.density);
-    state.anyInMask = state.anyInMask || s.inMask;
     state.withData += 1;
-    if (s.stf.a > state.strongest.stf.a || state.strongest.step < 0) state.strongest = s;
+    noteRepresentative(state.representative, s);
 }
 
 TemporalCharacteristic compositorFinish(CompositorState state) {
-    if (!(state.strongest.stf.a > 0.0 && state.withData >= 1)) return transparentCharacteristic();
-    TimeStepSample representative = state.strongest;
-    representative.inMask = state.anyInMask;
+    TimeStepSample representative = representativeSample(state.representative);
+    if (!(representative.stf.a > 0.0 && state.withData >= 1)) return transparentCharacteristic();
     if (state.withData < 2) return characteristicOf(READS_STF, 0.0, representative);
     return characteristicOf(READS_GRADIENT_TSTF, state.maximumDensity - state.minimumDensity, representative);
 }

@@ -10,12 +10,11 @@ struct CompositorState {
     float mean;
     float sumOfSquares;  // of the differences from the mean
     int withData;
-    TimeStepSample strongest;
-    bool anyInMask;
+    Representative representative;
 };
 
 CompositorState compositorInit() {
-    return CompositorState(0.0, 0.0, 0, noTimeStep(), false);
+    return CompositorState(0.0, 0.0, 0, noRepresentative());
 }
 
 void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 position, inout int fetches) {
@@ -23,14 +22,12 @@ void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 po
     float delta = s.density - state.mean;
     state.mean += delta / float(state.withData);
     state.sumOfSquares += delta * (s.density - state.mean);
-    state.anyInMask = state.anyInMask || s.inMask;
-    if (s.stf.a > state.strongest.stf.a || state.strongest.step < 0) state.strongest = s;
+    noteRepresentative(state.representative, s);
 }
 
 TemporalCharacteristic compositorFinish(CompositorState state) {
-    if (state.withData == 0 || state.strongest.stf.a <= 0.0) return transparentCharacteristic();
-    TimeStepSample representative = state.strongest;
-    representative.inMask = state.anyInMask;
+    TimeStepSample representative = representativeSample(state.representative);
+    if (state.withData == 0 || representative.stf.a <= 0.0) return transparentCharacteristic();
     if (state.withData < 2) return characteristicOf(READS_STF, 0.0, representative);
     float deviation = sqrt(max(state.sumOfSquares, 0.0) / float(state.withData));
     return characteristicOf(READS_GRADIENT_TSTF, deviation, representative);

@@ -42,6 +42,29 @@ TimeStepSample noTimeStep() {
     return TimeStepSample(-1, 0.0, vec4(0.0), false);
 }
 
+// The time-step whose colour and style show a characteristic of all of them (a change, a spread, a
+// trend): the one with the highest STF opacity (the first met on a tie), inside the mask where any
+// of them is.
+struct Representative {
+    TimeStepSample strongest;
+    bool anyInMask;
+};
+
+Representative noRepresentative() {
+    return Representative(noTimeStep(), false);
+}
+
+void noteRepresentative(inout Representative representative, TimeStepSample s) {
+    representative.anyInMask = representative.anyInMask || s.inMask;
+    if (s.stf.a > representative.strongest.stf.a || representative.strongest.step < 0) representative.strongest = s;
+}
+
+TimeStepSample representativeSample(Representative representative) {
+    TimeStepSample shown = representative.strongest;
+    shown.inMask = representative.anyInMask;
+    return shown;
+}
+
 TemporalCharacteristic transparentCharacteristic() {
     return TemporalCharacteristic(READS_NOTHING, 0.0, noTimeStep(), vec4(0.0));
 }

@@ -22,6 +22,8 @@ extern char** environ;
 
 namespace {
 
+constexpr int kReportedFailures = 3;
+
 std::string readFile(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
     std::ostringstream text;
@@ -107,7 +109,8 @@ int main(int argc, char** argv) {
             const Job& job = *found->second;
             running.erase(found);
             if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-                ++failures;
+                // One mistake usually breaks many variants: the first few say what it is.
+                if (++failures > kReportedFailures) continue;
                 std::cerr << "glslangValidator rejected the raycasting variant " << variants[job.index].describe()
                           << " (" << job.shader.string() << "):\n"
                           << nameFiles(readFile(job.log), job.files) << "\n";
