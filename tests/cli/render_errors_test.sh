@@ -43,8 +43,8 @@ case_out_of_range() {
 }
 
 case_unknown_compositor() {
-    write_scene "$SCRATCH/scene.json" "$DATASET" '"compositor": "temporal-min"'
-    render_fails "$SCRATCH/scene.json" "$SCRATCH/scene.json" "compositor" 'unknown value "temporal-min"'
+    write_scene "$SCRATCH/scene.json" "$DATASET" '"compositor": "temporal-median"'
+    render_fails "$SCRATCH/scene.json" "$SCRATCH/scene.json" "compositor" 'unknown value "temporal-median"'
 }
 
 case_tc_nonsense() {
