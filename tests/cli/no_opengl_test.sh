@@ -35,7 +35,7 @@ case_auto() { render_without_gl auto "EGL" "OSMesa"; }
 
 # Bad input is reported before the missing OpenGL: exit 2, not 3.
 case_bad_scene_first() {
-    write_scene "$SCRATCH/scene.json" "$DATASET" '"compositor": "temporal-min"'
+    write_scene "$SCRATCH/scene.json" "$DATASET" '"compositor": "temporal-median"'
     run_tstyles "$NO_MESA_GL45" "$NO_EGL_VENDOR" -- render "$SCRATCH/scene.json" -o "$SCRATCH/out.png"
     expect_exit 2
     expect_error_line "$SCRATCH/scene.json" "compositor"

@@ -94,6 +94,15 @@ TEST(CompositorScene, ThresholdAndStepsAreReadAndWrittenBack) {
     EXPECT_EQ(parseScene(sceneWith(R"({"name": "temporal-min"})"), kOrigin).compositor, TemporalCompositor::Minimum);
 }
 
+TEST(CompositorScene, ASignedGradientRangeReadsAndRoundTrips) {
+    const Scene scene = parseScene(
+        R"({"dataset": "series.json", "compositor": "linear-trend", "tstf": {"gradient": {"range": [-0.2, 0.2]}}})",
+        kOrigin);
+    EXPECT_EQ(scene.gradientTstf.rangeLow, -0.2);
+    EXPECT_EQ(scene.gradientTstf.rangeHigh, 0.2);
+    EXPECT_EQ(roundTrip(scene), scene);
+}
+
 TEST(CompositorScene, DifferenceStepsBeyondTheSeriesNameTheField) {
     const Scene scene = parseScene(sceneWith(R"({"name": "difference", "steps": [0, 9]})"), kOrigin);
     try {
