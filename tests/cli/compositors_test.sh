@@ -123,6 +123,22 @@ case_scene_writes_the_compositor_object() {
     expect_image "$OUTPUT" 48 48
 }
 
+case_automatic_scene_signed_colours() {
+    # The automatic scene with a signed compositor: a diverging gradient TSTF, opaque at both ends.
+    run_tstyles -- scene "$DATASET" --tc linear-trend -o "$SCENE"
+    expect_exit 0
+    expect_stdout_contains 'compositor linear-trend (--tc)'
+    expect_stdout_contains '"blue-red"'
+    local gradient
+    gradient=$(tr -d ' \n' <"$SCENE" | grep -o '"gradient":{[^}]*}[^}]*}')
+    echo "$gradient" | grep -qF '"opacity":[{"at":0.0,"opacity":1.0},{"at":0.5,"opacity":0.15}' ||
+        fail "the gradient TSTF is not opaque at both ends and faint in the middle: $gradient"
+    # A scene file keeps its own gradient TSTF whatever --tc says.
+    run_tstyles -- scene "$DATASET" -o "$SCRATCH/mip.json"
+    run_tstyles -- render "$SCRATCH/mip.json" --tc difference --width 32 --height 32 -o "$OUTPUT"
+    expect_exit 0
+}
+
 case_example_time_of_peak() {
     local example="$SOURCE_DIR/examples/compositors/time-of-peak.json"
     run_tstyles -- render "$example" --width 96 --height 96 -o "$SCRATCH/custom.png"
