@@ -67,10 +67,11 @@ void drawGradientRange(GradientTstf& tstf, CompositorReads reads) {
 
 void drawCompositorChoice(Scene& scene, const Series& series) {
     const std::vector<std::string> names = compositorChoices(scene);
-    const std::string now = scene.compositor == TemporalCompositor::Custom ? kCustomCompositorChoice : toString(scene.compositor);
+    const std::string now =
+        scene.compositor == TemporalCompositor::Custom ? kCustomCompositorChoice : toString(scene.compositor);
     if (auto chosen = nameCombo("compositor", names, now)) {
         scene.compositor = names[*chosen] == kCustomCompositorChoice ? TemporalCompositor::Custom
-                                                          : *temporalCompositorFromString(names[*chosen]);
+                                                                     : *temporalCompositorFromString(names[*chosen]);
         // "auto" fits the compositor (a trend's range is signed and per unit of time).
         if (scene.gradientTstf.automaticRange && series.size() > 0)
             std::tie(scene.gradientTstf.rangeLow, scene.gradientTstf.rangeHigh) = automaticGradientRange(scene, series);
@@ -91,8 +92,8 @@ void drawCompositorOptions(Scene& scene, const Series& series) {
     }
     if (info.takesSteps && series.size() > 0) {
         const int last = int(series.size()) - 1;
-        const glm::ivec2 steps = options.differenceSteps(series.size());
-        int chosen[2] = {steps.x, steps.y};
+        int chosen[2] = {std::clamp(options.differenceFrom, 0, last),
+                         std::clamp(options.differenceTo.value_or(last), 0, last)};
         if (ImGui::SliderInt2("steps (from, to)", chosen, 0, last)) {
             options.differenceFrom = std::clamp(chosen[0], 0, last);
             options.differenceTo = std::clamp(chosen[1], 0, last);
