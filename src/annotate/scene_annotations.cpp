@@ -7,6 +7,7 @@
 
 #include "annotation_panels.h"
 #include "tstyles/data/time_axis.h"
+#include "tstyles/scene/temporal_compositors.h"
 
 namespace tstyles {
 namespace {
@@ -17,17 +18,32 @@ constexpr glm::vec4 kFocusMark{1.0f, 1.0f, 1.0f, 1.0f};
 // A series name longer than this (a manifest's description) is not a legend title: "value" is.
 constexpr std::size_t kLongestValueName = 16;
 
-bool indexTstfShown(const Scene& scene) {
-    return scene.finalMode != FinalMode::Stf && scene.compositor == TemporalCompositor::MaxIntensityProjection;
-}
-bool gradientTstfShown(const Scene& scene) {
-    return scene.finalMode != FinalMode::Stf && scene.compositor == TemporalCompositor::MaxDensityChange;
-}
-bool stfShown(const Scene& scene) { return scene.finalMode != FinalMode::Tstf; }
-
 std::string withUnit(const std::string& what, const std::string& unit) {
     return unit.empty() ? what : what + " (" + unit + ")";
 }
+
+// The index TSTF colours the time-step a compositor picks, and each time-step of the composited
+// ones (temporal average, chronovolume); the gradient TSTF colours a value.
+bool indexTstfShown(const Scene& scene) {
+    return scene.finalMode != FinalMode::Stf && compositorReads(scene) != CompositorReads::GradientTstf;
+}
+bool gradientTstfShown(const Scene& scene) {
+    return scene.finalMode != FinalMode::Stf && compositorReads(scene) == CompositorReads::GradientTstf;
+}
+
+// What the gradient TSTF's legend measures, in the series' units.
+std::string gradientLegendTitle(const Scene& scene, const std::string& valueUnit) {
+    switch (scene.compositor) {
+        case TemporalCompositor::MaxDensityChange: return withUnit("change", valueUnit);
+        case TemporalCompositor::StandardDeviation: return withUnit("standard deviation", valueUnit);
+        case TemporalCompositor::LinearTrend:
+            return withUnit("trend", valueUnit.empty() ? "per unit of time" : valueUnit + " per unit of time");
+        case TemporalCompositor::Difference: return withUnit("difference", valueUnit);
+        default: return withUnit("value", valueUnit);
+    }
+}
+bool stfShown(const Scene& scene) { return scene.finalMode != FinalMode::Tstf; }
+
 
 // The focus: the most opaque time-steps of the index TSTF, where opacity varies at all.
 std::vector<bool> focusSteps(const Scene& scene, glm::ivec2 steps) {
@@ -174,11 +190,13 @@ void drawCurveBar(PanelStack& panels, const Corner corner, const TransferFunctio
 }
 
 // Labels for `count` + 1 evenly spaced values from low to high.
-std::vector<std::string> evenLabels(double low, double high, int count, const std::string& prefixOfLast = {}) {
+std::vector<std::string> evenLabels(double low, double high, int count, const std::string& prefixOfLast = {},
+                                    const std::string& prefixOfFirst = {}) {
     const double step = niceStep(std::abs(high - low), 4) / 10.0;
     std::vector<std::string> labels;
     for (int i = 0; i <= count; ++i)
-        labels.push_back((i == count ? prefixOfLast : "") + tickLabel(low + (high - low) * i / count, step));
+        labels.push_back((i == count ? prefixOfLast : i == 0 ? prefixOfFirst : "") +
+                         tickLabel(low + (high - low) * i / count, step));
     return labels;
 }
 
@@ -243,11 +261,12 @@ AnnotationLayout drawAnnotations(Image& image, const Scene& scene, const Series&
             else drawSwatchStrip(panels, scene, steps, labels, styles, layout);
         }
         const double valueSpan = series.valueRange[1] - series.valueRange[0];
+        // Values beyond the range take its ends' colours; a signed range has values below it too.
         if (gradientTstfShown(scene))
             drawCurveBar(panels, scene.annotations.legendCorner, scene.gradientTstf.curve,
-                         withUnit("change", series.valueUnit),
+                         gradientLegendTitle(scene, series.valueUnit),
                          evenLabels(scene.gradientTstf.rangeLow * valueSpan, scene.gradientTstf.rangeHigh * valueSpan, 2,
-                                    "\u2265 "),
+                                    "\u2265 ", scene.gradientTstf.rangeLow < 0.0 ? "\u2264 " : ""),
                          layout);
         if (stfShown(scene))
             drawCurveBar(panels, scene.annotations.legendCorner, scene.stf.curve,

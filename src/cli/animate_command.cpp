@@ -60,7 +60,7 @@ int runAnimate(const AnimateOptions& options) {
     Scene& scene = opened.scene;
     if (options.width) scene.width = *options.width;
     if (options.height) scene.height = *options.height;
-    applySceneOverrides(scene, options.overrides);
+    applySceneOverrides(opened, options.overrides);
     applyAnnotationOptions(scene, options.annotations);
     const std::string sceneName = options.inputs.front().string();
     SceneOnSeries fitted = fitSceneToSeries(std::move(scene), std::move(opened.series));

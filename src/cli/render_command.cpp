@@ -58,7 +58,7 @@ int runRender(const RenderOptions& options) {
     Scene& scene = opened.scene;
     if (options.width) scene.width = *options.width;
     if (options.height) scene.height = *options.height;
-    applySceneOverrides(scene, options.overrides);
+    applySceneOverrides(opened, options.overrides);
     overrideStyles(scene, options.styleOverrides);
     applyAnnotationOptions(scene, options.annotations);
     if (!options.frame && (hasPreset(options.animation) || options.animation.frames || options.animation.framesPerSecond))

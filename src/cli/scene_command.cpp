@@ -29,7 +29,7 @@ int runScene(const SceneOptions& options) {
     SceneAndSeries opened = openSceneOrDataset(options.inputs, {}, options.dataset);
     if (opened.explanation.empty())
         throwInputError(options.inputs.front(), "", "is a scene file already; `tstyles scene` makes one from a dataset");
-    applySceneOverrides(opened.scene, options.overrides);
+    applySceneOverrides(opened, options.overrides);
     saveScene(opened.scene, options.output);
     std::cout << "wrote " << options.output.string() << ", the automatic scene of " << options.inputs.front().string()
               << ":\n";

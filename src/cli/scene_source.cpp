@@ -68,8 +68,17 @@ void addSceneOverrides(CLI::App& command, SceneOverrides& overrides) {
                        "Stretch the vertical (display up) axis by this factor, or auto");
 }
 
-void applySceneOverrides(Scene& scene, const SceneOverrides& overrides) {
-    if (overrides.compositor) scene.compositor = *temporalCompositorFromString(*overrides.compositor);
+void applySceneOverrides(SceneAndSeries& opened, const SceneOverrides& overrides) {
+    Scene& scene = opened.scene;
+    if (overrides.compositor) {
+        scene.compositor = *temporalCompositorFromString(*overrides.compositor);
+        if (!opened.explanation.empty()) {
+            const std::string colours = applyAutomaticGradientColours(scene);
+            const TemporalCompositorInfo& info = compositorInfo(scene.compositor);
+            opened.explanation.push_back("compositor " + *overrides.compositor + " (--tc): " + info.summary +
+                                         (info.reads == CompositorReads::GradientTstf ? "; " + colours : ""));
+        }
+    }
     if (overrides.orientation)
         scene.display.orientation = displayFromOptions("orientation", "--orientation", *overrides.orientation).orientation;
     if (overrides.aspect) scene.display.aspect = displayFromOptions("aspect", "--aspect", *overrides.aspect).aspect;

@@ -22,7 +22,6 @@ struct SceneOverrides {
     std::optional<std::string> verticalExaggeration;   // --vertical-exaggeration X|auto
 };
 void addSceneOverrides(CLI::App& command, SceneOverrides& overrides);
-void applySceneOverrides(Scene& scene, const SceneOverrides& overrides);
 
 struct SceneAndSeries {
     Scene scene;
@@ -30,6 +29,10 @@ struct SceneAndSeries {
     // The automatic scene's choices, one line each; empty for a scene file.
     std::vector<std::string> explanation;
 };
+
+// An automatic scene's gradient TSTF follows a compositor chosen here (a diverging one for signed
+// values); a scene file's stays as written.
+void applySceneOverrides(SceneAndSeries& opened, const SceneOverrides& overrides);
 
 // One scene file (its dataset, or `datasetFiles` instead), else the inputs are the files of one
 // dataset and the scene is the automatic one.

@@ -2,6 +2,7 @@
 #include "tstyles/render/raycaster.h"
 
 #include <array>
+#include <regex>
 #include <sstream>
 #include <string>
 
@@ -14,14 +15,34 @@
 namespace tstyles {
 namespace {
 
-// The lines of a compiler log about `file` (the scene's code), or the whole log if none is.
-std::string linesNaming(const std::string& log, const std::string& file) {
+// One line for a compiler log about the scene's code, which compiler messages call `file`: the
+// first error there as "line L: does not compile: MESSAGE" (Mesa writes "file:L:C: error: ...",
+// NVIDIA "file:L: error ..."), and how many more errors followed.
+std::string firstErrorIn(const std::string& log, const std::string& file) {
+    static const std::regex located(R"(^:(\d+)(?::\d+)?:\s*(?:error:?\s*)?(.*)$)");
     std::istringstream lines(log);
     std::string line;
-    std::string result;
-    while (std::getline(lines, line))
-        if (line.find(file + ":") != std::string::npos) result += line + "\n";
-    return result.empty() ? log : result;
+    std::string first;
+    int more = 0;
+    while (std::getline(lines, line)) {
+        const std::size_t at = line.find(file + ":");
+        if (at == std::string::npos) continue;
+        std::smatch match;
+        const std::string rest = line.substr(at + file.size());
+        if (!std::regex_match(rest, match, located)) continue;
+        if (!first.empty()) {
+            more += line.find("error") != std::string::npos ? 1 : 0;
+            continue;
+        }
+        first = "line " + match[1].str() + ": does not compile: " + match[2].str();
+    }
+    if (first.empty()) {
+        // Nothing names the code's own lines (an error the code causes in the program around it).
+        std::istringstream whole(log);
+        while (std::getline(whole, line) && line.find("error") == std::string::npos) {}
+        return "does not compile: " + (line.empty() ? log.substr(0, log.find('\n')) : line);
+    }
+    return more == 0 ? first : first + " (and " + std::to_string(more) + " more errors)";
 }
 
 int finalModeCode(FinalMode mode) {
@@ -59,8 +80,7 @@ const Program& Raycaster::programFor(const RaycastVariant& variant) {
         return programs_.emplace(variant, Program::build(shaders_, stages, variant.defines(), variant.modules()))
             .first->second;
     } catch (const std::runtime_error& error) {
-        throw InputError(variant.customCodeName + ": does not compile:\n" +
-                         linesNaming(error.what(), variant.customCodeName));
+        throw InputError(variant.customCodeName + ": " + firstErrorIn(error.what(), variant.customCodeName));
     }
 }
 

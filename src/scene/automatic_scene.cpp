@@ -20,8 +20,6 @@ constexpr double kChangePercentile = 0.99;
 // A lattice of this many points per axis samples the change of series whose time-steps do not share
 // one grid.
 constexpr int kChangeLattice = 32;
-// Where the gradient TSTF leaves unchanging voxels faint, so that change stands out.
-constexpr double kUnchangedOpacity = 0.15;
 // The neutral lit-sphere style that gives the first picture its shading.
 constexpr const char* kNeutralStyle = "matte-white";
 
@@ -173,7 +171,6 @@ AutomaticScene automaticScene(const Series& series, const std::filesystem::path&
     scene.compositor = TemporalCompositor::MaxIntensityProjection;
     scene.finalMode = FinalMode::Modulate;
     scene.indexTstf.curve.opacity = {OpacityNode{0.0, 1.0}};
-    scene.gradientTstf.curve.opacity = {OpacityNode{0.0, kUnchangedOpacity}, OpacityNode{1.0, 1.0}};
     scene.gradientTstf.automaticRange = true;
     applyTimeColours(scene, series.size());
     result.explanation.push_back("time: " + timeColoursText(series.size()) +

@@ -90,12 +90,17 @@ std::optional<std::size_t> boundedLoopHeader(const std::vector<Token>& tokens, s
     return increment + 4;
 }
 
+// Whether tokens[at] is written: `NAME = ...`, a compound assignment (`+=`, `%=`, `<<=`, ...) or
+// an increment or decrement before or after it.
 bool isAssignmentTo(const std::vector<Token>& tokens, std::size_t at) {
     auto text = [&](std::size_t index) { return index < tokens.size() ? tokens[index].text : std::string(); };
     const std::string next = text(at + 1);
     const std::string after = text(at + 2);
     if (next == "=" && after != "=") return true;
-    if ((next == "+" || next == "-" || next == "*" || next == "/") && (after == "=" || after == next)) return true;
+    static const std::set<std::string_view> kCompoundOperators{"+", "-", "*", "/", "%", "&", "|", "^"};
+    if (kCompoundOperators.contains(next) && after == "=") return true;
+    if ((next == "+" || next == "-") && after == next) return true;
+    if ((next == "<" || next == ">") && after == next && text(at + 3) == "=") return true;
     const std::string before = at >= 1 ? text(at - 1) : "";
     const std::string beforeThat = at >= 2 ? text(at - 2) : "";
     return (before == "+" && beforeThat == "+") || (before == "-" && beforeThat == "-");
@@ -112,11 +117,16 @@ std::optional<SandboxViolation> findSandboxViolation(const std::string& code) {
     int depth = 0;
     constexpr int kNoDeclaration = -1;
     int declarationDepth = kNoDeclaration;
+    int braces = 0;
     for (std::size_t i = 0; i < tokens.size(); ++i) {
         const Token& token = tokens[i];
         if (token.text == "(" || token.text == "[") ++depth;
         if (token.text == ")" || token.text == "]") --depth;
         if (token.text == ";") declarationDepth = kNoDeclaration;
+        if (token.text == "{") ++braces;
+        // The code is a function body: closing more than it opened would end the function.
+        if (token.text == "}" && --braces < 0)
+            return SandboxViolation{token.line, "a \"}\" without its \"{\": the code is a function body"};
         if (token.text == "#")
             return SandboxViolation{token.line, "preprocessor directives are not allowed in a compositor"};
         if (!token.identifier) continue;
@@ -153,6 +163,8 @@ std::optional<SandboxViolation> findSandboxViolation(const std::string& code) {
                                                 "density, hasData, inMask, stf, time), its own variables and GLSL's "
                                                 "built-in math functions"};
     }
+    if (braces > 0)
+        return SandboxViolation{tokens.back().line, "a \"{\" without its \"}\": the code is a function body"};
     for (std::size_t i = 0; i < tokens.size(); ++i)
         if (tokens[i].identifier && loopNames.contains(tokens[i].text) && !loopHeaderTokens.contains(i) &&
             isAssignmentTo(tokens, i))

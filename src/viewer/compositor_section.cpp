@@ -2,12 +2,15 @@
 #include <algorithm>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <imgui.h>
 
 #include "camera_controller.h"
 #include "side_panel.h"
+#include "tstyles/scene/automatic_scene.h"
+#include "tstyles/scene/temporal_compositors.h"
 
 namespace tstyles::viewer {
 namespace {
@@ -42,32 +45,87 @@ void drawRaycastSettings(Scene& scene, double defaultStep) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Rays stop once their accumulated opacity reaches this.");
 }
 
-void drawGradientRange(GradientTstf& tstf) {
+// The gradient TSTF's range, in density units: signed characteristics (a trend, a difference)
+// take a range around 0, the others one from 0.
+void drawGradientRange(GradientTstf& tstf, CompositorReads reads) {
+    if (reads != CompositorReads::GradientTstf) return;
     double range[2] = {tstf.rangeLow, tstf.rangeHigh};
-    const double zero = 0.0;
-    const double one = 1.0;
-    if (ImGui::DragScalarN("change range", ImGuiDataType_Double, range, 2, 0.002f, &zero, &one, "%.3f")) {
-        // The scene format wants 0 <= low < high.
-        range[0] = std::clamp(range[0], 0.0, 0.999);
-        range[1] = std::max(range[1], range[0] + 0.001);
+    const double lowest = -1.0;
+    const double highest = 1.0;
+    if (ImGui::DragScalarN("range", ImGuiDataType_Double, range, 2, 0.002f, &lowest, &highest, "%.3f")) {
+        // The scene format wants low < high.
+        range[0] = std::clamp(range[0], lowest, highest - 0.001);
+        range[1] = std::clamp(range[1], range[0] + 0.001, highest);
         tstf.rangeLow = range[0];
         tstf.rangeHigh = range[1];
+        tstf.automaticRange = false;
     }
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Gradient TSTF: the temporal change (max - min density) in this range maps to [0, 1].");
+        ImGui::SetTooltip("Gradient TSTF: the compositor's value (in density units; a trend per unit of time) in "
+                          "this range maps to [0, 1].");
+}
+
+void drawCompositorChoice(Scene& scene, const Series& series) {
+    const std::vector<std::string> names = compositorChoices(scene);
+    const std::string now =
+        scene.compositor == TemporalCompositor::Custom ? kCustomCompositorChoice : toString(scene.compositor);
+    if (auto chosen = nameCombo("compositor", names, now)) {
+        scene.compositor = names[*chosen] == kCustomCompositorChoice ? TemporalCompositor::Custom
+                                                                     : *temporalCompositorFromString(names[*chosen]);
+        // "auto" fits the compositor (a trend's range is signed and per unit of time).
+        if (scene.gradientTstf.automaticRange && series.size() > 0)
+            std::tie(scene.gradientTstf.rangeLow, scene.gradientTstf.rangeHigh) = automaticGradientRange(scene, series);
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", compositorInfo(scene.compositor).summary);
+}
+
+// The options of the chosen compositor: a threshold, the two time-steps of a difference, or what
+// the scene's own code is read by.
+void drawCompositorOptions(Scene& scene, const Series& series) {
+    const TemporalCompositorInfo& info = compositorInfo(scene.compositor);
+    CompositorOptions& options = scene.compositorOptions;
+    if (info.takesThreshold) {
+        const double low = 0.0;
+        const double high = 1.0;
+        ImGui::SliderScalar("threshold", ImGuiDataType_Double, &options.threshold, &low, &high, "%.3f");
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("The density (0 to 1) a time-step must reach at the sample.");
+    }
+    if (info.takesSteps && series.size() > 0) {
+        const int last = int(series.size()) - 1;
+        int chosen[2] = {std::clamp(options.differenceFrom, 0, last),
+                         std::clamp(options.differenceTo.value_or(last), 0, last)};
+        if (ImGui::SliderInt2("steps (from, to)", chosen, 0, last)) {
+            options.differenceFrom = std::clamp(chosen[0], 0, last);
+            options.differenceTo = std::clamp(chosen[1], 0, last);
+        }
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("The difference shows density(to) - density(from).");
+    }
+    if (scene.compositor == TemporalCompositor::Custom && options.custom) {
+        const bool index = options.custom->reads == CompositorReads::IndexTstf;
+        ImGui::TextDisabled("the scene's own GLSL, read by the %s TSTF", index ? "index" : "gradient");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("From %s. Edit it there (docs/compositors.md) and open the scene again.",
+                              options.custom->origin.string().c_str());
+    }
 }
 
 }  // namespace
 
+std::vector<std::string> compositorChoices(const Scene& scene) {
+    std::vector<std::string> names = temporalCompositorNames();
+    if (scene.compositorOptions.custom) names.emplace_back(kCustomCompositorChoice);
+    return names;
+}
+
 void drawCompositorSection(SidePanelState& state) {
     Scene& scene = state.scene;
-    if (auto chosen = nameCombo("compositor", temporalCompositorNames(), toString(scene.compositor)))
-        scene.compositor = *temporalCompositorFromString(temporalCompositorNames()[*chosen]);
+    drawCompositorChoice(scene, state.series);
+    drawCompositorOptions(scene, state.series);
     if (auto chosen = nameCombo("final mode", finalModeNames(), toString(scene.finalMode)))
         scene.finalMode = *finalModeFromString(finalModeNames()[*chosen]);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("stf: STF alone; tstf: TSTF alone; modulate: STF times TSTF");
     drawRaycastSettings(scene, state.defaultStep);
-    drawGradientRange(scene.gradientTstf);
+    drawGradientRange(scene.gradientTstf, compositorReads(scene));
     float background[4] = {float(scene.background.r), float(scene.background.g), float(scene.background.b),
                            float(scene.background.a)};
     if (ImGui::ColorEdit4("background", background, ImGuiColorEditFlags_NoInputs | ImGuiColorEditFlags_AlphaPreviewHalf))

@@ -5,6 +5,8 @@
 
 #include <imgui.h>
 
+#include "tstyles/scene/temporal_compositors.h"
+
 namespace tstyles::viewer {
 namespace {
 
@@ -16,6 +18,19 @@ constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFl
 void placeWindow(const ScreenRect& rect) {
     ImGui::SetNextWindowPos({rect.min.x, rect.min.y});
     ImGui::SetNextWindowSize({rect.size().x, rect.size().y});
+}
+
+// The compositors that the view's TSTF reads: the index TSTF styles each time-step of the
+// composited ones too.
+std::string readersOf(bool gradientTstf) {
+    std::string names;
+    for (const TemporalCompositorInfo& info : temporalCompositors()) {
+        if (info.compositor == TemporalCompositor::Custom) continue;
+        const bool gradient = info.reads == CompositorReads::GradientTstf;
+        if (gradient != gradientTstf) continue;
+        names += (names.empty() ? "" : ", ") + std::string(info.name);
+    }
+    return names;
 }
 
 }  // namespace
@@ -70,7 +85,7 @@ void EditorPanels::drawTstf(Scene& scene, const Series& series, const std::vecto
     const std::string title = std::string(focusedHere ? "> " : "") + "TSTF: temporal style transfer function###tstf";
     if (ImGui::Begin(title.c_str(), nullptr, kPanelFlags)) {
         if (followCompositor_)
-            tstfView_ = scene.compositor == TemporalCompositor::MaxDensityChange ? TstfView::Gradient : TstfView::Index;
+            tstfView_ = compositorReads(scene) == CompositorReads::GradientTstf ? TstfView::Gradient : TstfView::Index;
         if (ImGui::RadioButton("Time-step index", tstfView_ == TstfView::Index)) {
             tstfView_ = TstfView::Index;
             followCompositor_ = false;
@@ -83,8 +98,9 @@ void EditorPanels::drawTstf(Scene& scene, const Series& series, const std::vecto
             focused_ = &gradient_;
         }
         ImGui::SameLine();
-        ImGui::TextDisabled(tstfView_ == TstfView::Index ? "(read by temporal-mip, temporal-average)"
-                                                         : "(read by temporal-max-change)");
+        ImGui::TextDisabled("(?)");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Read by %s", readersOf(tstfView_ == TstfView::Gradient).c_str());
         if (tstfView_ == TstfView::Index) {
             if (focused_ == &gradient_) focused_ = &index_;
             CurveEditorConfig config;
@@ -98,7 +114,7 @@ void EditorPanels::drawTstf(Scene& scene, const Series& series, const std::vecto
             CurveEditorConfig config;
             config.anchor = "gradient";
             config.axis = gradientTstfAxis();
-            config.axisLabel = "change (normalized)";
+            config.axisLabel = "value (0 and 1: the ends of its range)";
             drawEditor(gradient_, scene.gradientTstf.curve, config, anchors);
         }
     }

@@ -5,6 +5,8 @@
 
 #include <cstddef>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "animation_state.h"
 #include "time_control.h"
@@ -35,6 +37,12 @@ struct SidePanelState {
 };
 
 void drawSidePanel(const ScreenRect& rect, SidePanelState& state, ViewerCommands& commands, UiAnchors& anchors);
+
+// The compositor list's entry for the scene's own code (it cannot be typed in the viewer).
+inline constexpr const char* kCustomCompositorChoice = "custom (from the scene)";
+// The compositors the viewer offers: every named one, and the scene's own code when it has some
+// (kept in the scene while another compositor is chosen, to choose again).
+std::vector<std::string> compositorChoices(const Scene& scene);
 
 // The sections, one file each.
 void drawDatasetSection(SidePanelState& state, UiAnchors& anchors);

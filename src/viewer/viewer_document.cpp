@@ -66,6 +66,11 @@ ViewerDocument openDocument(const std::vector<std::filesystem::path>& paths, con
         document.sceneFile = std::filesystem::absolute(paths.front()).lexically_normal();
     }
     if (document.series->size() == 0) throwInputError(document.series->manifestPath, "", "the series has no time-steps");
+    if (document.sceneFile) {
+        // As `render` does: settings that name time-steps the series lacks fail on opening, named.
+        document.scene.exposure.stepsOf(document.series->size(), *document.sceneFile);
+        document.scene.compositorOptions.differenceSteps(document.series->size(), *document.sceneFile);
+    }
     document.histogram = (current != nullptr && current->series == document.series)
                              ? current->histogram
                              : std::make_shared<const DensityHistogram>(computeDensityHistogram(*document.series));

@@ -7,6 +7,7 @@
 
 #include "tstyles/annotate/scene_annotations.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/scene/temporal_compositors.h"
 
 namespace {
 
@@ -150,6 +151,37 @@ TEST(Legend, ManyTimeStepsBecomeAStripOfCellsThatDoNotOverlap) {
     ASSERT_EQ(layout.stepSwatches.size(), 60u);
     for (std::size_t i = 1; i < 60; ++i) EXPECT_GE(layout.stepSwatches[i].x, layout.stepSwatches[i - 1].right() - 1e-9);
     for (const Rect& swatch : layout.stepSwatches) EXPECT_LE(swatch.right(), 512.0);
+}
+
+TEST(Legend, FollowsWhatReadsTheCompositor) {
+    const Series series = datedSeries();
+    for (const TemporalCompositorInfo& info : temporalCompositors()) {
+        if (info.compositor == TemporalCompositor::Custom) continue;
+        Scene scene;
+        scene.annotations.legend = true;
+        scene.finalMode = FinalMode::Tstf;  // the TSTF's legend alone
+        scene.compositor = info.compositor;
+        Image image(512, 512);
+        const View view = resolveView(scene.camera, series.worldBounds(), 512, 512);
+        const AnnotationLayout layout = drawAnnotations(image, scene, series, DisplayFrame{}, view, Font::openDefault());
+        // The time-steps' swatches for a compositor that picks or styles time-steps; the gradient
+        // TSTF's bar (one panel) for one that computes a value.
+        if (info.reads == CompositorReads::GradientTstf) {
+            EXPECT_TRUE(layout.stepSwatches.empty()) << info.name;
+            EXPECT_EQ(layout.panels.size(), 1u) << info.name;
+        } else {
+            EXPECT_EQ(layout.stepSwatches.size(), 4u) << info.name;
+        }
+    }
+    // The scene's own code: what it says reads it.
+    Scene custom;
+    custom.annotations.legend = true;
+    custom.finalMode = FinalMode::Tstf;
+    custom.compositor = TemporalCompositor::Custom;
+    custom.compositorOptions.custom = CustomCompositor{"return 0.0;", "scene.json", false, CompositorReads::GradientTstf};
+    Image image(512, 512);
+    const View view = resolveView(custom.camera, series.worldBounds(), 512, 512);
+    EXPECT_TRUE(drawAnnotations(image, custom, series, DisplayFrame{}, view, Font::openDefault()).stepSwatches.empty());
 }
 
 TEST(Ticks, AreOneTwoOrFiveTimesAPowerOfTen) {

@@ -210,6 +210,8 @@ const BadScene badScenes[] = {
      "tstf.index.opacity[0].at", "expected a number"},
     {R"({"dataset": "a", "tstf": {"gradient": {"range": [1, 0.5]}}})", "tstf.gradient.range",
      "low < high, got [1, 0.5]"},
+    {R"({"dataset": "a", "tstf": {"gradient": {"range": [-0.5, -0.5]}}})", "tstf.gradient.range",
+     "with low < high, got [-0.5, -0.5]"},
     {R"({"dataset": "a", "tstf": {"gradient": {"color": [{"at": 2, "color": [0, 0, 0]}]}}})",
      "tstf.gradient.color[0].at", "must be in [0, 1], got 2"},
     {R"({"dataset": "a", "tstf": {"max": {}}})", "tstf.max", "index, gradient"},

@@ -52,5 +52,10 @@ double typicalLargestChange(const Series& series, const Stf& stf);
 // The gradient TSTF's range that "auto" stands for with the scene's compositor
 // (AutomaticRange of tstyles/scene/temporal_compositors.h).
 std::pair<double, double> automaticGradientRange(const Scene& scene, const Series& series);
+// The automatic scene's gradient TSTF colours and opacities for the scene's compositor: for a
+// signed one (linear-trend, difference) the diverging "blue-red", faint in the middle (no change);
+// else the paper's "green-orange", faint at 0. For a compositor chosen after the automatic scene;
+// returns the choice in words.
+std::string applyAutomaticGradientColours(Scene& scene);
 
 }  // namespace tstyles

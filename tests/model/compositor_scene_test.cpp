@@ -1,0 +1,194 @@
+// The scene file's "compositor": names, objects with options, the scene's own code (inline or in a
+// file) and its sandbox, what reads each compositor, and the automatic gradient range of each.
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+#include <nlohmann/json.hpp>
+
+#include "tstyles/core/errors.h"
+#include "tstyles/scene/automatic_scene.h"
+#include "tstyles/scene/scene_file.h"
+#include "tstyles/scene/temporal_compositors.h"
+
+namespace tstyles {
+namespace {
+
+const std::filesystem::path kOrigin = "/scenes/demo/compositor_scene.json";
+
+std::filesystem::path freshFolder(const std::string& name) {
+    const auto folder =
+        std::filesystem::temp_directory_path() / ("tstyles_compositor_" + name + "_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder);
+    return folder;
+}
+
+// A scene whose "compositor" is `compositor` (JSON text).
+std::string sceneWith(const std::string& compositor) {
+    return R"({"dataset": "series.json", "compositor": )" + compositor + "}";
+}
+
+// `code` as a JSON string.
+std::string quotedCode(const std::string& code) { return nlohmann::json(code).dump(); }
+
+std::string inlineCompositor(const std::string& code, const std::string& reads = "index-tstf") {
+    return sceneWith(R"({"glsl": )" + quotedCode(code) + R"(, "reads": ")" + reads + "\"}");
+}
+
+std::string parseError(const std::string& json) {
+    try {
+        parseScene(json, kOrigin);
+    } catch (const InputError& error) {
+        return error.what();
+    }
+    ADD_FAILURE() << "no InputError for " << json;
+    return {};
+}
+
+Scene roundTrip(const Scene& scene) {
+    return parseScene(sceneToJson(scene, kOrigin.parent_path()), kOrigin);
+}
+
+TEST(CompositorScene, EveryNameReadsBackAndRoundTrips) {
+    for (const TemporalCompositorInfo& info : temporalCompositors()) {
+        if (info.compositor == TemporalCompositor::Custom) continue;
+        const Scene scene = parseScene(sceneWith("\"" + std::string(info.name) + "\""), kOrigin);
+        EXPECT_EQ(scene.compositor, info.compositor) << info.name;
+        EXPECT_EQ(roundTrip(scene), scene) << info.name;
+    }
+}
+
+TEST(CompositorScene, EveryCompositorButTheScenesOwnIsNamedForUsers) {
+    const std::vector<std::string> names = temporalCompositorNames();
+    EXPECT_EQ(names.size() + 1, temporalCompositors().size());
+    for (const char* name : {"temporal-mip", "temporal-average", "temporal-max-change", "temporal-min",
+                             "temporal-std-dev", "time-of-max", "first-arrival", "last-above", "linear-trend",
+                             "chronovolume", "difference"})
+        EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
+    EXPECT_EQ(std::find(names.begin(), names.end(), "custom"), names.end());
+}
+
+TEST(CompositorScene, ThresholdAndStepsAreReadAndWrittenBack) {
+    const Scene arrival = parseScene(sceneWith(R"({"name": "first-arrival", "threshold": 0.4})"), kOrigin);
+    EXPECT_EQ(arrival.compositor, TemporalCompositor::FirstArrival);
+    EXPECT_EQ(arrival.compositorOptions.threshold, 0.4);
+    EXPECT_EQ(roundTrip(arrival), arrival);
+    EXPECT_NE(sceneToJson(arrival, kOrigin.parent_path()).find("\"threshold\": 0.4"), std::string::npos);
+
+    const Scene difference = parseScene(sceneWith(R"({"name": "difference", "steps": [3, 1]})"), kOrigin);
+    EXPECT_EQ(difference.compositorOptions.differenceFrom, 3);
+    EXPECT_EQ(difference.compositorOptions.differenceTo, 1);
+    EXPECT_EQ(difference.compositorOptions.differenceSteps(5), glm::ivec2(3, 1));
+    EXPECT_EQ(roundTrip(difference), difference);
+
+    // Without steps: from the first time-step to the last, and written back without them.
+    const Scene whole = parseScene(sceneWith(R"({"name": "difference"})"), kOrigin);
+    EXPECT_EQ(whole.compositorOptions.differenceSteps(7), glm::ivec2(0, 6));
+    EXPECT_EQ(sceneToJson(whole, kOrigin.parent_path()).find("steps"), std::string::npos);
+    // A name in an object without options is a name.
+    EXPECT_EQ(parseScene(sceneWith(R"({"name": "temporal-min"})"), kOrigin).compositor, TemporalCompositor::Minimum);
+}
+
+TEST(CompositorScene, ASignedGradientRangeReadsAndRoundTrips) {
+    const Scene scene = parseScene(
+        R"({"dataset": "series.json", "compositor": "linear-trend", "tstf": {"gradient": {"range": [-0.2, 0.2]}}})",
+        kOrigin);
+    EXPECT_EQ(scene.gradientTstf.rangeLow, -0.2);
+    EXPECT_EQ(scene.gradientTstf.rangeHigh, 0.2);
+    EXPECT_EQ(roundTrip(scene), scene);
+}
+
+TEST(CompositorScene, DifferenceStepsBeyondTheSeriesNameTheField) {
+    const Scene scene = parseScene(sceneWith(R"({"name": "difference", "steps": [0, 9]})"), kOrigin);
+    try {
+        scene.compositorOptions.differenceSteps(4, kOrigin);
+        FAIL() << "steps beyond the series";
+    } catch (const InputError& error) {
+        const std::string message = error.what();
+        EXPECT_NE(message.find("compositor.steps[1]"), std::string::npos) << message;
+        EXPECT_NE(message.find("0 to 3"), std::string::npos) << message;
+    }
+}
+
+TEST(CompositorScene, BadCompositorObjectsNameTheField) {
+    const std::pair<std::string, std::string> cases[] = {
+        {sceneWith(R"({"name": "temporal-mip", "threshold": 0.5})"), "compositor.threshold: temporal-mip takes no"},
+        {sceneWith(R"({"name": "first-arrival", "threshold": 1.5})"), "compositor.threshold"},
+        {sceneWith(R"({"name": "linear-trend", "steps": [0, 1]})"), "compositor.steps: linear-trend takes no steps"},
+        {sceneWith(R"({"name": "difference", "steps": [0, 1.5]})"), "compositor.steps[1]: must be a whole"},
+        {sceneWith(R"({"name": "difference", "steps": [0]})"), "compositor.steps"},
+        {sceneWith(R"({"name": "no-such-one"})"), "compositor.name"},
+        {sceneWith(R"({"threshold": 0.5})"), "compositor"},
+        {sceneWith(R"({"name": "temporal-mip", "colour": 1})"), "compositor"},
+        {sceneWith(R"({"name": "temporal-mip", "reads": "index-tstf"})"), "compositor.reads: only a compositor"},
+        {sceneWith(R"({"name": "temporal-mip", "glsl": "return 0.0;", "reads": "index-tstf"})"),
+         "compositor.name: a compositor with its own code has no name"},
+        {sceneWith(R"({"glsl": "return 0.0;", "file": "a.glsl", "reads": "index-tstf"})"), "not both"},
+        {sceneWith(R"({"glsl": "return 0.0;"})"), "compositor.reads: missing"},
+        {sceneWith(R"({"glsl": "return 0.0;", "reads": "composited"})"), "compositor.reads"},
+        {sceneWith(R"({"glsl": "  \n", "reads": "index-tstf"})"), "compositor.glsl: the compositor's code is empty"},
+        {sceneWith(R"({"file": "nowhere.glsl", "reads": "index-tstf"})"), "compositor.file: no such file"},
+        {sceneWith("42"), "compositor: expected a name or an object"},
+    };
+    for (const auto& [json, expected] : cases) {
+        const std::string message = parseError(json);
+        EXPECT_NE(message.find(kOrigin.string()), std::string::npos) << message;
+        EXPECT_NE(message.find(expected), std::string::npos) << "expected \"" << expected << "\" in: " << message;
+    }
+}
+
+TEST(CompositorScene, InlineCodeAndWhatReadsItRoundTrip) {
+    const std::string code = "float best = -1.0;\nfor (int i = 0; i < count; ++i) best = max(best, density[i]);\n"
+                             "return best;\n";
+    const Scene scene = parseScene(inlineCompositor(code, "gradient-tstf"), kOrigin);
+    EXPECT_EQ(scene.compositor, TemporalCompositor::Custom);
+    ASSERT_TRUE(scene.compositorOptions.custom.has_value());
+    EXPECT_EQ(scene.compositorOptions.custom->glsl, code);
+    EXPECT_FALSE(scene.compositorOptions.custom->ownFile);
+    EXPECT_EQ(compositorReads(scene), CompositorReads::GradientTstf);
+    EXPECT_EQ(roundTrip(scene), scene);
+}
+
+TEST(CompositorScene, CodeInItsOwnFileStaysInThatFile) {
+    const auto folder = freshFolder("file");
+    std::filesystem::create_directories(folder / "compositors");
+    const std::string code = "return 0.0;\n";
+    std::ofstream(folder / "compositors/peak.glsl") << code;
+    const auto sceneFile = folder / "scene.json";
+    std::ofstream(sceneFile) << sceneWith(R"({"file": "compositors/peak.glsl", "reads": "index-tstf"})");
+    const Scene scene = loadScene(sceneFile);
+    ASSERT_TRUE(scene.compositorOptions.custom.has_value());
+    EXPECT_EQ(scene.compositorOptions.custom->glsl, code);
+    EXPECT_TRUE(scene.compositorOptions.custom->ownFile);
+    EXPECT_EQ(compositorReads(scene), CompositorReads::IndexTstf);
+    // Saved elsewhere, the scene names the same file, relative to its new folder.
+    std::filesystem::create_directories(folder / "elsewhere");
+    saveScene(scene, folder / "elsewhere/copy.json");
+    std::ifstream saved(folder / "elsewhere/copy.json");
+    const std::string text((std::istreambuf_iterator<char>(saved)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("\"file\": \"../compositors/peak.glsl\""), std::string::npos) << text;
+    EXPECT_EQ(text.find("\"glsl\""), std::string::npos) << text;
+    const Scene reloaded = loadScene(folder / "elsewhere/copy.json");
+    EXPECT_EQ(reloaded.compositorOptions.custom, scene.compositorOptions.custom);
+}
+
+TEST(CompositorScene, WhatReadsEachCompositor) {
+    EXPECT_EQ(compositorInfo(TemporalCompositor::MaxIntensityProjection).reads, CompositorReads::IndexTstf);
+    EXPECT_EQ(compositorInfo(TemporalCompositor::TimeOfMaximum).reads, CompositorReads::IndexTstf);
+    EXPECT_EQ(compositorInfo(TemporalCompositor::FirstArrival).reads, CompositorReads::IndexTstf);
+    EXPECT_EQ(compositorInfo(TemporalCompositor::StandardDeviation).reads, CompositorReads::GradientTstf);
+    EXPECT_EQ(compositorInfo(TemporalCompositor::LinearTrend).reads, CompositorReads::GradientTstf);
+    EXPECT_EQ(compositorInfo(TemporalCompositor::Difference).reads, CompositorReads::GradientTstf);
+    EXPECT_EQ(compositorInfo(TemporalCompositor::Average).reads, CompositorReads::Composited);
+    EXPECT_EQ(compositorInfo(TemporalCompositor::Chronovolume).reads, CompositorReads::Composited);
+    for (const TemporalCompositorInfo& info : temporalCompositors())
+        EXPECT_EQ(info.compositor == TemporalCompositor::Custom, std::string(info.shaderModule).empty()) << info.name;
+}
+
+}  // namespace
+}  // namespace tstyles

@@ -1,0 +1,217 @@
+// The temporal compositors of issue 16 on constant boxes, against closed-form values read back
+// through a known transfer function: a linear gradient TSTF ramp turns a characteristic into a
+// colour that says its value, an index TSTF with one colour per time-step says which time-step won.
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "render_test_support.h"
+
+namespace tstyles::testing {
+namespace {
+
+constexpr int kSize = 64;
+constexpr double kViewHeight = 2.0;
+const glm::dvec2 kCentre(0.35, 0.35);
+// As in analytic_render_test.cpp: densities through 16-bit textures, transfer functions through
+// 1024-entry tables, float arithmetic along the ray.
+constexpr float kTolerance = 2e-3f;
+
+const glm::vec4 kRed{1, 0, 0, 1};
+const glm::vec4 kGreen{0, 1, 0, 1};
+const glm::vec4 kBlue{0, 0, 1, 1};
+const glm::vec4 kTransparent{0, 0, 0, 0};
+
+void expectPixel(const Image& image, glm::dvec2 world, glm::vec4 expected, const std::string& what) {
+    const glm::ivec2 pixel = pixelOf(world, kCentre, kViewHeight, kSize);
+    const glm::vec4 actual = image.at(pixel.x, pixel.y);
+    for (int c = 0; c < 4; ++c)
+        EXPECT_NEAR(actual[c], expected[c], kTolerance)
+            << what << " at pixel (" << pixel.x << ", " << pixel.y << ") channel " << c;
+}
+
+// Boxes over one another at the origin, one per time-step, with these densities.
+Series stackedBoxes(const std::vector<float>& densities) {
+    std::vector<BoxSpec> boxes;
+    for (float density : densities) boxes.push_back(constantBox({0, 0, 0}, density));
+    return makeSeries(boxes);
+}
+
+// Every sample opaque in the STF, the final image the TSTF alone: a pixel is the TSTF's colour.
+Scene tstfScene(TemporalCompositor compositor) {
+    Scene scene = orthographicSceneLookingDownZ(kCentre, kViewHeight, kSize);
+    scene.stf.curve = constantFunction({1, 1, 1}, 1.0);
+    scene.compositor = compositor;
+    scene.finalMode = FinalMode::Tstf;
+    return scene;
+}
+
+// Index TSTF: time-step 0 red, 1 green, 2 blue, all opaque.
+void colourEachStep(Scene& scene) {
+    scene.indexTstf.curve.opacity = {{0.0, 1.0}};
+    scene.indexTstf.curve.color = {{0.0, {1, 0, 0}}, {1.0, {0, 1, 0}}, {2.0, {0, 0, 1}}};
+}
+
+// Gradient TSTF over [low, high]: a linear ramp from green (low) to orange (high), opaque, so that
+// the value v shows as (s, 1 - s / 2, 0) with s = (v - low) / (high - low).
+void rampOver(Scene& scene, double low, double high) {
+    scene.gradientTstf.curve.opacity = {{0.0, 1.0}};
+    scene.gradientTstf.curve.color = {{0.0, {0, 1, 0}}, {1.0, {1, 0.5, 0}}};
+    scene.gradientTstf.rangeLow = low;
+    scene.gradientTstf.rangeHigh = high;
+}
+
+glm::vec4 rampColour(double value, double low, double high) {
+    const double s = (value - low) / (high - low);
+    return {float(s), float(1.0 - 0.5 * s), 0.0f, 1.0f};
+}
+
+TEST(CompositorRender, TemporalMinimumShowsTheLowestDensitysTimeStep) {
+    const Series series = stackedBoxes({0.5f, 0.2f, 0.7f});
+    Scene scene = tstfScene(TemporalCompositor::Minimum);
+    colourEachStep(scene);
+    expectPixel(renderSeries(series, scene), kCentre, kGreen, "time-step 1 is lowest");
+    // Where the lowest density is transparent in the STF, nothing shows: what persists through
+    // the whole series, not the most visible time-step.
+    scene.stf.curve.opacity = {{0.0, 0.0}, {0.29, 0.0}, {0.3, 1.0}};
+    expectPixel(renderSeries(series, scene), kCentre, kTransparent, "the lowest is below the STF");
+}
+
+TEST(CompositorRender, TimeOfMaximumShowsTheHighestDensitysTimeStepWhateverItsOpacity) {
+    // The STF makes dense samples fainter, so the most opaque time-step (temporal MIP's) is the
+    // least dense one: time-of-max still picks the densest.
+    const Series series = stackedBoxes({0.3f, 0.8f, 0.5f});
+    Scene scene = tstfScene(TemporalCompositor::TimeOfMaximum);
+    scene.stf.curve.opacity = {{0.0, 1.0}, {1.0, 0.1}};
+    colourEachStep(scene);
+    expectPixel(renderSeries(series, scene), kCentre, kGreen, "time-step 1 is densest");
+    scene.compositor = TemporalCompositor::MaxIntensityProjection;
+    expectPixel(renderSeries(series, scene), kCentre, kRed, "temporal MIP: time-step 0 is most opaque");
+    // A tie goes to the earlier time-step.
+    scene.compositor = TemporalCompositor::TimeOfMaximum;
+    expectPixel(renderSeries(stackedBoxes({0.8f, 0.3f, 0.8f}), scene), kCentre, kRed, "tie: time-step 0");
+}
+
+TEST(CompositorRender, FirstArrivalShowsTheFirstTimeStepAtTheThreshold) {
+    const Series series = stackedBoxes({0.2f, 0.6f, 0.9f});
+    Scene scene = tstfScene(TemporalCompositor::FirstArrival);
+    colourEachStep(scene);
+    scene.compositorOptions.threshold = 0.5;
+    expectPixel(renderSeries(series, scene), kCentre, kGreen, "0.6 >= 0.5 first at time-step 1");
+    scene.compositorOptions.threshold = 0.9;  // "at or above"
+    expectPixel(renderSeries(series, scene), kCentre, kBlue, "0.9 reaches 0.9 at time-step 2");
+    scene.compositorOptions.threshold = 0.1;
+    expectPixel(renderSeries(series, scene), kCentre, kRed, "every time-step reaches 0.1");
+    scene.compositorOptions.threshold = 0.95;
+    expectPixel(renderSeries(series, scene), kCentre, kTransparent, "none reaches 0.95");
+}
+
+TEST(CompositorRender, LastAboveShowsTheLastTimeStepAtTheThreshold) {
+    const Series series = stackedBoxes({0.9f, 0.6f, 0.2f});
+    Scene scene = tstfScene(TemporalCompositor::LastAbove);
+    colourEachStep(scene);
+    scene.compositorOptions.threshold = 0.5;
+    expectPixel(renderSeries(series, scene), kCentre, kGreen, "0.6 >= 0.5 last at time-step 1");
+    scene.compositorOptions.threshold = 0.1;
+    expectPixel(renderSeries(series, scene), kCentre, kBlue, "every time-step reaches 0.1");
+    scene.compositorOptions.threshold = 0.95;
+    expectPixel(renderSeries(series, scene), kCentre, kTransparent, "none reaches 0.95");
+}
+
+TEST(CompositorRender, StandardDeviationOfKnownDensities) {
+    const std::vector<float> densities{0.2f, 0.4f, 0.9f};
+    const Series series = stackedBoxes(densities);
+    double mean = 0.0;
+    for (float d : densities) mean += d / 3.0;
+    double variance = 0.0;
+    for (float d : densities) variance += (d - mean) * (d - mean) / 3.0;  // population: divided by n
+    const double deviation = std::sqrt(variance);                         // 0.2944
+    Scene scene = tstfScene(TemporalCompositor::StandardDeviation);
+    rampOver(scene, 0.0, 0.5);
+    expectPixel(renderSeries(series, scene), kCentre, rampColour(deviation, 0.0, 0.5), "standard deviation");
+}
+
+TEST(CompositorRender, LinearTrendIsTheSlopeOverTheTimeStamps) {
+    Scene scene = tstfScene(TemporalCompositor::LinearTrend);
+    // Densities 0.2, 0.4, 0.6 at times 0, 1, 2: 0.2 per unit time, the middle of [0, 0.4].
+    rampOver(scene, 0.0, 0.4);
+    expectPixel(renderSeries(stackedBoxes({0.2f, 0.4f, 0.6f}), scene), kCentre, {0.5f, 0.75f, 0.0f, 1.0f},
+                "slope 0.2");
+    // Falling: -0.2 per unit time on the signed range [-0.4, 0.4].
+    rampOver(scene, -0.4, 0.4);
+    expectPixel(renderSeries(stackedBoxes({0.6f, 0.4f, 0.2f}), scene), kCentre, rampColour(-0.2, -0.4, 0.4),
+                "slope -0.2");
+    // Uneven stamps far from 0: the least-squares slope over the stamps, not over the indices.
+    Series uneven = stackedBoxes({0.2f, 0.4f, 0.6f});
+    const double times[3] = {1000.0, 1002.0, 1006.0};
+    for (int i = 0; i < 3; ++i) uneven.steps[std::size_t(i)].time = times[i];
+    const double meanTime = (times[0] + times[1] + times[2]) / 3.0;
+    const double densities[3] = {0.2, 0.4, 0.6};
+    double covariance = 0.0, timeVariance = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        covariance += (times[i] - meanTime) * (densities[i] - 0.4);
+        timeVariance += (times[i] - meanTime) * (times[i] - meanTime);
+    }
+    expectPixel(renderSeries(uneven, scene), kCentre, rampColour(covariance / timeVariance, -0.4, 0.4),
+                "slope over uneven stamps (0.0643)");
+}
+
+TEST(CompositorRender, DifferenceOfTwoChosenTimeStepsIsSigned) {
+    // Time-steps 0 and 1 over the origin, time-step 2 shifted by half a box: it overlaps them in
+    // x in [0.35, 0.7].
+    const Series series =
+        makeSeries({constantBox({0, 0, 0}, 0.7f), constantBox({0, 0, 0}, 0.4f), constantBox({0.35, 0, 0}, 0.2f)});
+    Scene scene = tstfScene(TemporalCompositor::Difference);
+    rampOver(scene, -1.0, 1.0);
+    const glm::dvec2 overlap(0.525, 0.35);
+    const glm::dvec2 withoutStep2(0.15, 0.35);
+    // No steps given: from the first time-step to the last, density(2) - density(0) = -0.5.
+    const Image firstToLast = renderSeries(series, scene);
+    expectPixel(firstToLast, overlap, rampColour(-0.5, -1.0, 1.0), "0.2 - 0.7");
+    expectPixel(firstToLast, withoutStep2, kTransparent, "time-step 2 has no data there");
+    scene.compositorOptions.differenceFrom = 2;
+    scene.compositorOptions.differenceTo = 1;
+    const Image backwards = renderSeries(series, scene);
+    expectPixel(backwards, overlap, rampColour(0.2, -1.0, 1.0), "0.4 - 0.2");
+    scene.compositorOptions.differenceFrom = 0;
+    scene.compositorOptions.differenceTo = 1;
+    expectPixel(renderSeries(series, scene), withoutStep2, rampColour(-0.3, -1.0, 1.0), "0.4 - 0.7");
+}
+
+// Chronovolume: per sample, the time-steps' styled colours (STF times index TSTF) composited front
+// to back in time order; the sample then attenuates along the ray like any other.
+glm::vec4 chronovolumePixel(const std::vector<glm::dvec4>& styledInTimeOrder, double thickness) {
+    glm::dvec4 accumulated(0.0);  // premultiplied
+    for (const glm::dvec4& styled : styledInTimeOrder)
+        accumulated += (1.0 - accumulated.a) * glm::dvec4(glm::dvec3(styled) * styled.a, styled.a);
+    const glm::dvec3 sampleColour = glm::dvec3(accumulated) / accumulated.a;
+    const double alpha = slabOpacity(accumulated.a, thickness);
+    return glm::vec4(glm::vec3(sampleColour * alpha), float(alpha));
+}
+
+TEST(CompositorRender, ChronovolumeCompositesTheTimeStepsInTimeOrder) {
+    // Time-step 0 (density 0.5) red, time-step 1 (density 1) blue; the STF gives opacity 0.2 x
+    // density: 0.1 and 0.2 per reference length.
+    const Series series = stackedBoxes({0.5f, 1.0f});
+    Scene scene = orthographicSceneLookingDownZ(kCentre, kViewHeight, kSize);
+    scene.stf.curve.opacity = {{0.0, 0.0}, {1.0, 0.2}};
+    scene.stf.curve.color = {{0.0, {1, 1, 1}}};
+    scene.indexTstf.curve.opacity = {{0.0, 1.0}};
+    scene.indexTstf.curve.color = {{0.0, {1, 0, 0}}, {1.0, {0, 0, 1}}};
+    scene.finalMode = FinalMode::Modulate;
+    scene.compositor = TemporalCompositor::Chronovolume;
+    const glm::dvec4 red(1, 0, 0, 0.1);
+    const glm::dvec4 blue(0, 0, 1, 0.2);
+    expectPixel(renderSeries(series, scene), kCentre, chronovolumePixel({red, blue}, kConstantBoxWidth),
+                "red in front of blue");
+    // The order is time's, not the boxes': with the densities swapped, blue (time-step 1) is
+    // still composited behind the now fainter red.
+    const glm::dvec4 fainterBlue(0, 0, 1, 0.1);
+    const glm::dvec4 strongerRed(1, 0, 0, 0.2);
+    expectPixel(renderSeries(stackedBoxes({1.0f, 0.5f}), scene), kCentre,
+                chronovolumePixel({strongerRed, fainterBlue}, kConstantBoxWidth), "stronger red in front");
+}
+
+}  // namespace
+}  // namespace tstyles::testing
