@@ -57,7 +57,7 @@ void writeImage(const Image& image, const std::filesystem::path& file) {
     });
 }
 
-Image readImage(const std::filesystem::path& file) {
+Image readImage(const std::filesystem::path& file, std::uint64_t maxBytes) {
     // A device (/dev/zero) or FIFO would keep OpenImageIO reading forever.
     requireRegularFile(file, "image file");
     // libpng prints its complaints itself; they become part of our one line instead.
@@ -72,7 +72,7 @@ Image readImage(const std::filesystem::path& file) {
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) throwInputError(file, "", "the image is empty");
     // The header's size is checked before the pixels get memory: the file's float copy plus ours.
     const double pixelCount = double(spec.width) * double(spec.height);
-    requireMemory(file, "", pixelCount * double(sizeof(float)) * double(spec.nchannels + 4), defaultMemoryCap(),
+    requireMemory(file, "", pixelCount * double(sizeof(float)) * double(spec.nchannels + 4), maxBytes,
                   "the pixels of its " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
                       " image header");
     Image image(spec.width, spec.height);
