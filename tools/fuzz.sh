@@ -43,7 +43,9 @@ for target in "${targets[@]}"; do
     # 64 MiB conversion buffer whatever the image, so the single-allocation limit sits above it).
     # -close_fd_mask=2: the libraries' chatter is dropped, and libFuzzer and the sanitizers report
     # on a copy of stderr, which StderrCapture cannot swallow.
-    if TMPDIR="$scratch" ASAN_OPTIONS=detect_leaks=1 nice "$build/tests/fuzz/fuzz_$target" \
+    # Leaks are findings, but for the library leaks tools/sanitizers/lsan.supp explains.
+    if TMPDIR="$scratch" ASAN_OPTIONS=detect_leaks=1 \
+           LSAN_OPTIONS="suppressions=$root/tools/sanitizers/lsan.supp:print_suppressions=0" nice "$build/tests/fuzz/fuzz_$target" \
            "${dictionary[@]}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=1024 -malloc_limit_mb=256 -close_fd_mask=2 \
            -max_len=16384 -print_final_stats=1 -artifact_prefix="$findings/" \
            "$corpus" "$root/tests/fuzz/corpus/$target" >"$log" 2>&1; then
