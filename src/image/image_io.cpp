@@ -11,6 +11,7 @@
 #include "tstyles/core/errors.h"
 #include "tstyles/core/input_limits.h"
 #include "tstyles/core/stderr_capture.h"
+#include "png_chunks.h"
 
 namespace tstyles {
 
@@ -59,7 +60,8 @@ void writeImage(const Image& image, const std::filesystem::path& file) {
 
 Image readImage(const std::filesystem::path& file, std::uint64_t maxBytes) {
     // A device (/dev/zero) or FIFO would keep OpenImageIO reading forever.
-    requireRegularFile(file, "image file");
+    const std::uint64_t fileSize = regularFileSize(file, "image file");
+    requirePngChunksInsideFile(file, fileSize);
     // libpng prints its complaints itself; they become part of our one line instead.
     const StderrCapture libraryMessages;
     const auto withLibraryText = [&](std::string message) {
