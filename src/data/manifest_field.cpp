@@ -35,7 +35,9 @@ std::string ManifestField::childPath(const std::string& key) const {
 
 void ManifestField::allowOnlyKeys(std::initializer_list<const char*> keys) const {
     expectType(value_->is_object(), "an object");
-    for (const auto& [key, ignored] : value_->items()) {
+    for (const auto& item : value_->items()) {
+        // Not a structured binding: clang 14 (the fuzz build) cannot capture one in a lambda.
+        const std::string& key = item.key();
         const bool known =
             std::any_of(keys.begin(), keys.end(), [&key](const char* allowed) { return key == allowed; });
         if (known) continue;

@@ -11,6 +11,7 @@
 #include "tstyles/core/errors.h"
 #include "tstyles/core/input_limits.h"
 #include "tstyles/core/stderr_capture.h"
+#include "png_chunks.h"
 
 namespace tstyles {
 
@@ -57,9 +58,10 @@ void writeImage(const Image& image, const std::filesystem::path& file) {
     });
 }
 
-Image readImage(const std::filesystem::path& file) {
+Image readImage(const std::filesystem::path& file, std::uint64_t maxBytes) {
     // A device (/dev/zero) or FIFO would keep OpenImageIO reading forever.
-    requireRegularFile(file, "image file");
+    const std::uint64_t fileSize = regularFileSize(file, "image file");
+    requirePngChunksInsideFile(file, fileSize);
     // libpng prints its complaints itself; they become part of our one line instead.
     const StderrCapture libraryMessages;
     const auto withLibraryText = [&](std::string message) {
@@ -72,7 +74,7 @@ Image readImage(const std::filesystem::path& file) {
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) throwInputError(file, "", "the image is empty");
     // The header's size is checked before the pixels get memory: the file's float copy plus ours.
     const double pixelCount = double(spec.width) * double(spec.height);
-    requireMemory(file, "", pixelCount * double(sizeof(float)) * double(spec.nchannels + 4), defaultMemoryCap(),
+    requireMemory(file, "", pixelCount * double(sizeof(float)) * double(spec.nchannels + 4), maxBytes,
                   "the pixels of its " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
                       " image header");
     Image image(spec.width, spec.height);

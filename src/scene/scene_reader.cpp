@@ -18,7 +18,6 @@ using nlohmann::json;
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr Interval unitInterval{0.0, 1.0};
-constexpr Interval nonNegative{0.0, infinity};
 constexpr Interval positive{0.0, infinity, false};
 
 // nlohmann's message without its exception-id prefix ("[json.exception.parse_error.101] ").

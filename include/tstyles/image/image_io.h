@@ -1,8 +1,10 @@
 // Image files through OpenImageIO: the format follows the extension (PNG, TIFF, EXR, ...).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 
+#include "tstyles/core/input_limits.h"
 #include "tstyles/image/image.h"
 
 namespace tstyles {
@@ -17,8 +19,9 @@ void writeImage(const Image& image, const std::filesystem::path& file);
 void requireWritableImagePath(const std::filesystem::path& file);
 
 // Reads any image OpenImageIO knows as RGBA floats with associated alpha (images without alpha
-// get alpha 1). InputError naming the file if it cannot be read.
-Image readImage(const std::filesystem::path& file);
+// get alpha 1). InputError naming the file if it cannot be read, or if the pixels its header
+// announces would take more than `maxBytes`.
+Image readImage(const std::filesystem::path& file, std::uint64_t maxBytes = defaultMemoryCap());
 
 // The image resampled to `width` x `height` (OpenImageIO's filtered resize).
 Image resizeImage(const Image& image, int width, int height);

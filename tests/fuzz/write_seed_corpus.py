@@ -1,0 +1,120 @@
+#!/usr/bin/env python3
+"""Writes the seed corpus of tests/fuzz/corpus/ (small, valid or nearly valid inputs of each parser).
+
+Usage: write_seed_corpus.py SAMPLES DATA
+  SAMPLES: a folder written by build/tests/write_reader_samples (NetCDF, NRRD, NIfTI, Isabel, PNG)
+  DATA:    the bundled data folder after a build (data/: scenes and generated styles)
+Seeds are named seed-*; inputs that found a bug are named after the bug (crash-*, oom-*, ...) and
+are kept by hand. Rerunning replaces the seeds only.
+"""
+import gzip
+import json
+import pathlib
+import shutil
+import struct
+import subprocess
+import sys
+
+CORPUS = pathlib.Path(__file__).resolve().parent / "corpus"
+
+
+def put(target, name, data):
+    folder = CORPUS / target
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / ("seed-" + name)).write_bytes(data if isinstance(data, bytes) else data.encode())
+
+
+def step(time, grid, values="values.raw", mask=None, **extra):
+    entry = {"time": time, "grid": grid, "values": {"file": values, "type": "float32"}}
+    if mask:
+        entry["mask"] = {"file": mask}
+    entry.update(extra)
+    return entry
+
+
+def manifest(steps, **extra):
+    document = {"format": "tstyles-series", "version": 1, "name": "fuzz", "value_range": [0.0, 1.0],
+                "time_steps": steps}
+    document.update(extra)
+    return json.dumps(document, indent=1)
+
+
+def manifest_seeds():
+    # fuzz_manifest.cpp puts values.raw (4x4x4 float32), mask.raw (4x4x4 bytes), values8.raw (2x2x2
+    # float32) and coords.f32 (2x2x2 nodes) beside the manifest.
+    box = {"type": "rectilinear", "dims": [4, 4, 4], "spacing": [0.5, 0.5, 1.0]}
+    placement = {"origin": [0, 0, 0], "rotation": {"axis": [0, 0, 1], "angle_deg": 30}}
+    put("manifest", "rectilinear", manifest([step(0.0, box), step(1.0, box, placement=placement)]))
+    put("manifest", "mask-missing", manifest([step(0.0, box, mask="mask.raw")], missing_value=0.0))
+    uneven = {"type": "rectilinear", "dims": [4, 4, 4], "spacing": [0.5, 0.5, None],
+              "positions": {"z": [0.0, 0.1, 0.3, 0.7]}}
+    put("manifest", "uneven", manifest([step(0.0, uneven)], time_units="hours since 2000-01-01"))
+    beam = {"type": "beam", "dims": [4, 4, 4], "azimuth_deg": [-30, 30], "elevation_deg": [-20, 20],
+            "range": [2, 120]}
+    put("manifest", "beam", manifest([step(0.0, beam, mask="mask.raw")]))
+    structured = {"type": "structured", "dims": [2, 2, 2], "coordinates": {"file": "coords.f32"}}
+    put("manifest", "structured", manifest([step(0.0, structured, values="values8.raw")]))
+
+
+def scene_seeds(data):
+    for name in ["figure1-styled-focus-step3", "figure4-max-density-change", "figure6-centre-index-tstf",
+                 "warped-box-styled", "figure5-focus-step5"]:
+        put("scene", name, (data / "scenes" / (name + ".json")).read_bytes())
+
+
+def plot3d_grid(little=True):
+    order = "<" if little else ">"
+    dims = (2, 2, 2)
+    grid = struct.pack(order + "3i", *dims)
+    nodes = [(i, j, k) for k in range(2) for j in range(2) for i in range(2)]
+    for axis in range(3):
+        grid += b"".join(struct.pack(order + "f", float(node[axis])) for node in nodes)
+    solution = struct.pack(order + "3i", *dims) + struct.pack(order + "4f", 0.5, 0.0, 1e6, 0.0)
+    solution += b"".join(struct.pack(order + "f", value) for value in [1.0 + n / 10 for n in range(8)] + [0.1] * 24 + [10.0] * 8)
+    function = struct.pack(order + "4i", *dims, 2) + b"".join(struct.pack(order + "f", v) for v in range(16))
+    return grid, solution, function
+
+
+def plot3d_seeds():
+    for little in (True, False):
+        grid, solution, function = plot3d_grid(little)
+        prefix = struct.pack("<H", len(grid))
+        put("plot3d", ("little" if little else "big") + "-q", prefix + b"\x00" + grid + solution)
+        put("plot3d", ("little" if little else "big") + "-function", prefix + b"\x01" + grid + function)
+
+
+def png_seed(data):
+    tiny = CORPUS / "style_image" / "seed-tiny.png"
+    tiny.parent.mkdir(parents=True, exist_ok=True)
+    subprocess.run(["oiiotool", "--pattern", "checker:width=2:height=2", "8x8", "4", "-d", "uint8", "-o", str(tiny)],
+                   check=True)
+    subprocess.run(["oiiotool", "--pattern", "constant:color=0.5", "4x4", "1", "-d", "uint8", "-o",
+                    str(CORPUS / "style_image" / "seed-grey.png")], check=True)
+
+
+def main():
+    samples, data = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
+    for target in ["manifest", "scene", "nrrd", "netcdf", "netcdf_header", "nifti", "isabel", "plot3d", "style_image"]:
+        for seed in (CORPUS / target).glob("seed-*"):
+            seed.unlink()
+    manifest_seeds()
+    scene_seeds(data)
+    for name in ["classic.nc", "offset64.nc", "nan.nc", "notime.nc"]:
+        for target in ["netcdf", "netcdf_header"]:
+            put(target, name, (samples / name).read_bytes())
+    volume = (samples / "volume.nrrd").read_bytes()
+    put("nrrd", "attached.nrrd", volume)
+    put("nrrd", "gzip.nrrd", volume.replace(b"encoding: raw", b"encoding: gzip").split(b"\n\n")[0] + b"\n\n" +
+        gzip.compress(volume.split(b"\n\n", 1)[1]))
+    put("nrrd", "detached.nhdr", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 8 8 4\nencoding: raw\n"
+                                 "spacings: 1 1 2\ndata file: volume.raw\n")
+    put("nifti", "bold.nii", gzip.decompress((samples / "bold.nii.gz").read_bytes()))
+    put("isabel", "QCLOUDf01.bin", (samples / "QCLOUDf01.bin").read_bytes())
+    put("isabel", "QCLOUDf01.bin.gz", gzip.compress((samples / "QCLOUDf01.bin").read_bytes()))
+    plot3d_seeds()
+    png_seed(data)
+    put("style_image", "huge-header.png", (samples / "huge.png").read_bytes())
+
+
+if __name__ == "__main__":
+    main()

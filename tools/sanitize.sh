@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# The sanitizer stage of CI, after tools/test.sh (.ci/run): builds everything with
+# AddressSanitizer and UndefinedBehaviorSanitizer (GCC, TSTYLES_SANITIZE=ON) into build-asan/, runs
+# the tests there, then each fuzz target for FUZZ_SECONDS (default 20; tools/fuzz.sh, clang).
+# docs/testing.md, "Sanitizers" says what runs, what is left out and why, and what it costs.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build="$root/build-asan"
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+
+start=$SECONDS
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTSTYLES_SANITIZE=ON "${launcher[@]}" >/dev/null
+cmake --build "$build" -j "$(nproc)"
+echo "sanitize: build took $((SECONDS - start)) s"
+
+# Any report fails the test that caused it: UBSan stops (-fno-sanitize-recover), ASan and LSan exit
+# non-zero. LSan ignores only the Mesa driver's memory at exit (tools/sanitizers/lsan.supp).
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=0
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+export LSAN_OPTIONS="suppressions=$root/tools/sanitizers/lsan.supp:print_suppressions=0"
+start=$SECONDS
+# The Python module is not built here (CMakeLists.txt says why); TSTYLES_SANITIZE_EXCLUDE, a ctest
+# regular expression, leaves out more.
+cd "$build"
+ctest --output-on-failure -j "$(nproc)" ${TSTYLES_SANITIZE_EXCLUDE:+-E "$TSTYLES_SANITIZE_EXCLUDE"}
+echo "sanitize: tests took $((SECONDS - start)) s"
+
+start=$SECONDS
+"$root/tools/fuzz.sh" all "${FUZZ_SECONDS:-20}"
+echo "sanitize: fuzzing took $((SECONDS - start)) s"
