@@ -72,14 +72,12 @@ const Program& Raycaster::programFor(const RaycastVariant& variant) {
     auto found = programs_.find(variant);
     if (found != programs_.end()) return found->second;
     const std::vector<ShaderStage> stages{{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "raycast.frag"}};
-    if (variant.compositor != TemporalCompositor::Custom)
-        return programs_.emplace(variant, Program::build(shaders_, stages, variant.defines(), variant.modules()))
-            .first->second;
-    // The scene's own code: the compiler's complaint is about the user's input, and names its lines.
     try {
         return programs_.emplace(variant, Program::build(shaders_, stages, variant.defines(), variant.modules()))
             .first->second;
     } catch (const std::runtime_error& error) {
+        // With the scene's own code the compiler's complaint is about the user's input, and names its lines.
+        if (variant.compositor != TemporalCompositor::Custom) throw;
         throw InputError(variant.customCodeName + ": " + firstErrorIn(error.what(), variant.customCodeName));
     }
 }
