@@ -2,7 +2,8 @@
 #include "tstyles/render/raycaster.h"
 
 #include <array>
-#include <regex>
+#include <cctype>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -18,8 +19,39 @@ namespace {
 // One line for a compiler log about the scene's code, which compiler messages call `file`: the
 // first error there as "line L: does not compile: MESSAGE" (Mesa writes "file:L:C: error: ...",
 // NVIDIA "file:L: error ..."), and how many more errors followed.
+struct LocatedMessage {
+    std::string line;
+    std::string message;
+};
+
+// ":L[:C]: [error[:]] MESSAGE" after the file name; hand-parsed, since GCC 12's <regex> does not
+// build warning-free under the sanitizers.
+std::optional<LocatedMessage> locatedMessage(const std::string& rest) {
+    std::size_t at = 0;
+    auto digits = [&] {
+        const std::size_t begin = at;
+        while (at < rest.size() && std::isdigit(static_cast<unsigned char>(rest[at]))) ++at;
+        return rest.substr(begin, at - begin);
+    };
+    if (at >= rest.size() || rest[at++] != ':') return std::nullopt;
+    const std::string line = digits();
+    if (line.empty()) return std::nullopt;
+    if (at < rest.size() && rest[at] == ':' && at + 1 < rest.size() &&
+        std::isdigit(static_cast<unsigned char>(rest[at + 1]))) {
+        ++at;
+        digits();
+    }
+    if (at >= rest.size() || rest[at++] != ':') return std::nullopt;
+    while (at < rest.size() && std::isspace(static_cast<unsigned char>(rest[at]))) ++at;
+    if (rest.compare(at, 5, "error") == 0) {
+        at += 5;
+        if (at < rest.size() && rest[at] == ':') ++at;
+        while (at < rest.size() && std::isspace(static_cast<unsigned char>(rest[at]))) ++at;
+    }
+    return LocatedMessage{line, rest.substr(at)};
+}
+
 std::string firstErrorIn(const std::string& log, const std::string& file) {
-    static const std::regex located(R"(^:(\d+)(?::\d+)?:\s*(?:error:?\s*)?(.*)$)");
     std::istringstream lines(log);
     std::string line;
     std::string first;
@@ -27,14 +59,13 @@ std::string firstErrorIn(const std::string& log, const std::string& file) {
     while (std::getline(lines, line)) {
         const std::size_t at = line.find(file + ":");
         if (at == std::string::npos) continue;
-        std::smatch match;
-        const std::string rest = line.substr(at + file.size());
-        if (!std::regex_match(rest, match, located)) continue;
+        const auto located = locatedMessage(line.substr(at + file.size()));
+        if (!located) continue;
         if (!first.empty()) {
             more += line.find("error") != std::string::npos ? 1 : 0;
             continue;
         }
-        first = "line " + match[1].str() + ": does not compile: " + match[2].str();
+        first = "line " + located->line + ": does not compile: " + located->message;
     }
     if (first.empty()) {
         // Nothing names the code's own lines (an error the code causes in the program around it).
