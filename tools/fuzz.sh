@@ -19,6 +19,9 @@ for target in "${targets[@]}"; do
     [[ " ${targets_all[*]} " == *" $target "* ]] || { echo "tools/fuzz.sh: no fuzz target '$target'" >&2; exit 2; }
 done
 seconds=$2
+# FUZZ_RUNS=N (CI): N inputs from a fixed seed instead of SECONDS of time, so that a run finds the
+# same things on every machine, whatever its speed.
+if [[ -n ${FUZZ_RUNS:-} ]]; then length=(-runs="$FUZZ_RUNS" -seed=1); else length=(-max_total_time="$seconds"); fi
 build="$root/build-fuzz"
 
 launcher=()
@@ -46,7 +49,7 @@ for target in "${targets[@]}"; do
     # Leaks are findings, but for the library leaks tools/sanitizers/lsan.supp explains.
     if TMPDIR="$scratch" ASAN_OPTIONS=detect_leaks=1 \
            LSAN_OPTIONS="suppressions=$root/tools/sanitizers/lsan.supp:print_suppressions=0" nice "$build/tests/fuzz/fuzz_$target" \
-           "${dictionary[@]}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=1024 -malloc_limit_mb=256 -close_fd_mask=2 \
+           "${dictionary[@]}" "${length[@]}" -timeout=10 -rss_limit_mb=1024 -malloc_limit_mb=256 -close_fd_mask=2 \
            -max_len=16384 -print_final_stats=1 -artifact_prefix="$findings/" \
            "$corpus" "$root/tests/fuzz/corpus/$target" >"$log" 2>&1; then
         result=ok
