@@ -14,7 +14,11 @@ layout(std430, binding = BEAM_ANGLE_BUFFER) readonly buffer BeamAngles {
 } beamAngles;
 
 bool isBeamGrid(int step) {
+#if BEAM_GRIDS
     return timeSteps.steps[step].grid.x == GRID_BEAM;
+#else
+    return false;
+#endif
 }
 
 // The fractional index of `angle` among `count` increasing angles from `first` on; -1 outside.
@@ -39,8 +43,54 @@ float fractionalBeamIndex(int first, int count, float angle) {
     return float(low) + clamp((angle - lowAngle) / (highAngle - lowAngle), 0.0, 1.0);
 }
 
+// A fan whose beams are evenly spaced on both axes (EVEN_BEAMS): a beam index is then linear in its
+// angle, so a sample's place needs no angle list, only these numbers, which a ray reads once per
+// time-step (voxel_rays.glsl) instead of at every sample.
+struct EvenBeamFan {
+    vec4 angles;      // x, z: the first azimuth and elevation (radians); y, w: beams per radian
+    vec4 ranges;      // x, y: minimum and maximum range; z: range samples per unit of range
+    vec3 lastSample;  // dims - 1
+};
+
+EvenBeamFan evenBeamFanOf(int step) {
+    TimeStepInfo info = timeSteps.steps[step];
+    vec3 lastSample = info.dims.xyz - 1.0;
+    float firstAzimuth = beamAngles.angles[info.grid.y];
+    float lastAzimuth = beamAngles.angles[info.grid.y + int(lastSample.x)];
+    float firstElevation = beamAngles.angles[info.grid.z];
+    float lastElevation = beamAngles.angles[info.grid.z + int(lastSample.y)];
+    return EvenBeamFan(vec4(firstAzimuth, lastSample.x / (lastAzimuth - firstAzimuth), firstElevation,
+                            lastSample.y / (lastElevation - firstElevation)),
+                       vec4(info.beamRange.xy, lastSample.z / (info.beamRange.y - info.beamRange.x), 0.0),
+                       lastSample);
+}
+
+// beamVoxel() for an evenly spaced fan; outside the fan xyz run on past its faces (beamVoxel's
+// callers clamp them to the grid).
+vec4 evenBeamVoxel(EvenBeamFan fan, vec3 local) {
+    float range = length(local);
+    float across = (atan(local.x, local.z) - fan.angles.x) * fan.angles.y;
+    float along = (atan(local.y, local.z) - fan.angles.z) * fan.angles.w;
+    float rangeSample = (range - fan.ranges.x) * fan.ranges.z;
+    bool inside = local.z > 0.0 && across >= 0.0 && across <= fan.lastSample.x && along >= 0.0 &&
+                  along <= fan.lastSample.y && range >= fan.ranges.x && range <= fan.ranges.y;
+    return vec4(across, along, rangeSample, inside ? 1.0 : 0.0);
+}
+
+// The derivatives of evenBeamVoxel's sample coordinates by the grid-local position: row 0 is the
+// gradient of the beam index across, row 1 along, row 2 of the range sample.
+mat3 evenBeamJacobian(EvenBeamFan fan, vec3 local) {
+    vec3 acrossGradient = fan.angles.y * vec3(local.z, 0.0, -local.x) / dot(local.xz, local.xz);
+    vec3 alongGradient = fan.angles.w * vec3(0.0, local.z, -local.y) / dot(local.yz, local.yz);
+    vec3 rangeGradient = fan.ranges.z * local / length(local);
+    return transpose(mat3(acrossGradient, alongGradient, rangeGradient));
+}
+
 // xyz: fractional sample coordinates of a grid-local position; w: 1 inside the fan, 0 outside.
 vec4 beamVoxel(int step, vec3 local) {
+#if EVEN_BEAMS
+    return evenBeamVoxel(evenBeamFanOf(step), local);
+#endif
     TimeStepInfo info = timeSteps.steps[step];
     float range = length(local);
     float across = fractionalBeamIndex(info.grid.y, int(info.dims.x), atan(local.x, local.z));

@@ -52,15 +52,34 @@ vec3 worldGradient(int step, vec3 worldPosition) {
 }
 
 // A beam grid's voxel coordinates are not affine in world position, so its gradient is taken by
-// central differences along the world axes, one range spacing to either side.
+// central differences along the world axes, one range spacing (h) to either side. worldToVoxel is
+// rigid for a beam grid, so each offset is the grid-local position plus h times a column of it.
 vec3 beamWorldGradient(int step, vec3 worldPosition) {
     float h = timeSteps.steps[step].beamRange.z;
+    mat4 worldToLocal = timeSteps.steps[step].worldToVoxel;
+    vec3 local = (worldToLocal * vec4(worldPosition, 1.0)).xyz;
+    vec3 upperLimit = timeSteps.steps[step].dims.xyz - 1.0;
+#if EVEN_BEAMS
+    // The neighbours' sample coordinates to first order: the sample's own plus h times the fan's
+    // Jacobian times the world axis. h is a range spacing, far below the radius of curvature of the
+    // fan's coordinates (a range), so this is the six-mapping result to well under 1/255; it saves
+    // six mappings (two arc tangents each) per styled time-step and sample.
+    EvenBeamFan fan = evenBeamFanOf(step);
+    vec3 voxel = evenBeamVoxel(fan, local).xyz;
+    mat3 worldStepInSamples = h * evenBeamJacobian(fan, local) * mat3(worldToLocal);
+#endif
     vec3 gradient;
     for (int axis = 0; axis < 3; ++axis) {
-        vec3 offset = vec3(0.0);
-        offset[axis] = h;
-        gradient[axis] = (sampleDensity(atlasCoordinate(step, worldPosition + offset)) -
-                          sampleDensity(atlasCoordinate(step, worldPosition - offset))) /
+#if EVEN_BEAMS
+        vec3 upper = clamp(voxel + worldStepInSamples[axis], vec3(0.0), upperLimit);
+        vec3 lower = clamp(voxel - worldStepInSamples[axis], vec3(0.0), upperLimit);
+#else
+        vec3 offset = h * worldToLocal[axis].xyz;
+        vec3 upper = clamp(beamVoxel(step, local + offset).xyz, vec3(0.0), upperLimit);
+        vec3 lower = clamp(beamVoxel(step, local - offset).xyz, vec3(0.0), upperLimit);
+#endif
+        gradient[axis] = (sampleDensity(atlasCoordinateOfVoxel(step, upper)) -
+                          sampleDensity(atlasCoordinateOfVoxel(step, lower))) /
                          (2.0 * h);
     }
     return gradient;

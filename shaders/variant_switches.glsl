@@ -6,6 +6,8 @@
 //   ALL_AFFINE          1 when every time-step's world -> voxel map is affine (even rectilinear grids)
 //   STRUCTURED_GRIDS    1 when the series has explicit structured time-steps
 //   UNEVEN_AXES         1 when a time-step has an uneven rectilinear axis
+//   BEAM_GRIDS          1 when a time-step is a beam (sonar) grid
+//   EVEN_BEAMS          1 when every beam grid's beams are evenly spaced on both axes
 //   PACKED_ALIGNED      1 when the packed groups of four are walked (walk_packed_groups.glsl)
 //   PACKED_VALIDITY     a PACKED_VALIDITY_* code of contract.glsl
 //   MAX_TIME_STEPS      capacity of the per-ray arrays of time-steps
@@ -13,7 +15,8 @@
 //   CUSTOM_READS_INDEX  the scene's own compositor (tc_custom.glsl) returns a time-step index
 // Each is a switch and not a run-time test because llvmpipe runs both sides of a branch, masked.
 #if !defined(STYLED) || !defined(HAS_MASKS) || !defined(ALL_AFFINE) || !defined(STRUCTURED_GRIDS) || \
-    !defined(UNEVEN_AXES) || !defined(PACKED_ALIGNED) || !defined(PACKED_VALIDITY) ||                \
-    !defined(MAX_TIME_STEPS) || !defined(COLLECT_STATISTICS) || !defined(CUSTOM_READS_INDEX)
+    !defined(UNEVEN_AXES) || !defined(BEAM_GRIDS) || !defined(EVEN_BEAMS) || !defined(PACKED_ALIGNED) ||   \
+    !defined(PACKED_VALIDITY) || !defined(MAX_TIME_STEPS) || !defined(COLLECT_STATISTICS) ||             \
+    !defined(CUSTOM_READS_INDEX)
 #error "a raycasting switch is not defined: build the program through RaycastVariant"
 #endif

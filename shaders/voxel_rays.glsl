@@ -10,6 +10,12 @@ vec3 activeVoxelOrigin[MAX_TIME_STEPS];     // voxel coordinates at t = 0 (affin
 vec3 activeVoxelDirection[MAX_TIME_STEPS];  // voxel units per unit of t (affine time-steps)
 vec3 activeVoxelUpper[MAX_TIME_STEPS];      // dims - 1: where the clamp to the grid ends
 bool activeAffine[MAX_TIME_STEPS];
+#if BEAM_GRIDS
+bool activeBeam[MAX_TIME_STEPS];
+#if EVEN_BEAMS
+EvenBeamFan activeBeamFan[MAX_TIME_STEPS];
+#endif
+#endif
 
 // After extractVolumeOverlap: fills the arrays above for the ray's list of time-steps.
 void prepareVoxelRays(Ray ray) {
@@ -20,6 +26,12 @@ void prepareVoxelRays(Ray ray) {
         activeVoxelOrigin[i] = (worldToVoxel * vec4(ray.origin, 1.0)).xyz;
         activeVoxelDirection[i] = mat3(worldToVoxel) * ray.direction;
         activeVoxelUpper[i] = timeSteps.steps[step].dims.xyz - 1.0;
+#if BEAM_GRIDS
+        activeBeam[i] = isBeamGrid(step);
+#if EVEN_BEAMS
+        activeBeamFan[i] = evenBeamFanOf(step);
+#endif
+#endif
     }
 }
 
@@ -42,4 +54,21 @@ vec3 voxelAtSample(int slot, int step, vec3 position, float t) {
     }
 #endif
     return clamp(voxel, vec3(0.0), activeVoxelUpper[slot]);
+}
+
+// The sample's clamped voxel position in the slot's time-step and, in w, whether the sample lies in
+// the grid's shape (insideGridShape): for a beam grid one mapping of the ray's grid-local position
+// gives both, where insideGridShape and voxelAtSample would each map the world position again.
+vec4 voxelInShapeAtSample(int slot, int step, vec3 position, float t) {
+#if BEAM_GRIDS
+    if (activeBeam[slot]) {
+#if EVEN_BEAMS
+        vec4 beam = evenBeamVoxel(activeBeamFan[slot], gridLocalAtSample(slot, t));
+#else
+        vec4 beam = beamVoxel(step, gridLocalAtSample(slot, t));
+#endif
+        return vec4(clamp(beam.xyz, vec3(0.0), activeVoxelUpper[slot]), beam.w);
+    }
+#endif
+    return vec4(voxelAtSample(slot, step, position, t), insideGridShape(step, position) ? 1.0 : 0.0);
 }

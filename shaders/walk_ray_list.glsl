@@ -42,11 +42,12 @@ float emptySpaceUntil(SamplePoint point) {
         anyStep = true;
         // Outside a beam fan or a structured grid but inside its proxy: nothing here, and no jump
         // past this sample.
-        if (!insideGridShape(step, point.position)) {
+        vec4 voxelInShape = voxelInShapeAtSample(i, step, point.position, point.t);
+        if (voxelInShape.w < 0.5) {
             emptyUntil = min(emptyUntil, point.t);
             continue;
         }
-        vec3 voxel = voxelAtSample(i, step, point.position, point.t);
+        vec3 voxel = voxelInShape.xyz;
         if (brickVisible(step, voxel)) return -1.0;
 #if ALL_AFFINE
         vec3 gridLocal = voxel;
@@ -63,8 +64,9 @@ void accumulateTimeSteps(inout CompositorState state, SamplePoint point, inout T
     for (int i = liveBegin; i < liveEnd; ++i) {
         if (!listSlotContains(i, point.t)) continue;
         int step = activeSteps[i];
-        if (!insideGridShape(step, point.position)) continue;
-        vec3 atlasPosition = atlasCoordinateOfVoxel(step, voxelAtSample(i, step, point.position, point.t));
+        vec4 voxelInShape = voxelInShapeAtSample(i, step, point.position, point.t);
+        if (voxelInShape.w < 0.5) continue;
+        vec3 atlasPosition = atlasCoordinateOfVoxel(step, voxelInShape.xyz);
         float density = sampleDensity(atlasPosition);
         result.fetches += 1;
         visitTimeStep(state, step, atlasPosition, density, point.position, result);

@@ -168,6 +168,13 @@ GpuSeries::GpuSeries(const Series& series)
     timeStepCount_ = series.size();
     hasMasks_ = series.hasMasks();
     allAffine_ = std::all_of(series.steps.begin(), series.steps.end(), hasAffineWorldToVoxel);
+    hasBeamGrids_ = std::any_of(series.steps.begin(), series.steps.end(), [](const TimeStep& step) { return step.isBeam(); });
+    allBeamsEven_ = hasBeamGrids_ && std::all_of(series.steps.begin(), series.steps.end(), [](const TimeStep& step) {
+                        if (!step.isBeam()) return true;
+                        const BeamGrid& grid = step.beam();
+                        return grid.azimuthDeg.size() >= 2 && grid.elevationDeg.size() >= 2 &&
+                               areEvenBeamAngles(grid.azimuthDeg) && areEvenBeamAngles(grid.elevationDeg);
+                    });
     std::vector<glm::ivec3> dims;
     for (const auto& step : series.steps) dims.push_back(step.dims());
     layout_ = planAtlas(dims, maxTextureSize3D());

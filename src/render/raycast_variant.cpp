@@ -56,15 +56,18 @@ struct GridKind {
     bool allAffine;
     bool unevenAxes;
     bool structuredGrids;
+    bool beamGrids;
+    bool evenBeams;
     bool rectilinear;  // only rectilinear series can be packed
 };
 
 constexpr GridKind kGridKinds[] = {
-    {true, false, false, true},   // even rectilinear
-    {false, true, false, true},   // uneven rectilinear
-    {false, false, false, false}, // beam grids
-    {false, false, true, false},  // structured grids
-    {false, true, true, false},   // structured and uneven rectilinear together
+    {true, false, false, false, false, true},    // even rectilinear
+    {false, true, false, false, false, true},    // uneven rectilinear
+    {false, false, false, true, true, false},    // beam grids, evenly spaced beams
+    {false, false, false, true, false, false},   // beam grids, uneven beams
+    {false, false, true, false, false, false},   // structured grids
+    {false, true, true, true, false, false},     // structured, uneven rectilinear and beam grids together
 };
 
 // The custom compositor twice, once for each transfer function that may read it.
@@ -96,6 +99,8 @@ ShaderDefines RaycastVariant::defines() const {
         {"ALL_AFFINE", flag(allAffine)},
         {"STRUCTURED_GRIDS", flag(structuredGrids)},
         {"UNEVEN_AXES", flag(unevenAxes)},
+        {"BEAM_GRIDS", flag(beamGrids)},
+        {"EVEN_BEAMS", flag(evenBeams)},
         {"PACKED_ALIGNED", flag(walk == TimeStepWalk::PackedGroups)},
         {"PACKED_VALIDITY", std::to_string(packedValidityCode(packedValidity))},
         {"MAX_TIME_STEPS", std::to_string(timeStepCapacity)},
@@ -140,6 +145,8 @@ std::vector<RaycastVariant> requestableRaycastVariants() {
                     variant.allAffine = kind.allAffine;
                     variant.unevenAxes = kind.unevenAxes;
                     variant.structuredGrids = kind.structuredGrids;
+                    variant.beamGrids = kind.beamGrids;
+                    variant.evenBeams = kind.evenBeams;
                     // Statistics on in half of the set, so that both sides of that switch compile.
                     variant.collectStatistics = !styled;
                     if (walk == TimeStepWalk::PackedGroups) {

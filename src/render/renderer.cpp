@@ -70,6 +70,8 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     variant.masks = gpuSeries_->hasMasks();
     variant.allAffine = gpuSeries_->allAffine();
     variant.unevenAxes = gpuSeries_->hasUnevenAxes();
+    variant.beamGrids = gpuSeries_->hasBeamGrids();
+    variant.evenBeams = gpuSeries_->allBeamsEven();
     variant.structuredGrids = gpuSeries_->structuredGrids().layerCount() > 0;
     variant.styled = styleTextures_.anyStyled();
     variant.timeStepCapacity = timeStepCapacityFor(int(gpuSeries_->timeStepCount()));

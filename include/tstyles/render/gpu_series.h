@@ -38,6 +38,11 @@ public:
     bool allAffine() const { return allAffine_; }
     // Whether any time-step has an uneven rectilinear axis (node lists in the uneven-axis table).
     bool hasUnevenAxes() const { return hasUnevenAxes_; }
+    // Whether any time-step is a beam (sonar) grid.
+    bool hasBeamGrids() const { return hasBeamGrids_; }
+    // Whether every beam grid has evenly spaced beams on both axes (a beam index is linear in its
+    // angle; shaders/beam_grid.glsl, EVEN_BEAMS). False without beam grids.
+    bool allBeamsEven() const { return allBeamsEven_; }
     // True when the density atlas holds (density * validity, validity) pairs.
     bool hasMissingValues() const { return hasMissingValues_; }
     // The density atlas' storage: R8, R16 or R32F (RG8, RG16, RG32F with missing values), from
@@ -64,6 +69,8 @@ private:
     bool hasMasks_ = false;
     bool allAffine_ = true;
     bool hasUnevenAxes_ = true;
+    bool hasBeamGrids_ = false;
+    bool allBeamsEven_ = false;
     bool hasMissingValues_ = false;
     DensityPrecision precision_ = DensityPrecision::Bits16;
     AtlasLayout layout_;

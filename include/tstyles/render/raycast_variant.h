@@ -31,6 +31,8 @@ struct RaycastVariant {
     bool allAffine = false;        // every time-step's world -> voxel map is affine
     bool structuredGrids = false;  // the series has structured time-steps (inverse-map lookups)
     bool unevenAxes = false;       // a time-step has an uneven axis (node lookups)
+    bool beamGrids = false;        // a time-step is a beam (sonar) grid
+    bool evenBeams = false;        // every beam grid has evenly spaced beams on both axes
     // PackedGroups with missing values: how the packed validities are held.
     PackedValidity packedValidity = PackedValidity::None;
     // Capacity of the shader's per-ray arrays of time-steps (timeStepCapacityFor).
