@@ -51,6 +51,10 @@ int packedValidityCode(PackedValidity validity) {
 
 const char* flag(bool value) { return value ? "1" : "0"; }
 
+// Every transfer-function track styled: the program with the most style code (a subset leaves some
+// of it out).
+constexpr int kAllStyleTracks = 0b111;
+
 // The kinds of grid a series can hold, as the switches that the renderer derives from it.
 struct GridKind {
     bool allAffine;
@@ -94,7 +98,8 @@ std::vector<RaycastVariant> compositorChoices() {
 
 ShaderDefines RaycastVariant::defines() const {
     return {
-        {"STYLED", flag(styled)},
+        {"STYLED", flag(styled())},
+        {"STYLED_TRACKS", std::to_string(styledTracks)},
         {"HAS_MASKS", flag(masks)},
         {"ALL_AFFINE", flag(allAffine)},
         {"STRUCTURED_GRIDS", flag(structuredGrids)},
@@ -141,7 +146,7 @@ std::vector<RaycastVariant> requestableRaycastVariants() {
                 for (bool styled : {false, true}) {
                     RaycastVariant variant = choice;
                     variant.walk = walk;
-                    variant.styled = styled;
+                    variant.styledTracks = styled ? kAllStyleTracks : 0;
                     variant.allAffine = kind.allAffine;
                     variant.unevenAxes = kind.unevenAxes;
                     variant.structuredGrids = kind.structuredGrids;

@@ -136,7 +136,7 @@ void Raycaster::draw(const RaycastVariant& variant, const RaycastParameters& par
         if (variant.packedValidity == PackedValidity::Shared)
             program.set("inverseSharedValiditySize", 1.0f / glm::vec3(parameters.sharedValiditySize));
     }
-    if (variant.styled) {
+    if (variant.styled()) {
         glProgramUniform2iv(program.id(), glGetUniformLocation(program.id(), "styleTracks"), 3,
                             &parameters.styleTracks[0].x);
         program.set("worldToView", parameters.worldToView);

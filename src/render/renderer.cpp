@@ -73,7 +73,7 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     variant.beamGrids = gpuSeries_->hasBeamGrids();
     variant.evenBeams = gpuSeries_->allBeamsEven();
     variant.structuredGrids = gpuSeries_->structuredGrids().layerCount() > 0;
-    variant.styled = styleTextures_.anyStyled();
+    variant.styledTracks = styleTextures_.styledTrackBits();
     variant.timeStepCapacity = timeStepCapacityFor(int(gpuSeries_->timeStepCount()));
     variant.walk = options.naive ? TimeStepWalk::Naive : TimeStepWalk::RayList;
 

@@ -72,6 +72,13 @@ void StyleTextures::update(const std::array<const TransferFunction1D*, 3>& track
     uploadedNodes_ = nodes;
 }
 
+int StyleTextures::styledTrackBits() const {
+    int bits = 0;
+    for (std::size_t t = 0; t < trackRanges_.size(); ++t)
+        if (trackRanges_[t].y > 0) bits |= 1 << t;
+    return bits;
+}
+
 void StyleTextures::bind() const {
     styles_->bindToUnit(contract::STYLE_UNIT);
     nodeTable_.bindBase(GL_SHADER_STORAGE_BUFFER, contract::STYLE_NODE_BUFFER);

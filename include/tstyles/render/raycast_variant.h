@@ -26,7 +26,8 @@ struct RaycastVariant {
     std::string customCodeName;
     CompositorReads customReads = CompositorReads::IndexTstf;
     TimeStepWalk walk = TimeStepWalk::RayList;
-    bool styled = false;           // a transfer function uses lit-sphere styles
+    // Bit t set: transfer-function track t (STF, index TSTF, gradient TSTF) uses lit-sphere styles.
+    int styledTracks = 0;
     bool masks = false;            // a time-step has a segmentation mask
     bool allAffine = false;        // every time-step's world -> voxel map is affine
     bool structuredGrids = false;  // the series has structured time-steps (inverse-map lookups)
@@ -40,6 +41,8 @@ struct RaycastVariant {
     bool collectStatistics = false;
 
     auto operator<=>(const RaycastVariant&) const = default;
+
+    bool styled() const { return styledTracks != 0; }
 
     // Every switch of shaders/variant_switches.glsl.
     ShaderDefines defines() const;

@@ -32,7 +32,8 @@ public:
     // Offset and count of each track's nodes in the node table; count 0 when the track uses no
     // style (the shader then takes the colour from the plain lookup table).
     const std::array<glm::ivec2, 3>& trackRanges() const { return trackRanges_; }
-    bool anyStyled() const { return !layerStyles_.empty(); }
+    // Bit t set where track t (STF, index TSTF, gradient TSTF) has a node with a style.
+    int styledTrackBits() const;
 
 private:
     StyleLibrary library_;
