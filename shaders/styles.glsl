@@ -49,21 +49,18 @@ float nodePosition(int node) {
     return styleNodes.nodes[node].tintAndPosition.a;
 }
 
-// The styled colour of a track at x: rgb (not premultiplied) and the style's alpha.
+// The styled colour of a track at x: rgb (not premultiplied) and the style's alpha. Below the first
+// node the weight is 0 and above the last it is 1, so one pair of lookups serves every x (with a
+// branch per case llvmpipe would run every case's lookups, masked).
 vec4 trackStyle(int track, float x, SphereCoordinate sphere) {
     int first = styleTracks[track].x;
     int last = first + styleTracks[track].y - 1;
-    vec4 look;
-    if (x <= nodePosition(first)) {
-        look = nodeLook(first, sphere);
-    } else if (x >= nodePosition(last)) {
-        look = nodeLook(last, sphere);
-    } else {
-        int node = first;
-        while (node < last - 1 && x >= nodePosition(node + 1)) ++node;
-        float weight = (x - nodePosition(node)) / (nodePosition(node + 1) - nodePosition(node));
-        look = mix(nodeLook(node, sphere), nodeLook(node + 1, sphere), weight);
-    }
+    int node = first;
+    while (node < last - 1 && x >= nodePosition(node + 1)) ++node;
+    int next = min(node + 1, last);
+    float span = nodePosition(next) - nodePosition(node);
+    float weight = span > 0.0 ? clamp((x - nodePosition(node)) / span, 0.0, 1.0) : 0.0;
+    vec4 look = mix(nodeLook(node, sphere), nodeLook(next, sphere), weight);
     return vec4(look.a > 0.0 ? look.rgb / look.a : vec3(0.0), look.a);
 }
 
