@@ -40,9 +40,12 @@ void accumulateTimeSteps(inout CompositorState state, SamplePoint point, inout T
     for (int group = 0; group < packedGroupCount; ++group) {
         vec4 groupDensities = packedDensities(group, voxel, sharedValidity);
         result.fetches += PACKED_FETCHES_PER_GROUP;
-        for (int lane = 0; lane < 4; ++lane) {
+        // The last group may hold fewer than four: a loop bound that is the same for every pixel
+        // ends there, where a test in the loop would still run the missing lanes (llvmpipe runs
+        // a loop pass that every pixel skips, masked).
+        int lanes = min(4, timeStepCount - 4 * group);
+        for (int lane = 0; lane < lanes; ++lane) {
             int step = 4 * group + lane;
-            if (step >= timeStepCount) break;
             if (step < exposedSteps.x || step > exposedSteps.y) continue;
             // No masks in a packed series: the atlas position is never read.
             visitTimeStep(state, step, vec3(0.0), groupDensities[lane], point.position, result);
