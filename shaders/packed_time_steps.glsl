@@ -68,6 +68,9 @@ vec4 packedDensities(int group, vec3 voxel, float sharedValidity) {
 // Empty-space skipping for all time-steps at once: -1 when any time-step's brick at the sample is
 // visible, else where the brick ends (time-step 0's grid is every time-step's grid).
 float packedEmptySpaceUntil(AlignedSample aligned, float t) {
+#if !SKIP_EMPTY_BRICKS
+    return -1.0;
+#endif
     if (texelFetch(packedOccupancy, ivec3(brickOf(0, aligned.voxel)), 0).r > 0.5) return -1.0;
     return brickExit(0, aligned.voxel, aligned.gridLocal, t, activeVoxelDirection[0]);
 }

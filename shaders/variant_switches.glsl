@@ -13,11 +13,12 @@
 //   PACKED_VALIDITY     a PACKED_VALIDITY_* code of contract.glsl
 //   MAX_TIME_STEPS      capacity of the per-ray arrays of time-steps
 //   COLLECT_STATISTICS  1 to count rays, samples and fetches
+//   SKIP_EMPTY_BRICKS   1 to test at each sample whether every time-step there is in an empty brick
 //   CUSTOM_READS_INDEX  the scene's own compositor (tc_custom.glsl) returns a time-step index
 // Each is a switch and not a run-time test because llvmpipe runs both sides of a branch, masked.
 #if !defined(STYLED) || !defined(HAS_MASKS) || !defined(ALL_AFFINE) || !defined(STRUCTURED_GRIDS) || \
     !defined(UNEVEN_AXES) || !defined(BEAM_GRIDS) || !defined(EVEN_BEAMS) || !defined(PACKED_ALIGNED) ||   \
     !defined(PACKED_VALIDITY) || !defined(MAX_TIME_STEPS) || !defined(COLLECT_STATISTICS) ||             \
-    !defined(CUSTOM_READS_INDEX) || !defined(STYLED_TRACKS)
+    !defined(CUSTOM_READS_INDEX) || !defined(STYLED_TRACKS) || !defined(SKIP_EMPTY_BRICKS)
 #error "a raycasting switch is not defined: build the program through RaycastVariant"
 #endif

@@ -32,8 +32,11 @@ bool listSlotContains(int slot, float t) {
 }
 
 // Whether all time-steps at the sample lie in empty bricks: -1 if not, else where the first of
-// their bricks ends.
+// their bricks ends. Without SKIP_EMPTY_BRICKS always -1, and the test is not in the program.
 float emptySpaceUntil(SamplePoint point) {
+#if !SKIP_EMPTY_BRICKS
+    return -1.0;
+#endif
     float emptyUntil = 1.0e30;
     bool anyStep = false;
     for (int i = liveBegin; i < liveEnd; ++i) {
@@ -65,7 +68,13 @@ void accumulateTimeSteps(inout CompositorState state, SamplePoint point, inout T
         if (!listSlotContains(i, point.t)) continue;
         int step = activeSteps[i];
         vec4 voxelInShape = voxelInShapeAtSample(i, step, point.position, point.t);
-        if (voxelInShape.w < 0.5) continue;
+        // Inside the time-step's interval but outside its grid (a beam fan's proxy encloses the fan
+        // only conservatively): nothing to composite, but the time-step still counts, so that the
+        // ray does not jump past the rest of its interval.
+        if (voxelInShape.w < 0.5) {
+            result.contributing += 1;
+            continue;
+        }
         vec3 atlasPosition = atlasCoordinateOfVoxel(step, voxelInShape.xyz);
         float density = sampleDensity(atlasPosition);
         result.fetches += 1;

@@ -269,15 +269,26 @@ void GpuSeries::updateOccupancy(const std::vector<glm::vec4>& stfTable) {
     const OpacityRangeMaximum opacity(stfTable);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     std::vector<std::vector<std::uint8_t>> visibilities;  // kept for the packed atlas' union only
+    std::size_t bricks = 0, emptyBricks = 0;
     for (std::size_t index = 0; index < brickGrids_.size(); ++index) {
         const std::vector<std::uint8_t> visible = brickVisibility(brickGrids_[index], opacity);
+        bricks += visible.size();
+        emptyBricks += std::size_t(std::count(visible.begin(), visible.end(), std::uint8_t(0)));
         if (packedAtlas_) visibilities.push_back(visible);
         const glm::ivec3 origin = occupancyLayout_.brickOrigins[index];
         const glm::ivec3 size = brickGrids_[index].bricks;
         glTextureSubImage3D(occupancyAtlas_.id(), 0, origin.x, origin.y, origin.z, size.x, size.y, size.z, GL_RED,
                             GL_UNSIGNED_BYTE, visible.data());
     }
-    if (packedAtlas_) packedAtlas_->updateOccupancy(unionOfVisibilities(visibilities));
+    emptyBrickFraction_ = bricks ? double(emptyBricks) / double(bricks) : 0.0;
+    if (packedAtlas_) {
+        const std::vector<std::uint8_t> anyVisible = unionOfVisibilities(visibilities);
+        packedAtlas_->updateOccupancy(anyVisible);
+        packedEmptyBrickFraction_ =
+            anyVisible.empty() ? 0.0
+                               : double(std::count(anyVisible.begin(), anyVisible.end(), std::uint8_t(0))) /
+                                     double(anyVisible.size());
+    }
 }
 
 void GpuSeries::bind() const {

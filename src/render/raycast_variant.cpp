@@ -110,6 +110,7 @@ ShaderDefines RaycastVariant::defines() const {
         {"PACKED_VALIDITY", std::to_string(packedValidityCode(packedValidity))},
         {"MAX_TIME_STEPS", std::to_string(timeStepCapacity)},
         {"COLLECT_STATISTICS", flag(collectStatistics)},
+        {"SKIP_EMPTY_BRICKS", flag(skipEmptyBricks)},
         {"CUSTOM_READS_INDEX", flag(customReads == CompositorReads::IndexTstf)},
     };
 }
@@ -130,6 +131,8 @@ std::string RaycastVariant::describe() const {
     for (const auto& [name, value] : defines()) text += ", " + name + "=" + value;
     return text;
 }
+
+bool skipsEmptyBricks(double emptyBrickShare) { return emptyBrickShare >= kMinEmptyBrickShare; }
 
 int timeStepCapacityFor(int timeStepCount) {
     int capacity = 8;
@@ -152,8 +155,10 @@ std::vector<RaycastVariant> requestableRaycastVariants() {
                     variant.structuredGrids = kind.structuredGrids;
                     variant.beamGrids = kind.beamGrids;
                     variant.evenBeams = kind.evenBeams;
-                    // Statistics on in half of the set, so that both sides of that switch compile.
+                    // Statistics and the empty-brick test on in half of the set each, so that
+                    // both sides of those switches compile.
                     variant.collectStatistics = !styled;
+                    variant.skipEmptyBricks = styled;
                     if (walk == TimeStepWalk::PackedGroups) {
                         // Packed series have no masks; their validities come in three kinds.
                         for (PackedValidity validity :

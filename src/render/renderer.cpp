@@ -99,6 +99,9 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
         parameters.sharedValiditySize = packed->sharedValiditySize();
         parameters.packedGroupCount = packed->groupCount();
         parameters.packedAtlasSize = packed->layout().size;
+        variant.skipEmptyBricks = skipsEmptyBricks(gpuSeries_->emptyPackedBrickFraction());
+    } else {
+        variant.skipEmptyBricks = skipsEmptyBricks(gpuSeries_->emptyBrickFraction());
     }
     parameters.styleTracks = styleTextures_.trackRanges();
     parameters.worldToView = glm::mat3(view.viewMatrix);

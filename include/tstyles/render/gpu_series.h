@@ -57,6 +57,10 @@ public:
     // Marks each brick visible or empty under the STF (its baked table), for empty-space skipping.
     // Per transfer-function change, not per frame.
     void updateOccupancy(const std::vector<glm::vec4>& stfTable);
+    // Under the STF of the last updateOccupancy: the share of all time-steps' bricks that are
+    // empty, and of the packed atlas' bricks that are empty in every time-step (0 without one).
+    double emptyBrickFraction() const { return emptyBrickFraction_; }
+    double emptyPackedBrickFraction() const { return packedEmptyBrickFraction_; }
 
     // Binds the atlases and the time-step and proxy tables at their binding points.
     void bind() const;
@@ -78,6 +82,8 @@ private:
     Texture maskAtlas_;
     std::vector<BrickGrid> brickGrids_;
     AtlasLayout occupancyLayout_;
+    double emptyBrickFraction_ = 0.0;
+    double packedEmptyBrickFraction_ = 0.0;
     Texture occupancyAtlas_;
     std::optional<PackedAlignedAtlas> packedAtlas_;
     Buffer timeStepTable_;

@@ -39,6 +39,9 @@ struct RaycastVariant {
     // Capacity of the shader's per-ray arrays of time-steps (timeStepCapacityFor).
     int timeStepCapacity = 8;
     bool collectStatistics = false;
+    // Test at each sample whether every time-step there is in an empty brick (emptySpaceUntil):
+    // worth its cost only where the STF leaves some bricks empty (skipsEmptyBricks).
+    bool skipEmptyBricks = true;
 
     auto operator<=>(const RaycastVariant&) const = default;
 
@@ -55,6 +58,12 @@ struct RaycastVariant {
 // The per-ray array capacity for a series of `timeStepCount` time-steps: a power of two from 8 up,
 // so that a few more or fewer time-steps reuse the same program.
 int timeStepCapacityFor(int timeStepCount);
+
+// Whether the empty-brick test pays for a series whose bricks are this share empty under the
+// STF: below kMinEmptyBrickShare it can skip little, and costs a voxel mapping and an occupancy
+// fetch per sample (23 % of a sonar frame, where no brick is empty; docs/performance.md).
+inline constexpr double kMinEmptyBrickShare = 0.05;
+bool skipsEmptyBricks(double emptyBrickShare);
 
 // Every variant a frame can ask for, up to the array capacity (which changes array sizes only):
 // every compositor x walk x grid kind x styled, with masks and statistics on and off (the custom
