@@ -76,6 +76,7 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     variant.styledTracks = styleTextures_.styledTrackBits();
     variant.timeStepCapacity = timeStepCapacityFor(int(gpuSeries_->timeStepCount()));
     variant.walk = options.naive ? TimeStepWalk::Naive : TimeStepWalk::RayList;
+    variant.skipEmptyBricks = skipsEmptyBricks(gpuSeries_->emptyBrickFraction());
 
     RaycastParameters parameters;
     parameters.inverseViewProjection = inverseViewProjection;
@@ -100,9 +101,8 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
         parameters.packedGroupCount = packed->groupCount();
         parameters.packedAtlasSize = packed->layout().size;
         variant.skipEmptyBricks = skipsEmptyBricks(gpuSeries_->emptyPackedBrickFraction());
-    } else {
-        variant.skipEmptyBricks = skipsEmptyBricks(gpuSeries_->emptyBrickFraction());
     }
+    if (options.emptyBrickTest) variant.skipEmptyBricks = *options.emptyBrickTest;
     parameters.styleTracks = styleTextures_.trackRanges();
     parameters.worldToView = glm::mat3(view.viewMatrix);
     parameters.styleFootprint = float(styleFootprint(view, options.size.y, finestSpacing_));

@@ -16,6 +16,7 @@
 
 #include "render_test_support.h"
 #include "tstyles/data/beam_geometry.h"
+#include "tstyles/image/image_comparison.h"
 
 namespace tstyles::testing {
 namespace {
@@ -261,6 +262,52 @@ TEST(BeamRender, BoxInsideAFanIsCompositedFromBothWhereTheyOverlap) {
             ++checked;
         }
     EXPECT_GT(checked, 1000);
+}
+
+// Evenly spaced beams take the shader's linear angle mapping (EVEN_BEAMS), and its Jacobian for the
+// neighbours of a gradient; the same fan with its inner beams nudged by 1e-6 degrees takes the
+// angle list's bucket lookup and six mappings per gradient. A blob inside the fan, flat and lit-
+// sphere styled, must look the same both ways: the nudge moves a beam index by 1e-7.
+TEST(BeamRender, EvenlySpacedBeamsRenderAsTheAngleListDoes) {
+    const BeamGrid even = testFan(25, 9);
+    BeamGrid nudged = even;
+    for (std::size_t i = 1; i + 1 < nudged.azimuthDeg.size(); ++i) nudged.azimuthDeg[i] += 1e-6;
+    for (std::size_t j = 1; j + 1 < nudged.elevationDeg.size(); ++j) nudged.elevationDeg[j] -= 1e-6;
+    ASSERT_TRUE(areEvenBeamAngles(even.azimuthDeg) && areEvenBeamAngles(even.elevationDeg));
+    ASSERT_FALSE(areEvenBeamAngles(nudged.azimuthDeg) || areEvenBeamAngles(nudged.elevationDeg));
+
+    // A Gaussian blob off the fan's axis, so that the density changes across beams, along them and
+    // along the range.
+    const auto blobStep = [](const BeamGrid& fan) {
+        TimeStep step = fanStep(0.0, [](int) { return 0.0f; }, fan);
+        const glm::dvec3 centre(0.18, -0.05, 0.6);
+        for (int k = 0; k < fan.dims.z; ++k)
+            for (int j = 0; j < fan.dims.y; ++j)
+                for (int i = 0; i < fan.dims.x; ++i) {
+                    const glm::dvec3 offset = beamSamplePosition(fan, i, j, k) - centre;
+                    step.density[(std::size_t(k) * fan.dims.y + j) * fan.dims.x + i] =
+                        float(std::exp(-glm::dot(offset, offset) / (0.2 * 0.2)));
+                }
+        return step;
+    };
+    for (const bool styled : {false, true}) {
+        Scene scene = orthographicSceneLookingDownZ(kCentre, kViewHeight, kSize);
+        scene.stf.curve.opacity = {{0.0, 0.0}, {0.3, 0.0}, {0.8, 0.4}};
+        scene.stf.curve.color = {{0.0, {1.0, 0.9, 0.8}, styled ? "glossy-orange" : "", 0}};
+        scene.finalMode = FinalMode::Stf;
+        scene.raycast.step = 0.004;
+        const Image evenImage = renderSeries(seriesOf({blobStep(even)}), scene);
+        const Image listImage = renderSeries(seriesOf({blobStep(nudged)}), scene);
+        const ImageDifference difference = compareImages(evenImage, listImage, 1);
+        EXPECT_LE(difference.maxDelta, 2) << (styled ? "styled: " : "flat: ") << describe(difference);
+        EXPECT_EQ(difference.failingFraction, 0.0) << (styled ? "styled: " : "flat: ") << describe(difference);
+        // The blob is there (a picture of background alone would pass the comparison too): it
+        // covers hundreds of pixels of the transparent background.
+        int covered = 0;
+        for (int y = 0; y < kSize; ++y)
+            for (int x = 0; x < kSize; ++x) covered += evenImage.at(x, y).a > 0.1f ? 1 : 0;
+        EXPECT_GT(covered, 200) << (styled ? "styled" : "flat");
+    }
 }
 
 }  // namespace

@@ -50,5 +50,29 @@ std::vector<BundledScene> benchmarkCases() {
 INSTANTIATE_TEST_SUITE_P(BenchmarkScenes, SkippingEquivalence, ::testing::ValuesIn(benchmarkCases()),
                          [](const auto& parameter) { return testNameOf(parameter.param); });
 
+// The per-sample empty-brick test is compiled in only where the STF leaves enough bricks empty
+// (skipsEmptyBricks): with it forced on and off the optimised raycaster gives the same picture, on
+// a series where it skips much (the super-ellipsoid, the hurricane's packed atlas) and on the
+// sonar, where no brick is empty and it is left out by default.
+class EmptyBrickTestEquivalence : public ::testing::TestWithParam<BundledScene> {};
+
+TEST_P(EmptyBrickTestEquivalence, WithAndWithoutTheTestGiveTheSameImage) {
+    const BundledScene& bundled = GetParam();
+    if (!std::filesystem::exists(manifestOf(bundled))) GTEST_SKIP() << "dataset " << bundled.dataset << " is not there";
+    FrameOptions withTest;
+    withTest.emptyBrickTest = true;
+    FrameOptions withoutTest;
+    withoutTest.emptyBrickTest = false;
+    expectSameImage(bundled, kSize, {"empty-brick test", withTest}, {"no empty-brick test", withoutTest},
+                    {kPixelThreshold, kMaxFailingFraction, kMaxMeanDelta});
+}
+
+INSTANTIATE_TEST_SUITE_P(BenchmarkScenes, EmptyBrickTestEquivalence,
+                         ::testing::Values(BundledScene{"figure4-temporal-mip", "superellipsoid"},
+                                           BundledScene{"figure1-styled-focus-step3", "superellipsoid-aligned"},
+                                           BundledScene{"figure5-focus-step5", "hurricane"},
+                                           BundledScene{"figure6-centre-index-tstf", "sonar"}),
+                         [](const auto& parameter) { return testNameOf(parameter.param); });
+
 }  // namespace
 }  // namespace tstyles::testing

@@ -32,6 +32,9 @@ struct FrameOptions {
     // Fully aligned series read four time-steps per fetch from the packed atlas; false sends them
     // through the general path (per time-step fetches), for comparison. Same image.
     bool packAligned = true;
+    // The per-sample empty-brick test: by default compiled in where the STF leaves enough bricks
+    // empty for it to pay (skipsEmptyBricks); true or false forces it, for comparison. Same image.
+    std::optional<bool> emptyBrickTest;
 };
 
 class Renderer {
