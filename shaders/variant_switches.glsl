@@ -4,6 +4,7 @@
 //   STYLED              1 when a transfer function of the scene uses a lit-sphere style
 //   STYLED_TRACKS       bit t set when track t (STF_TRACK, INDEX_TSTF_TRACK, GRADIENT_TSTF_TRACK) does
 //   HAS_MASKS           1 when a time-step has a segmentation mask
+//   MISSING_VALUES      1 when the density atlas holds (density * validity, validity) pairs
 //   ALL_AFFINE          1 when every time-step's world -> voxel map is affine (even rectilinear grids)
 //   STRUCTURED_GRIDS    1 when the series has explicit structured time-steps
 //   UNEVEN_AXES         1 when a time-step has an uneven rectilinear axis
@@ -19,6 +20,7 @@
 #if !defined(STYLED) || !defined(HAS_MASKS) || !defined(ALL_AFFINE) || !defined(STRUCTURED_GRIDS) || \
     !defined(UNEVEN_AXES) || !defined(BEAM_GRIDS) || !defined(EVEN_BEAMS) || !defined(PACKED_ALIGNED) ||   \
     !defined(PACKED_VALIDITY) || !defined(MAX_TIME_STEPS) || !defined(COLLECT_STATISTICS) ||             \
-    !defined(CUSTOM_READS_INDEX) || !defined(STYLED_TRACKS) || !defined(SKIP_EMPTY_BRICKS)
+    !defined(CUSTOM_READS_INDEX) || !defined(STYLED_TRACKS) || !defined(SKIP_EMPTY_BRICKS) || \
+    !defined(MISSING_VALUES)
 #error "a raycasting switch is not defined: build the program through RaycastVariant"
 #endif

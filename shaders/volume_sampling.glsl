@@ -67,12 +67,20 @@ vec3 atlasCoordinate(int step, vec3 worldPosition) {
 // and where that weight is below one half the sample has no data.
 const float MISSING_DENSITY = -1.0;
 
+// Without missing values (MISSING_VALUES 0) no density is missing, and the atlas' alpha is 1: the
+// tests and the division are left out of the program.
 bool isMissingDensity(float density) {
+#if !MISSING_VALUES
+    return false;
+#endif
     return density < 0.0;
 }
 
 float sampleDensity(vec3 atlasPosition) {
     vec4 texel = texture(densityAtlas, atlasPosition);
+#if !MISSING_VALUES
+    return texel.r;
+#endif
     return texel.a < 0.5 ? MISSING_DENSITY : texel.r / texel.a;
 }
 

@@ -101,6 +101,7 @@ ShaderDefines RaycastVariant::defines() const {
         {"STYLED", flag(styled())},
         {"STYLED_TRACKS", std::to_string(styledTracks)},
         {"HAS_MASKS", flag(masks)},
+        {"MISSING_VALUES", flag(missingValues)},
         {"ALL_AFFINE", flag(allAffine)},
         {"STRUCTURED_GRIDS", flag(structuredGrids)},
         {"UNEVEN_AXES", flag(unevenAxes)},
@@ -164,12 +165,15 @@ std::vector<RaycastVariant> requestableRaycastVariants() {
                         for (PackedValidity validity :
                              {PackedValidity::None, PackedValidity::PerGroup, PackedValidity::Shared}) {
                             variant.packedValidity = validity;
+                            variant.missingValues = validity != PackedValidity::None;
                             variants.push_back(variant);
                         }
                         continue;
                     }
                     for (bool masks : {false, true}) {
                         variant.masks = masks;
+                        // Both sides of the missing-value switch compile, in half of the set each.
+                        variant.missingValues = masks;
                         variants.push_back(variant);
                     }
                 }

@@ -68,6 +68,7 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     }
     variant.collectStatistics = options.collectStatistics;
     variant.masks = gpuSeries_->hasMasks();
+    variant.missingValues = gpuSeries_->hasMissingValues();
     variant.allAffine = gpuSeries_->allAffine();
     variant.unevenAxes = gpuSeries_->hasUnevenAxes();
     variant.beamGrids = gpuSeries_->hasBeamGrids();

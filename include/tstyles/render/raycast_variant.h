@@ -29,6 +29,7 @@ struct RaycastVariant {
     // Bit t set: transfer-function track t (STF, index TSTF, gradient TSTF) uses lit-sphere styles.
     int styledTracks = 0;
     bool masks = false;            // a time-step has a segmentation mask
+    bool missingValues = false;    // the density atlas holds (density * validity, validity) pairs
     bool allAffine = false;        // every time-step's world -> voxel map is affine
     bool structuredGrids = false;  // the series has structured time-steps (inverse-map lookups)
     bool unevenAxes = false;       // a time-step has an uneven axis (node lookups)
