@@ -15,16 +15,12 @@ struct TemporalSample {
     float emptyUntil;
 };
 
-// `atlasPosition`: where the density was read (for the mask); `position`: the sample in the world.
-void visitTimeStep(inout CompositorState state, int step, vec3 atlasPosition, float density, vec3 position,
+// `atlasSample`: the time-step's density and mask at the sample; `position`: the sample in the world.
+void visitTimeStep(inout CompositorState state, int step, AtlasSample atlasSample, vec3 position,
                    inout TemporalSample result) {
     result.contributing += 1;
     // No data here: transparent, and left out of the temporal characteristic.
-    if (isMissingDensity(density)) return;
-    bool inMask = insideMask(step, atlasPosition);
-    vec4 stf = classifyStf(density);
-#if HAS_MASKS
-    result.fetches += timeSteps.steps[step].dims.w > 0.5 ? 1 : 0;
-#endif
-    compositorAccumulate(state, TimeStepSample(step, density, stf, inMask), position, result.fetches);
+    if (isMissingDensity(atlasSample.density)) return;
+    vec4 stf = classifyStf(atlasSample.density);
+    compositorAccumulate(state, TimeStepSample(step, atlasSample.density, stf, atlasSample.inMask), position, result.fetches);
 }

@@ -4,7 +4,6 @@
 #include "time_steps.glsl"
 #include "uneven_axes.glsl"
 layout(binding = ATLAS_UNIT) uniform sampler3D densityAtlas;
-layout(binding = MASK_ATLAS_UNIT) uniform sampler3D maskAtlas;
 uniform vec3 inverseAtlasSize;
 
 #include "structured_grid.glsl"
@@ -76,25 +75,35 @@ bool isMissingDensity(float density) {
     return density < 0.0;
 }
 
-float sampleDensity(vec3 atlasPosition) {
-    vec4 texel = texture(densityAtlas, atlasPosition);
+float densityOfTexel(vec4 texel) {
 #if !MISSING_VALUES
     return texel.r;
 #endif
     return texel.a < 0.5 ? MISSING_DENSITY : texel.r / texel.a;
 }
 
-// 1 when any time-step of the series has a mask. A compile-time switch, not a run-time test:
-// llvmpipe executes both sides of a branch (masked per pixel), so only removing the mask lookup
-// from the program saves its cost.
+float sampleDensity(vec3 atlasPosition) {
+    return densityOfTexel(texture(densityAtlas, atlasPosition));
+}
 
-// Time-steps without a mask are region of interest everywhere.
-bool insideMask(int step, vec3 atlasPosition) {
-#if !HAS_MASKS
-    return true;
+// A series with masks (HAS_MASKS) holds each time-step's mask in the atlas' last channel, after
+// density and validity (render/density_texels.h); time-steps without a mask have it full scale.
+const int MASK_CHANNEL = MISSING_VALUES != 0 ? 2 : 1;
+
+// One fetch of the atlas at a time-step's sample: its density, and whether the sample is inside the
+// time-step's segmentation mask (everywhere in a series without masks).
+struct AtlasSample {
+    float density;
+    bool inMask;
+};
+
+AtlasSample sampleAtlas(vec3 atlasPosition) {
+    vec4 texel = texture(densityAtlas, atlasPosition);
+#if HAS_MASKS
+    return AtlasSample(densityOfTexel(texel), texel[MASK_CHANNEL] >= 0.5);
+#else
+    return AtlasSample(densityOfTexel(texel), true);
 #endif
-    if (timeSteps.steps[step].dims.w < 0.5) return true;
-    return texture(maskAtlas, atlasPosition).r >= 0.5;
 }
 
 // Empty-space skipping: one texel per brick of BRICK_SIZE³ cells in the occupancy atlas, non-zero

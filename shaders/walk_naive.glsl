@@ -31,8 +31,7 @@ void accumulateTimeSteps(inout CompositorState state, SamplePoint point, inout T
         if (!insideGrid(step, point.position)) continue;
         if (!insideGridShape(step, point.position)) continue;
         vec3 atlasPosition = atlasCoordinateOfVoxel(step, voxelCoordinate(step, point.position));
-        float density = sampleDensity(atlasPosition);
         result.fetches += 1;
-        visitTimeStep(state, step, atlasPosition, density, point.position, result);
+        visitTimeStep(state, step, sampleAtlas(atlasPosition), point.position, result);
     }
 }

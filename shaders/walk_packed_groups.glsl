@@ -47,8 +47,8 @@ void accumulateTimeSteps(inout CompositorState state, SamplePoint point, inout T
         for (int lane = 0; lane < lanes; ++lane) {
             int step = 4 * group + lane;
             if (step < exposedSteps.x || step > exposedSteps.y) continue;
-            // No masks in a packed series: the atlas position is never read.
-            visitTimeStep(state, step, vec3(0.0), groupDensities[lane], point.position, result);
+            // No masks in a packed series.
+            visitTimeStep(state, step, AtlasSample(groupDensities[lane], true), point.position, result);
         }
     }
 }

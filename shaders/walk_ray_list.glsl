@@ -75,9 +75,7 @@ void accumulateTimeSteps(inout CompositorState state, SamplePoint point, inout T
             result.contributing += 1;
             continue;
         }
-        vec3 atlasPosition = atlasCoordinateOfVoxel(step, voxelInShape.xyz);
-        float density = sampleDensity(atlasPosition);
         result.fetches += 1;
-        visitTimeStep(state, step, atlasPosition, density, point.position, result);
+        visitTimeStep(state, step, sampleAtlas(atlasCoordinateOfVoxel(step, voxelInShape.xyz)), point.position, result);
     }
 }

@@ -35,22 +35,25 @@ std::vector<std::uint16_t> densityTexels(const TimeStep& step, bool withValidity
 namespace {
 
 template <typename Texel>
-std::vector<std::uint8_t> texelBytes(const TimeStep& step, bool withValidity, float full) {
+std::vector<std::uint8_t> texelBytes(const TimeStep& step, bool withValidity, bool withMask, float full) {
     const auto quantise = [full](float density) {
         const float clamped = std::clamp(density, 0.0f, 1.0f);
         if constexpr (std::is_floating_point_v<Texel>) return Texel(clamped);
         else return Texel(std::lround(clamped * full));
     };
     std::vector<Texel> texels;
-    texels.reserve(step.density.size() * (withValidity ? 2 : 1));
-    for (const float density : step.density) {
+    texels.reserve(step.density.size() * std::size_t(densityChannelCount(withValidity, withMask)));
+    for (std::size_t voxel = 0; voxel < step.density.size(); ++voxel) {
+        const float density = step.density[voxel];
         const bool valid = !isMissing(density);
-        if (!withValidity) {
+        if (withValidity) {
+            texels.push_back(valid ? quantise(density) : Texel(0));
+            texels.push_back(valid ? quantise(1.0f) : Texel(0));
+        } else {
             texels.push_back(quantise(valid ? density : 0.0f));
-            continue;
         }
-        texels.push_back(valid ? quantise(density) : Texel(0));
-        texels.push_back(valid ? quantise(1.0f) : Texel(0));
+        // Uploaded as 0 / full scale so that trilinear filtering gives a smooth boundary at 0.5.
+        if (withMask) texels.push_back(!step.mask || (*step.mask)[voxel] != 0 ? quantise(1.0f) : Texel(0));
     }
     std::vector<std::uint8_t> bytes(texels.size() * sizeof(Texel));
     std::memcpy(bytes.data(), texels.data(), bytes.size());
@@ -59,16 +62,19 @@ std::vector<std::uint8_t> texelBytes(const TimeStep& step, bool withValidity, fl
 
 }  // namespace
 
-std::vector<std::uint8_t> densityTexelBytes(const TimeStep& step, bool withValidity, DensityPrecision precision) {
+int densityChannelCount(bool withValidity, bool withMask) { return 1 + (withValidity ? 1 : 0) + (withMask ? 1 : 0); }
+
+std::vector<std::uint8_t> densityTexelBytes(const TimeStep& step, bool withValidity, bool withMask,
+                                            DensityPrecision precision) {
     switch (precision) {
         case DensityPrecision::Bits8:
-            return texelBytes<std::uint8_t>(step, withValidity, 255.0f);
+            return texelBytes<std::uint8_t>(step, withValidity, withMask, 255.0f);
         case DensityPrecision::Bits16:
-            return texelBytes<std::uint16_t>(step, withValidity, 65535.0f);
+            return texelBytes<std::uint16_t>(step, withValidity, withMask, 65535.0f);
         case DensityPrecision::Bits32:
             break;
     }
-    return texelBytes<float>(step, withValidity, 1.0f);
+    return texelBytes<float>(step, withValidity, withMask, 1.0f);
 }
 
 }  // namespace tstyles

@@ -94,20 +94,27 @@ bool hasAffineWorldToVoxel(const TimeStep& step) {
 
 struct DensityTexelFormat {
     GLenum internalFormat;
-    GLenum type;  // of the uploaded texels (densityTexelBytes)
+    GLenum format;  // of the uploaded texels (densityTexelBytes): GL_RED, GL_RG or GL_RGB
+    GLenum type;
 };
 
-// R8 / R16 / R32F, or their RG pairs (density * validity, validity) when values are missing.
-DensityTexelFormat densityTexelFormat(DensityPrecision precision, bool withValidity) {
+// R8 / R16 / R32F for the density alone; a channel more for validity where values are missing
+// (density * validity, validity) and one more for the mask in a series with masks.
+DensityTexelFormat densityTexelFormat(DensityPrecision precision, int channels) {
+    constexpr GLenum formats[] = {GL_RED, GL_RG, GL_RGB};
+    constexpr GLenum bits8[] = {GL_R8, GL_RG8, GL_RGB8};
+    constexpr GLenum bits16[] = {GL_R16, GL_RG16, GL_RGB16};
+    constexpr GLenum bits32[] = {GL_R32F, GL_RG32F, GL_RGB32F};
+    const std::size_t index = std::size_t(channels - 1);
     switch (precision) {
         case DensityPrecision::Bits8:
-            return {GLenum(withValidity ? GL_RG8 : GL_R8), GLenum(GL_UNSIGNED_BYTE)};
+            return {bits8[index], formats[index], GLenum(GL_UNSIGNED_BYTE)};
         case DensityPrecision::Bits16:
-            return {GLenum(withValidity ? GL_RG16 : GL_R16), GLenum(GL_UNSIGNED_SHORT)};
+            return {bits16[index], formats[index], GLenum(GL_UNSIGNED_SHORT)};
         case DensityPrecision::Bits32:
             break;
     }
-    return {GLenum(withValidity ? GL_RG32F : GL_R32F), GLenum(GL_FLOAT)};
+    return {bits32[index], formats[index], GLenum(GL_FLOAT)};
 }
 
 // The manifest field that holds a beam axis' angles, for error messages.
@@ -156,7 +163,6 @@ TimeStepInfo timeStepInfo(const Series& series, std::size_t index, const glm::iv
 
 GpuSeries::GpuSeries(const Series& series)
     : densityAtlas_(Texture::create(GL_TEXTURE_3D)),
-      maskAtlas_(Texture::create(GL_TEXTURE_3D)),
       occupancyAtlas_(Texture::create(GL_TEXTURE_3D)),
       timeStepTable_(Buffer::create()),
       proxyTable_(Buffer::create()),
@@ -182,30 +188,22 @@ GpuSeries::GpuSeries(const Series& series)
     glGetError();  // start from a clean error state so that OUT_OF_MEMORY below is ours
     hasMissingValues_ = tstyles::hasMissingValues(series);
     precision_ = series.precision;
-    const DensityTexelFormat texelFormat = densityTexelFormat(precision_, hasMissingValues_);
+    const DensityTexelFormat texelFormat =
+        densityTexelFormat(precision_, densityChannelCount(hasMissingValues_, hasMasks_));
     densityAtlas_ = createAtlas(texelFormat.internalFormat, layout_.size);
-    // Validity reads as alpha; without missing values alpha is 1 everywhere (R*'s default).
+    // Validity reads as alpha; without missing values alpha is 1 everywhere (the default for
+    // formats without alpha). The mask is the last channel (shaders/volume_sampling.glsl).
     if (hasMissingValues_) glTextureParameteri(densityAtlas_.id(), GL_TEXTURE_SWIZZLE_A, GL_GREEN);
-    maskAtlas_ = createAtlas(GL_R8, hasMasks_ ? layout_.size : glm::ivec3(1));
     requireNoOutOfMemory(series, "volume atlas");
 
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    std::vector<std::uint8_t> maskTexels;
     for (std::size_t index = 0; index < series.size(); ++index) {
         const auto& step = series.steps[index];
         const glm::ivec3 size = step.dims();
         const glm::ivec3 origin = layout_.brickOrigins[index];
-        const std::vector<std::uint8_t> texels = densityTexelBytes(step, hasMissingValues_, precision_);
+        const std::vector<std::uint8_t> texels = densityTexelBytes(step, hasMissingValues_, hasMasks_, precision_);
         glTextureSubImage3D(densityAtlas_.id(), 0, origin.x, origin.y, origin.z, size.x, size.y, size.z,
-                            hasMissingValues_ ? GL_RG : GL_RED, texelFormat.type, texels.data());
-        if (step.mask) {
-            // Upload masks as 0 / 255 so that trilinear filtering gives a smooth boundary at 0.5.
-            maskTexels.resize(step.mask->size());
-            std::transform(step.mask->begin(), step.mask->end(), maskTexels.begin(),
-                           [](std::uint8_t value) { return std::uint8_t(value != 0 ? 255 : 0); });
-            glTextureSubImage3D(maskAtlas_.id(), 0, origin.x, origin.y, origin.z, size.x, size.y, size.z,
-                                GL_RED, GL_UNSIGNED_BYTE, maskTexels.data());
-        }
+                            texelFormat.format, texelFormat.type, texels.data());
     }
     requireNoOutOfMemory(series, "volume atlas");
 
@@ -260,8 +258,9 @@ GpuSeries::GpuSeries(const Series& series)
 }
 
 std::size_t GpuSeries::textureBytes() const {
-    return layout_.texelCount() * bytesPerDensity(precision_) * (hasMissingValues_ ? 2 : 1) +
-           (hasMasks_ ? layout_.texelCount() : 1) + occupancyLayout_.texelCount() + structuredGrids_->gpuBytes() +
+    return layout_.texelCount() * bytesPerDensity(precision_) *
+               std::size_t(densityChannelCount(hasMissingValues_, hasMasks_)) +
+           occupancyLayout_.texelCount() + structuredGrids_->gpuBytes() +
            (packedAtlas_ ? packedAtlas_->textureBytes() : 0);
 }
 
@@ -293,7 +292,6 @@ void GpuSeries::updateOccupancy(const std::vector<glm::vec4>& stfTable) {
 
 void GpuSeries::bind() const {
     densityAtlas_.bindToUnit(contract::ATLAS_UNIT);
-    maskAtlas_.bindToUnit(contract::MASK_ATLAS_UNIT);
     occupancyAtlas_.bindToUnit(contract::OCCUPANCY_UNIT);
     timeStepTable_.bindBase(GL_SHADER_STORAGE_BUFFER, contract::TIME_STEP_BUFFER);
     proxyTable_.bindBase(GL_SHADER_STORAGE_BUFFER, contract::PROXY_BUFFER);

@@ -51,7 +51,7 @@ public:
     // Fully aligned series (suitsPackedAtlas): four time-steps per texel, next to the atlas above;
     // null for other series.
     const PackedAlignedAtlas* packedAtlas() const { return packedAtlas_ ? &*packedAtlas_ : nullptr; }
-    // Bytes of texture memory: the density atlas, the mask atlas, the packed atlas.
+    // Bytes of texture memory: the density atlas (masks included), the packed atlas.
     std::size_t textureBytes() const;
 
     // Marks each brick visible or empty under the STF (its baked table), for empty-space skipping.
@@ -79,7 +79,6 @@ private:
     DensityPrecision precision_ = DensityPrecision::Bits16;
     AtlasLayout layout_;
     Texture densityAtlas_;
-    Texture maskAtlas_;
     std::vector<BrickGrid> brickGrids_;
     AtlasLayout occupancyLayout_;
     double emptyBrickFraction_ = 0.0;
