@@ -2,8 +2,8 @@
 // (src/render/raycast_variant.cpp) defines every one of them, and is the one place of their
 // defaults; a program built without one stops here instead of taking a default silently.
 //   STYLED              1 when a transfer function of the scene uses a lit-sphere style
-//   STYLED_TRACKS       bit t set when track t (STF_TRACK, INDEX_TSTF_TRACK, GRADIENT_TSTF_TRACK) does
-//   HAS_MASKS           1 when a time-step has a segmentation mask
+//   STYLED_TRACKS       bit t set when track t (STF_TRACK, INDEX_TSTF_TRACK, GRADIENT_TSTF_TRACK) has styles
+//   HAS_MASKS           1 when a time-step has a segmentation mask (the atlas' last channel)
 //   MISSING_VALUES      1 when the density atlas holds (density * validity, validity) pairs
 //   ALL_AFFINE          1 when every time-step's world -> voxel map is affine (even rectilinear grids)
 //   STRUCTURED_GRIDS    1 when the series has explicit structured time-steps
@@ -16,7 +16,8 @@
 //   COLLECT_STATISTICS  1 to count rays, samples and fetches
 //   SKIP_EMPTY_BRICKS   1 to test at each sample whether every time-step there is in an empty brick
 //   CUSTOM_READS_INDEX  the scene's own compositor (tc_custom.glsl) returns a time-step index
-// Each is a switch and not a run-time test because llvmpipe runs both sides of a branch, masked.
+// Each is a switch and not a run-time test because llvmpipe runs both sides of a branch that the 8
+// pixels it shades together disagree on, masked (docs/performance.md, "llvmpipe and branches").
 #if !defined(STYLED) || !defined(HAS_MASKS) || !defined(ALL_AFFINE) || !defined(STRUCTURED_GRIDS) || \
     !defined(UNEVEN_AXES) || !defined(BEAM_GRIDS) || !defined(EVEN_BEAMS) || !defined(PACKED_ALIGNED) ||   \
     !defined(PACKED_VALIDITY) || !defined(MAX_TIME_STEPS) || !defined(COLLECT_STATISTICS) ||             \
