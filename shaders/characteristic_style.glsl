@@ -14,10 +14,10 @@ vec4 styledCharacteristic(TemporalCharacteristic c, vec3 position, inout int fet
     if (c.reads == READS_NOTHING) return vec4(0.0);
     if (COMPOSITOR_READS == READS_COMPOSITED) return c.colorOpacity;
     if (COMPOSITOR_READS == READS_INDEX_TSTF) return styledTimeStep(c.representative, position, fetches);
-    SphereCoordinate sphere = styleCoordinate(c.representative.step, position, fetches);
-    vec4 stf = applyStyle(STF_TRACK, c.representative.density, c.representative.stf, sphere);
-    if (c.reads == READS_STF) return stf;
+    // READS_STF: the representative's STF alone, as final processing shows it outside a mask.
+    TimeStepSample shown = c.representative;
+    if (c.reads == READS_STF) shown.inMask = false;
     float scaled = (c.value - changeRange.x) / (changeRange.y - changeRange.x);
-    vec4 tstf = applyStyle(GRADIENT_TSTF_TRACK, clamp(scaled, 0.0, 1.0), classifyGradientTstf(scaled), sphere);
-    return finalProcessing(stf, tstf, c.representative.inMask);
+    return styledFinal(shown, position, classifyGradientTstf(scaled), GRADIENT_TSTF_TRACK, clamp(scaled, 0.0, 1.0),
+                       fetches);
 }

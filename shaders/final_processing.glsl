@@ -4,6 +4,16 @@
 
 uniform int finalMode;
 
+// Whether finalProcessing's result depends on its STF or on its TSTF argument: a classification
+// that is not shown needs no style (and no gradient for one).
+bool showsStf(bool inRegionOfInterest) {
+    return !inRegionOfInterest || finalMode != FINAL_TSTF;
+}
+
+bool showsTstf(bool inRegionOfInterest) {
+    return inRegionOfInterest && finalMode != FINAL_STF;
+}
+
 vec4 finalProcessing(vec4 stf, vec4 tstf, bool inRegionOfInterest) {
     if (!inRegionOfInterest || finalMode == FINAL_STF) return stf;
     if (finalMode == FINAL_TSTF) return tstf;

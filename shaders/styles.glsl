@@ -64,6 +64,11 @@ vec4 trackStyle(int track, float x, SphereCoordinate sphere) {
     return vec4(look.a > 0.0 ? look.rgb / look.a : vec3(0.0), look.a);
 }
 
+// Whether a track has styles (STYLED_TRACKS), known when the program is compiled.
+bool isStyledTrack(int track) {
+    return (STYLED_TRACKS & (1 << track)) != 0;
+}
+
 // A classification (colour, opacity) with its track's style applied, if the track has styles.
 vec4 applyStyle(int track, float x, vec4 classification, SphereCoordinate sphere) {
 #if !STYLED
@@ -72,7 +77,7 @@ vec4 applyStyle(int track, float x, vec4 classification, SphereCoordinate sphere
 #endif
     // A track without styles has no style code in the program: `track` is a constant at every
     // call, so this test is decided when the program is compiled.
-    if ((STYLED_TRACKS & (1 << track)) == 0) return classification;
+    if (!isStyledTrack(track)) return classification;
     vec4 styled = trackStyle(track, x, sphere);
     return vec4(styled.rgb, classification.a * styled.a);
 }

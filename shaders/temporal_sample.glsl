@@ -87,10 +87,23 @@ SphereCoordinate styleCoordinate(int step, vec3 position, inout int fetches) {
 #endif
 }
 
+// The final processing of an STF classification and a TSTF one (`tstfTrack`), each styled where
+// it has styles and is shown. Only then is the sphere coordinate (a six-fetch gradient) needed:
+// outside the masks of a scene whose STF has no styles there is none. A run-time test, and llvmpipe
+// skips its body for every block of 8 pixels that agree (docs/performance.md, "llvmpipe and
+// branches"); the picture is the same either way.
+vec4 styledFinal(TimeStepSample s, vec3 position, vec4 tstf, int tstfTrack, float tstfX, inout int fetches) {
+    bool stfShown = showsStf(s.inMask);
+    bool tstfShown = showsTstf(s.inMask);
+    SphereCoordinate sphere = SphereCoordinate(vec2(0.5));
+    if ((stfShown && isStyledTrack(STF_TRACK)) || (tstfShown && isStyledTrack(tstfTrack)))
+        sphere = styleCoordinate(s.step, position, fetches);
+    vec4 stf = stfShown ? applyStyle(STF_TRACK, s.density, s.stf, sphere) : s.stf;
+    vec4 styledTstf = tstfShown ? applyStyle(tstfTrack, tstfX, tstf, sphere) : tstf;
+    return finalProcessing(stf, styledTstf, s.inMask);
+}
+
 // One time-step's own temporal style: its STF and its index TSTF, styled, after final processing.
 vec4 styledTimeStep(TimeStepSample s, vec3 position, inout int fetches) {
-    vec4 tstf = classifyIndexTstf(s.step);
-    SphereCoordinate sphere = styleCoordinate(s.step, position, fetches);
-    return finalProcessing(applyStyle(STF_TRACK, s.density, s.stf, sphere),
-                           applyStyle(INDEX_TSTF_TRACK, float(s.step), tstf, sphere), s.inMask);
+    return styledFinal(s, position, classifyIndexTstf(s.step), INDEX_TSTF_TRACK, float(s.step), fetches);
 }
