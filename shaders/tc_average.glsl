@@ -4,6 +4,7 @@
 #include "temporal_sample.glsl"
 
 const int COMPOSITOR_READS = READS_COMPOSITED;
+const bool COMPOSITOR_IGNORES_TRANSPARENT = true;
 
 struct CompositorState {
     vec4 premultipliedSum;

@@ -5,6 +5,7 @@
 #include "temporal_sample.glsl"
 
 const int COMPOSITOR_READS = READS_COMPOSITED;
+const bool COMPOSITOR_IGNORES_TRANSPARENT = true;
 
 // The walk meets the time-steps in the order the ray enters their grids, not in time order: each
 // one's colour waits here, indexed by time-step, until the finish composites them in order. Marked

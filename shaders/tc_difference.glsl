@@ -4,6 +4,7 @@
 #include "temporal_sample.glsl"
 
 const int COMPOSITOR_READS = READS_GRADIENT_TSTF;
+const bool COMPOSITOR_IGNORES_TRANSPARENT = false;
 
 uniform ivec2 compositorSteps;  // from, to
 

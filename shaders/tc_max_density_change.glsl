@@ -5,6 +5,7 @@
 #include "temporal_sample.glsl"
 
 const int COMPOSITOR_READS = READS_GRADIENT_TSTF;
+const bool COMPOSITOR_IGNORES_TRANSPARENT = false;
 
 struct CompositorState {
     float minimumDensity;

@@ -5,6 +5,7 @@
 #include "temporal_sample.glsl"
 
 const int COMPOSITOR_READS = READS_INDEX_TSTF;
+const bool COMPOSITOR_IGNORES_TRANSPARENT = true;
 
 struct CompositorState {
     TimeStepSample winner;

@@ -4,6 +4,9 @@
 // function that reads it; styledCharacteristic() (characteristic_style.glsl) applies that transfer
 // function, the styles and the final processing. A compositor module (tc_*.glsl) defines
 //   const int COMPOSITOR_READS         READS_INDEX_TSTF, READS_GRADIENT_TSTF or READS_COMPOSITED
+//   const bool COMPOSITOR_IGNORES_TRANSPARENT
+//                                      true when compositorAccumulate leaves out every time-step
+//                                      whose STF opacity is 0: the walks may then not hand those over
 //   struct CompositorState
 //   CompositorState compositorInit()
 //   void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 position, inout int fetches)

@@ -15,12 +15,22 @@ struct TemporalSample {
     float emptyUntil;
 };
 
+// Densities outside this range have STF opacity 0 (render/transfer_tables.h, visibleDensityRange).
+uniform vec2 stfVisibleRange;
+
+bool stfMayBeVisible(float density) {
+    return density >= stfVisibleRange.x && density <= stfVisibleRange.y;
+}
+
 // `atlasSample`: the time-step's density and mask at the sample; `position`: the sample in the world.
 void visitTimeStep(inout CompositorState state, int step, AtlasSample atlasSample, vec3 position,
                    inout TemporalSample result) {
     result.contributing += 1;
     // No data here: transparent, and left out of the temporal characteristic.
     if (isMissingDensity(atlasSample.density)) return;
+    // Transparent under the STF: a compositor that leaves such time-steps out needs neither the STF
+    // lookup nor its own work (llvmpipe skips them for 8-pixel blocks that agree).
+    if (COMPOSITOR_IGNORES_TRANSPARENT && !stfMayBeVisible(atlasSample.density)) return;
     vec4 stf = classifyStf(atlasSample.density);
     compositorAccumulate(state, TimeStepSample(step, atlasSample.density, stf, atlasSample.inMask), position, result.fetches);
 }

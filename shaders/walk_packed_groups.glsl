@@ -44,6 +44,14 @@ void accumulateTimeSteps(inout CompositorState state, SamplePoint point, inout T
         // ends there, where a test in the loop would still run the missing lanes (llvmpipe runs
         // a loop pass that every pixel skips, masked).
         int lanes = min(4, timeStepCount - 4 * group);
+        // All four transparent under the STF (or without data): nothing for a compositor that
+        // leaves transparent time-steps out. They still count as met, so the ray does not jump.
+        if (COMPOSITOR_IGNORES_TRANSPARENT && !stfMayBeVisible(groupDensities.x) &&
+            !stfMayBeVisible(groupDensities.y) && !stfMayBeVisible(groupDensities.z) &&
+            !stfMayBeVisible(groupDensities.w)) {
+            result.contributing += lanes;
+            continue;
+        }
         for (int lane = 0; lane < lanes; ++lane) {
             int step = 4 * group + lane;
             if (step < exposedSteps.x || step > exposedSteps.y) continue;

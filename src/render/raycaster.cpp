@@ -129,6 +129,7 @@ void Raycaster::draw(const RaycastVariant& variant, const RaycastParameters& par
     program.set("changeRange", parameters.changeRange);
     const TemporalCompositorInfo& compositor = compositorInfo(variant.compositor);
     if (compositor.takesThreshold) program.set("compositorThreshold", parameters.compositorThreshold);
+    program.set("stfVisibleRange", parameters.stfVisibleRange);
     if (compositor.takesSteps) program.set("compositorSteps", parameters.compositorSteps);
     if (variant.walk == TimeStepWalk::PackedGroups) {
         program.set("packedGroupCount", parameters.packedGroupCount);

@@ -1,6 +1,8 @@
 // Baking transfer functions into lookup tables.
 #include "tstyles/render/transfer_tables.h"
 
+#include <algorithm>
+
 #include "tstyles/render/shader_contract.h"
 
 namespace tstyles {
@@ -27,6 +29,19 @@ std::vector<glm::vec4> bakeTransferTable(const TransferFunction1D& function) {
     for (int i = 0; i < kTransferTableSize; ++i)
         entries[i] = toVec4(function.evaluate(double(i) / double(kTransferTableSize - 1)));
     return entries;
+}
+
+glm::vec2 visibleDensityRange(const std::vector<glm::vec4>& table) {
+    const auto visible = [](const glm::vec4& entry) { return entry.a > 0.0f; };
+    const auto first = std::find_if(table.begin(), table.end(), visible);
+    if (first == table.end() || table.size() < 2) return {2.0f, -1.0f};
+    const auto last = std::find_if(table.rbegin(), table.rend(), visible);
+    const float step = 1.0f / float(table.size() - 1);
+    // A lookup at x blends the entries either side of x (size - 1); x at least an entry and a half
+    // below the first visible entry blends two transparent ones.
+    const float low = (float(first - table.begin()) - 1.5f) * step;
+    const float high = (float(table.rend() - last - 1) + 1.5f) * step;
+    return {low, high};
 }
 
 std::vector<glm::vec4> bakeIndexTstf(const IndexTstf& tstf, std::size_t timeStepCount) {

@@ -31,6 +31,8 @@ struct RaycastParameters {
     // The compositor's options (those its table line takes): first-arrival and last-above's
     // density threshold, difference's time-steps [from, to].
     float compositorThreshold = 0.5f;
+    // visibleDensityRange of the STF's table: time-steps outside it are transparent.
+    glm::vec2 stfVisibleRange{0.0f, 1.0f};
     glm::ivec2 compositorSteps{0};
     // The time-steps that take part, first and last inclusive (the scene's exposure, or a solo step).
     glm::ivec2 exposedSteps{0, std::numeric_limits<int>::max()};

@@ -19,6 +19,10 @@ inline constexpr int kTransferTableSize = 1024;
 
 // The table a 1D transfer function over [0,1] becomes (RGBA, straight colour and opacity).
 std::vector<glm::vec4> bakeTransferTable(const TransferFunction1D& function);
+// The densities where a baked table's opacity may be above 0, as (lowest, highest), with half an
+// entry of margin for the filtering's rounding: outside it the table's lookup gives exactly 0
+// opacity. (2, -1), an empty range, when the table is transparent everywhere.
+glm::vec2 visibleDensityRange(const std::vector<glm::vec4>& table);
 // One RGBA entry per time-step.
 std::vector<glm::vec4> bakeIndexTstf(const IndexTstf& tstf, std::size_t timeStepCount);
 
