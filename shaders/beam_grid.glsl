@@ -49,7 +49,6 @@ float fractionalBeamIndex(int first, int count, float angle) {
 struct EvenBeamFan {
     vec4 angles;      // x, z: the first azimuth and elevation (radians); y, w: beams per radian
     vec4 ranges;      // x, y: minimum and maximum range; z: range samples per unit of range
-    vec3 lastSample;  // dims - 1
 };
 
 EvenBeamFan evenBeamFanOf(int step) {
@@ -61,19 +60,18 @@ EvenBeamFan evenBeamFanOf(int step) {
     float lastElevation = beamAngles.angles[info.grid.z + int(lastSample.y)];
     return EvenBeamFan(vec4(firstAzimuth, lastSample.x / (lastAzimuth - firstAzimuth), firstElevation,
                             lastSample.y / (lastElevation - firstElevation)),
-                       vec4(info.beamRange.xy, lastSample.z / (info.beamRange.y - info.beamRange.x), 0.0),
-                       lastSample);
+                       vec4(info.beamRange.xy, lastSample.z / (info.beamRange.y - info.beamRange.x), 0.0));
 }
 
-// beamVoxel() for an evenly spaced fan; outside the fan xyz run on past its faces (beamVoxel's
-// callers clamp them to the grid).
-vec4 evenBeamVoxel(EvenBeamFan fan, vec3 local) {
+// beamVoxel() for an evenly spaced fan with samples 0 .. lastSample (dims - 1); outside the fan xyz
+// run on past its faces (beamVoxel's callers clamp them to the grid).
+vec4 evenBeamVoxel(EvenBeamFan fan, vec3 lastSample, vec3 local) {
     float range = length(local);
     float across = (atan(local.x, local.z) - fan.angles.x) * fan.angles.y;
     float along = (atan(local.y, local.z) - fan.angles.z) * fan.angles.w;
     float rangeSample = (range - fan.ranges.x) * fan.ranges.z;
-    bool inside = local.z > 0.0 && across >= 0.0 && across <= fan.lastSample.x && along >= 0.0 &&
-                  along <= fan.lastSample.y && range >= fan.ranges.x && range <= fan.ranges.y;
+    bool inside = local.z > 0.0 && across >= 0.0 && across <= lastSample.x && along >= 0.0 &&
+                  along <= lastSample.y && range >= fan.ranges.x && range <= fan.ranges.y;
     return vec4(across, along, rangeSample, inside ? 1.0 : 0.0);
 }
 
@@ -89,7 +87,7 @@ mat3 evenBeamJacobian(EvenBeamFan fan, vec3 local) {
 // xyz: fractional sample coordinates of a grid-local position; w: 1 inside the fan, 0 outside.
 vec4 beamVoxel(int step, vec3 local) {
 #if EVEN_BEAMS
-    return evenBeamVoxel(evenBeamFanOf(step), local);
+    return evenBeamVoxel(evenBeamFanOf(step), timeSteps.steps[step].dims.xyz - 1.0, local);
 #endif
     TimeStepInfo info = timeSteps.steps[step];
     float range = length(local);

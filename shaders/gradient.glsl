@@ -65,7 +65,7 @@ vec3 beamWorldGradient(int step, vec3 worldPosition) {
     // fan's coordinates (a range), so this is the six-mapping result to well under 1/255; it saves
     // six mappings (two arc tangents each) per styled time-step and sample.
     EvenBeamFan fan = evenBeamFanOf(step);
-    vec3 voxel = evenBeamVoxel(fan, local).xyz;
+    vec3 voxel = evenBeamVoxel(fan, upperLimit, local).xyz;
     mat3 worldStepInSamples = h * evenBeamJacobian(fan, local) * mat3(worldToLocal);
 #endif
     vec3 gradient;

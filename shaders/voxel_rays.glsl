@@ -63,7 +63,7 @@ vec4 voxelInShapeAtSample(int slot, int step, vec3 position, float t) {
 #if BEAM_GRIDS
     if (activeBeam[slot]) {
 #if EVEN_BEAMS
-        vec4 beam = evenBeamVoxel(activeBeamFan[slot], gridLocalAtSample(slot, t));
+        vec4 beam = evenBeamVoxel(activeBeamFan[slot], activeVoxelUpper[slot], gridLocalAtSample(slot, t));
 #else
         vec4 beam = beamVoxel(step, gridLocalAtSample(slot, t));
 #endif
