@@ -207,7 +207,12 @@ INSTANTIATE_TEST_SUITE_P(BenchmarkScenes, PackedAlignedEquivalence,
                                            BundledScene{"figure1-styled-focus-step3", "superellipsoid-aligned"},
                                            BundledScene{"figure4-styled-max-density-change", "superellipsoid-aligned"},
                                            BundledScene{"figure5-focus-step5", "hurricane"},
-                                           BundledScene{"figure6-left-max-density-change", "hurricane"}),
+                                           BundledScene{"figure6-left-max-density-change", "hurricane"},
+                                           // Every other compositor on the packed path (the
+                                           // hurricane's compositor scenes).
+                                           BundledScene{"compositors-hurricane-index", "hurricane"},
+                                           BundledScene{"compositors-hurricane-signed", "hurricane"},
+                                           BundledScene{"compositors-hurricane-spread", "hurricane"}),
                          [](const auto& parameter) { return testNameOf(parameter.param); });
 
 }  // namespace

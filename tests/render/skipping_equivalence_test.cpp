@@ -31,7 +31,7 @@ TEST_P(SkippingEquivalence, OptimisedAndNaiveRaycastersGiveTheSameImage) {
                     {kPixelThreshold, kMaxFailingFraction, kMaxMeanDelta});
 }
 
-std::vector<BundledScene> benchmarkCases() {
+std::vector<BundledScene> bundledSceneCases() {
     std::vector<BundledScene> cases;
     // The datasets of `tstyles bench` (src/cli/bench_datasets.cpp).
     for (const char* dataset : {"superellipsoid", "superellipsoid-aligned"})
@@ -44,10 +44,18 @@ std::vector<BundledScene> benchmarkCases() {
     // The sonar survey with its own scenes (the Figure 4 cameras stand inside its fans).
     for (const char* scene : {"figure6-centre-index-tstf", "figure6-right-max-density-change"})
         cases.push_back({scene, "sonar"});
+    // Every other bundled scene (data/scenes) on its own dataset.
+    for (const char* scene : {"figure1-focus-step3", "figure1-focus-step6", "figure1-styled-focus-step6",
+                               "figure4-styled-temporal-average", "figure4-styled-temporal-mip"})
+        cases.push_back({scene, "superellipsoid"});
+    for (const char* scene : {"figure5-focus-step3", "figure5-focus-step8", "compositors-hurricane-index",
+                              "compositors-hurricane-signed", "compositors-hurricane-spread"})
+        cases.push_back({scene, "hurricane"});
+    cases.push_back({"warped-box-styled", "warped-box"});
     return cases;
 }
 
-INSTANTIATE_TEST_SUITE_P(BenchmarkScenes, SkippingEquivalence, ::testing::ValuesIn(benchmarkCases()),
+INSTANTIATE_TEST_SUITE_P(BenchmarkScenes, SkippingEquivalence, ::testing::ValuesIn(bundledSceneCases()),
                          [](const auto& parameter) { return testNameOf(parameter.param); });
 
 // The per-sample empty-brick test is compiled in only where the STF leaves enough bricks empty
