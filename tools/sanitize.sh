@@ -15,8 +15,12 @@ cmake --build "$build" -j "$(nproc)"
 echo "sanitize: build took $((SECONDS - start)) s"
 
 # Any report fails the test that caused it: UBSan stops (-fno-sanitize-recover), ASan and LSan exit
-# non-zero. LSan ignores only the Mesa driver's memory at exit (tools/sanitizers/lsan.supp).
-export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=0
+# non-zero. LSan ignores only the Mesa driver's memory at exit (tools/sanitizers/lsan.supp), which
+# it can name only while the driver is still loaded: keep_libraries_loaded.so makes dlclose() keep
+# it (preloaded ahead of libasan, hence verify_asan_link_order=0).
+cc -shared -fPIC -o "$build/keep_libraries_loaded.so" "$root/tools/sanitizers/keep_libraries_loaded.c"
+export LD_PRELOAD="$build/keep_libraries_loaded.so"
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=0:verify_asan_link_order=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export LSAN_OPTIONS="suppressions=$root/tools/sanitizers/lsan.supp:print_suppressions=0"
 start=$SECONDS
@@ -27,5 +31,6 @@ ctest --output-on-failure -j "$(nproc)" ${TSTYLES_SANITIZE_EXCLUDE:+-E "$TSTYLES
 echo "sanitize: tests took $((SECONDS - start)) s"
 
 start=$SECONDS
+unset LD_PRELOAD
 "$root/tools/fuzz.sh" all "${FUZZ_SECONDS:-20}"
 echo "sanitize: fuzzing took $((SECONDS - start)) s"
