@@ -91,7 +91,7 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     parameters.finalMode = scene.finalMode;
     parameters.changeRange = glm::vec2(float(scene.gradientTstf.rangeLow), float(scene.gradientTstf.rangeHigh));
     parameters.compositorThreshold = float(scene.compositorOptions.threshold);
-    parameters.stfVisibleRange = visibleDensityRange(transferTables_.stfEntries());
+    parameters.stfVisibleRange = transferTables_.stfVisibleRange();
     if (compositorInfo(scene.compositor).takesSteps)
         parameters.compositorSteps = scene.compositorOptions.differenceSteps(gpuSeries_->timeStepCount());
     parameters.exposedSteps = options.soloTimeStep ? glm::ivec2(*options.soloTimeStep)

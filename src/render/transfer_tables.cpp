@@ -58,6 +58,7 @@ bool TransferTables::update(const Stf& stf, const IndexTstf& indexTstf, const Gr
     const bool stfChanged = !bakedStf_ || !(*bakedStf_ == stf);
     if (stfChanged) {
         stfEntries_ = bakeTransferTable(stf.curve);
+        stfVisibleRange_ = visibleDensityRange(stfEntries_);
         upload(stfTable_, stfEntries_);
         bakedStf_ = stf;
     }

@@ -35,6 +35,8 @@ public:
                 std::size_t timeStepCount);
     // The STF as baked into its table.
     const std::vector<glm::vec4>& stfEntries() const { return stfEntries_; }
+    // visibleDensityRange of the STF's table, worked out when the STF changes.
+    glm::vec2 stfVisibleRange() const { return stfVisibleRange_; }
     void bind() const;
 
 private:
@@ -43,6 +45,7 @@ private:
     Buffer indexTstfBuffer_;
     std::optional<Stf> bakedStf_;
     std::vector<glm::vec4> stfEntries_;
+    glm::vec2 stfVisibleRange_{2.0f, -1.0f};
     std::optional<IndexTstf> bakedIndexTstf_;
     std::optional<TransferFunction1D> bakedGradientCurve_;
     std::size_t bakedTimeStepCount_ = 0;
