@@ -14,6 +14,10 @@ uniform float stepLength;       // world units between samples
 uniform float referenceLength;  // the length over which a transfer-function opacity applies
 uniform float terminationOpacity;
 uniform vec4 background;        // straight (not premultiplied) colour and opacity
+// Rays are clipped to this world box: one process's block in distributed rendering (sort-last,
+// docs/scaling.md), else a box around everything.
+uniform vec3 clipLower;
+uniform vec3 clipUpper;
 
 // 64-bit counters as (low, high) pairs (GLSL 4.50 has only 32-bit atomics), filled with
 // COLLECT_STATISTICS; `cutShortRays` always.
@@ -38,7 +42,7 @@ layout(location = 0) out vec4 fragmentColor;  // premultiplied by alpha
 
 void main() {
     Ray ray = rayForPixel(gl_FragCoord.xy);
-    vec2 rayDepth = extractVolumeOverlap(ivec2(gl_FragCoord.xy));
+    vec2 rayDepth = extractVolumeOverlap(ivec2(gl_FragCoord.xy), rayBoxInterval(ray, clipLower, clipUpper));
     // A ray that meets no time-step would give the background, which the renderer has already
     // cleared the target to. Discarding it lets llvmpipe skip the rest of the shader for a block of
     // pixels that all miss (a branch would not: both sides run, masked).

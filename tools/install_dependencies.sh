@@ -12,6 +12,7 @@ packages=(
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   libfreetype-dev fonts-dejavu-core
   pybind11-dev python3-dev python3-numpy python3-xarray python3-netcdf4 python3-pytest
+  libopenmpi-dev openmpi-bin
 )
 
 missing=()

@@ -4,6 +4,7 @@
 
 #include "commands.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/distributed/mpi_session.h"
 
 int main(int argc, char** argv) {
     using namespace tstyles;
@@ -23,6 +24,8 @@ int main(int argc, char** argv) {
     try {
         for (const auto& command : commands)
             if (command.parsed->parsed()) return command.run();
+    } catch (const FailedOnAnotherProcess& failure) {
+        return failure.exitCode();  // process 0 of the MPI run says why
     } catch (const InputError& error) {
         std::cerr << "tstyles: " << error.what() << "\n";
         return cli::kExitBadInput;

@@ -10,6 +10,7 @@
 #include "scene_source.h"
 #include "tstyles/scene/automatic_scene.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/distributed/distributed_rendering.h"
 #include "tstyles/image/image_io.h"
 #include "tstyles/render/renderer.h"
 #include "tstyles/scene/scene_file.h"
@@ -30,6 +31,7 @@ struct RenderOptions {
     std::optional<int> frame;      // --frame K: the scene of frame K of the animation
     AnimationOptions animation;    // the presets of `animate`, for --frame
     AnnotationOptions annotations;
+    bool distributed = false;      // --distributed: sort-last over the MPI processes
 };
 
 // --style NAME=FILE: every colour node of the scene that uses style NAME reads FILE instead, so a
@@ -52,8 +54,8 @@ void overrideStyles(Scene& scene, const std::vector<std::string>& overrides) {
     }
 }
 
-int runRender(const RenderOptions& options) {
-    requireWritableImagePath(options.output);
+// The scene and series the options ask for, fitted to each other, at the frame asked for.
+SceneOnSeries fittedSceneFor(const RenderOptions& options) {
     SceneAndSeries opened = openSceneOrDataset(options.inputs, options.datasetFiles, options.dataset);
     Scene& scene = opened.scene;
     if (options.width) scene.width = *options.width;
@@ -76,6 +78,19 @@ int runRender(const RenderOptions& options) {
     }
     fitted.scene.exposure.stepsOf(fitted.series.size(), options.inputs.front());
     fitted.scene.compositorOptions.differenceSteps(fitted.series.size(), options.inputs.front());
+    return fitted;
+}
+
+void warnAboutCutShortRays(const RenderOptions& options, const Renderer& renderer, const HeadlessContext& context) {
+    if (const std::uint32_t cutShort = renderer.lastCutShortRays(); cutShort > 0)
+        std::cerr << "warning: " << options.inputs.front().string() << ": " << cutShort << " of the image's rays were cut short "
+                  << "by the OpenGL driver's limit on loop passes per pixel (" << context.description()
+                  << "), so those pixels are incomplete; a larger raycast.step takes fewer samples per ray\n";
+}
+
+int runRender(const RenderOptions& options) {
+    requireWritableImagePath(options.output);
+    SceneOnSeries fitted = fittedSceneFor(options);
     const Series& series = fitted.series;
     const auto context = createHeadlessContext(parseBackend(options.gl.backend), glDebugOutputRequested());
     Renderer renderer(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
@@ -86,13 +101,44 @@ int runRender(const RenderOptions& options) {
     const double milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     writeImage(image, options.output);
-    if (const std::uint32_t cutShort = renderer.lastCutShortRays(); cutShort > 0)
-        std::cerr << "warning: " << options.inputs.front().string() << ": " << cutShort << " of the image's rays were cut short "
-                  << "by the OpenGL driver's limit on loop passes per pixel (" << context->description()
-                  << "), so those pixels are incomplete; a larger raycast.step takes fewer samples per ray\n";
+    warnAboutCutShortRays(options, renderer, *context);
     std::cout << "wrote " << options.output.string() << " (" << fitted.scene.width << "x" << fitted.scene.height
               << ", " << toString(fitted.scene.compositor) << ", " << series.size() << " time-steps, " << milliseconds
               << " ms incl. shader compilation; " << context->description() << ")\n";
+    return kExitSuccess;
+}
+
+// --distributed: every process reads the scene and the series, keeps its block, renders it; the
+// frames meet on process 0, which writes the image (docs/scaling.md).
+int runDistributedRender(const RenderOptions& options) {
+    const MpiSession mpi;
+    std::optional<SceneOnSeries> fitted;
+    mpi.together("reading the scene and the series", [&] {
+        if (mpi.isFirst()) requireWritableImagePath(options.output);
+        fitted = fittedSceneFor(options);
+    });
+    std::unique_ptr<HeadlessContext> context;
+    std::optional<Renderer> renderer;
+    mpi.together("starting OpenGL", [&] {
+        context = createHeadlessContext(parseBackend(options.gl.backend), glDebugOutputRequested());
+        renderer.emplace(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
+    });
+    const std::size_t timeSteps = fitted->series.size();
+    DistributedRendering rendering(mpi, *renderer, std::move(*fitted));
+    const Scene& scene = rendering.scene();
+    const Image image = rendering.render(scene);
+    const double renderMs = mpi.maximum(rendering.lastTimes().render);
+    const double compositeMs = mpi.maximum(rendering.lastTimes().composite);
+    const double blockVoxels = mpi.maximum(double(rendering.blockVoxelCount()));
+    const double blockBytes = mpi.maximum(double(renderer->seriesTextureBytes()));
+    if (!mpi.isFirst()) return kExitSuccess;
+    writeImage(image, options.output);
+    warnAboutCutShortRays(options, *renderer, *context);
+    std::cout << "wrote " << options.output.string() << " (" << scene.width << "x" << scene.height << ", "
+              << toString(scene.compositor) << ", " << timeSteps << " time-steps, " << mpi.processCount()
+              << " processes: render " << renderMs << " ms incl. shader compilation, composite " << compositeMs
+              << " ms (slowest process); largest block " << blockVoxels << " voxels, " << blockBytes / (1024.0 * 1024.0)
+              << " MiB of textures; " << context->description() << ")\n";
     return kExitSuccess;
 }
 
@@ -127,7 +173,10 @@ Command addRenderCommand(CLI::App& app) {
         ->check(CLI::Range(0, 1000000));
     addAnimationOptions(*command, options->animation);
     addAnnotationOptions(*command, options->annotations);
-    return {command, [options] { return runRender(*options); }};
+    command->add_flag("--distributed", options->distributed,
+                      "Sort-last rendering over the MPI processes this runs in (mpirun -np N tstyles render ... "
+                      "--distributed): each keeps one block of the series (docs/scaling.md)");
+    return {command, [options] { return options->distributed ? runDistributedRender(*options) : runRender(*options); }};
 }
 
 }  // namespace tstyles::cli

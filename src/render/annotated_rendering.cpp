@@ -5,14 +5,24 @@
 
 namespace tstyles {
 
-Image AnnotatedRendering::render(const Scene& scene) {
-    const Bounds all = series_.worldBounds();
-    Image image = renderImage(renderer_, scene, framed_, all);
-    if (!scene.annotations.any()) return image;
+View SceneAnnotator::viewOf(const Scene& scene) const {
+    return resolveView(scene.camera, framed_, series_.worldBounds(), scene.width, scene.height);
+}
+
+void SceneAnnotator::annotate(Image& image, const Scene& scene) {
+    if (!scene.annotations.any()) return;
     if (!font_) font_ = Font::openDefault();
-    const View view = resolveView(scene.camera, framed_, all, scene.width, scene.height);
-    drawAnnotations(image, scene, series_, frame_, view, *font_,
+    drawAnnotations(image, scene, series_, frame_, viewOf(scene), *font_,
                     [this](const std::string& style) { return &styles_.image(style); });
+}
+
+Image AnnotatedRendering::render(const Scene& scene) {
+    const View view = annotator_.viewOf(scene);
+    FrameOptions options;
+    options.size = {scene.width, scene.height};
+    renderer_.draw(scene, view, options);
+    Image image = renderer_.readFrame();
+    annotator_.annotate(image, scene);
     return image;
 }
 

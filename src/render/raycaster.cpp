@@ -125,6 +125,8 @@ void Raycaster::draw(const RaycastVariant& variant, const RaycastParameters& par
     program.set("referenceLength", parameters.referenceLength);
     program.set("terminationOpacity", parameters.terminationOpacity);
     program.set("background", parameters.background);
+    program.set("clipLower", parameters.clipLower);
+    program.set("clipUpper", parameters.clipUpper);
     program.set("finalMode", finalModeCode(parameters.finalMode));
     program.set("changeRange", parameters.changeRange);
     const TemporalCompositorInfo& compositor = compositorInfo(variant.compositor);

@@ -27,11 +27,11 @@ double styleFootprint(const View& view, int imageHeight, double finestSpacing) {
 Renderer::Renderer(ShaderLibrary shaders)
     : shaders_(std::move(shaders)), entryExitBuffers_(shaders_), raycaster_(shaders_) {}
 
-void Renderer::setSeries(const Series& series) {
+void Renderer::setSeries(const Series& series, std::optional<double> wholeFinestSpacing) {
     gpuSeries_.reset();  // free the old atlas before allocating the new one
     gpuSeries_.emplace(series);
     occupancyStale_ = true;
-    finestSpacing_ = series.finestSpacing();
+    finestSpacing_ = wholeFinestSpacing.value_or(series.finestSpacing());
     worldBounds_ = series.worldBounds();
 }
 
@@ -108,14 +108,22 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     parameters.styleTracks = styleTextures_.trackRanges();
     parameters.worldToView = glm::mat3(view.viewMatrix);
     parameters.styleFootprint = float(styleFootprint(view, options.size.y, finestSpacing_));
+    if (options.clipBox) {
+        parameters.clipLower = glm::vec3(options.clipBox->lower);
+        parameters.clipUpper = glm::vec3(options.clipBox->upper);
+    }
     // Rays through pixels outside the series' projected bounds meet no time-step and would give
     // the background: clear to it and raycast only the rectangle that can differ.
     const glm::vec4 premultipliedBackground(glm::vec3(parameters.background) * parameters.background.a,
                                             parameters.background.a);
     glDisable(GL_SCISSOR_TEST);
     glClearNamedFramebufferfv(target_.framebufferId(), GL_COLOR, 0, &premultipliedBackground.x);
-    const PixelRectangle covered =
-        coveredPixels(worldBounds_, view.projectionMatrix * view.viewMatrix, options.size);
+    Bounds rendered = worldBounds_;
+    if (options.clipBox) {
+        rendered.lower = glm::max(rendered.lower, options.clipBox->lower);
+        rendered.upper = glm::max(rendered.lower, glm::min(rendered.upper, options.clipBox->upper));
+    }
+    const PixelRectangle covered = coveredPixels(rendered, view.projectionMatrix * view.viewMatrix, options.size);
     glEnable(GL_SCISSOR_TEST);
     glScissor(covered.offset.x, covered.offset.y, covered.size.x, covered.size.y);
     raycaster_.draw(variant, parameters);

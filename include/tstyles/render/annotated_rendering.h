@@ -13,23 +13,38 @@
 
 namespace tstyles {
 
+// Draws a scene's annotations onto frames of one display series. Reads only the series' times,
+// grids and metadata, never its values.
+class SceneAnnotator {
+public:
+    // `series` is the display series, `framed` what an automatic camera frames, `frame` how the
+    // series was turned for display (fitSceneToSeries); all are kept by reference.
+    SceneAnnotator(const Series& series, const Bounds& framed, const DisplayFrame& frame)
+        : series_(series), framed_(framed), frame_(frame) {}
+    void annotate(Image& image, const Scene& scene);
+    // The view of the scene's camera on the series (what its frames are rendered with).
+    View viewOf(const Scene& scene) const;
+
+private:
+    const Series& series_;
+    const Bounds& framed_;
+    const DisplayFrame& frame_;
+    std::optional<Font> font_;
+    StyleLibrary styles_;  // the lit spheres of styled swatches
+};
+
 class AnnotatedRendering {
 public:
-    // `series` is the display series the renderer holds, `framed` what an automatic camera frames,
-    // `frame` how the series was turned for display (fitSceneToSeries); all are kept by reference.
+    // The renderer holds `series` (see SceneAnnotator for the others).
     AnnotatedRendering(Renderer& renderer, const Series& series, const Bounds& framed, const DisplayFrame& frame)
-        : renderer_(renderer), series_(series), framed_(framed), frame_(frame) {}
+        : renderer_(renderer), annotator_(series, framed, frame) {}
     explicit AnnotatedRendering(Renderer& renderer, const SceneOnSeries& fitted)
         : AnnotatedRendering(renderer, fitted.series, fitted.framed, fitted.frame) {}
     Image render(const Scene& scene);
 
 private:
     Renderer& renderer_;
-    const Series& series_;
-    const Bounds& framed_;
-    const DisplayFrame& frame_;
-    std::optional<Font> font_;
-    StyleLibrary styles_;  // the lit spheres of styled swatches
+    SceneAnnotator annotator_;
 };
 
 }  // namespace tstyles

@@ -45,6 +45,9 @@ struct RaycastParameters {
     std::array<glm::ivec2, 3> styleTracks{};
     glm::mat3 worldToView{1.0f};
     float styleFootprint = 0.0f;
+    // Rays are clipped to this world box (FrameOptions::clipBox); the default holds everything.
+    glm::vec3 clipLower{-std::numeric_limits<float>::max()};
+    glm::vec3 clipUpper{std::numeric_limits<float>::max()};
 };
 
 struct RaycastStatistics {

@@ -35,6 +35,9 @@ struct FrameOptions {
     // The per-sample empty-brick test: by default compiled in where the STF leaves enough bricks
     // empty for it to pay (skipsEmptyBricks); true or false forces it, for comparison. Same image.
     std::optional<bool> emptyBrickTest;
+    // Renders only the parts of the rays inside this world box (one process's block of a
+    // distributed render, docs/scaling.md); none: whole rays.
+    std::optional<Bounds> clipBox;
 };
 
 class Renderer {
@@ -45,7 +48,10 @@ public:
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    void setSeries(const Series& series);
+    // `wholeFinestSpacing`: where `series` is one block cut from a larger series (distributed
+    // rendering), the finest spacing of the whole, so that the default step, the opacity reference
+    // length and the style footprint are the whole series' (a block can lose its finest cells).
+    void setSeries(const Series& series, std::optional<double> wholeFinestSpacing = std::nullopt);
     bool hasSeries() const { return gpuSeries_.has_value(); }
 
     // Renders into the internal target (no read-back).

@@ -1,0 +1,61 @@
+// Sort-last rendering of one fitted scene over MPI processes (docs/scaling.md): the series' world
+// is split into one block per process (BlockDecomposition); each process keeps only its block of
+// every time-step (with ghost nodes, so filtering and gradients are seamless), renders its block
+// with the ordinary raycaster, rays clipped to the block, and the frames are composited in
+// visibility order onto process 0 (radix-k), which adds the background and the annotations.
+// A temporal compositor needs every time-step at a sample; each process has all of them for its
+// block, so splitting space is exact where splitting time would not be.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+
+#include "tstyles/distributed/block_decomposition.h"
+#include "tstyles/distributed/mpi_session.h"
+#include "tstyles/render/annotated_rendering.h"
+#include "tstyles/render/renderer.h"
+#include "tstyles/scene/automatic_scene.h"
+
+namespace tstyles {
+
+// Ghost nodes kept around each block: trilinear filtering reads the cell's far nodes and the
+// central-difference gradient one node further.
+inline constexpr int kBlockGhostNodes = 2;
+
+// Per process, what the last frame took (milliseconds).
+struct DistributedFrameTimes {
+    double render = 0.0;     // raycasting the block and reading it back
+    double composite = 0.0;  // radix-k and the gather onto process 0
+};
+
+class DistributedRendering {
+public:
+    // Collective. Keeps this process's block of `fitted`'s series and uploads it into `renderer`
+    // (which needs a current context); process 0 also keeps the series' outline for annotations.
+    DistributedRendering(const MpiSession& mpi, Renderer& renderer, SceneOnSeries fitted);
+
+    // Collective: the scene's frame, annotated, on process 0; an empty image on the others.
+    Image render(const Scene& scene);
+
+    const Scene& scene() const { return scene_; }
+    const Bounds& block() const { return blocks_.block(mpi_.rank()); }
+    std::size_t processCount() const { return std::size_t(mpi_.processCount()); }
+    // Voxels of this process's block over all time-steps, ghosts included.
+    std::size_t blockVoxelCount() const { return blockVoxels_; }
+    const DistributedFrameTimes& lastTimes() const { return lastTimes_; }
+
+private:
+    const MpiSession& mpi_;
+    Renderer& renderer_;
+    Scene scene_;
+    BlockDecomposition blocks_;
+    Bounds wholeBounds_;
+    Bounds framed_;
+    DisplayFrame frame_;
+    Series outline_;  // the series without values: times, grids, metadata (process 0)
+    std::optional<SceneAnnotator> annotator_;
+    std::size_t blockVoxels_ = 0;
+    DistributedFrameTimes lastTimes_;
+};
+
+}  // namespace tstyles

@@ -1,0 +1,50 @@
+// The MPI run a distributed command takes part in: MPI started for the session's life, this
+// process's rank, and failure handled together, so that one process's bad block or lack of memory
+// ends every process with one message instead of leaving the others waiting.
+#pragma once
+
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+namespace tstyles {
+
+// Thrown on the processes other than 0 when a step failed somewhere: process 0 reports it; the
+// others end quietly with the same exit code.
+class FailedOnAnotherProcess : public std::runtime_error {
+public:
+    explicit FailedOnAnotherProcess(int exitCode)
+        : std::runtime_error("failed on another process"), exitCode_(exitCode) {}
+    int exitCode() const { return exitCode_; }
+
+private:
+    int exitCode_;
+};
+
+class MpiSession {
+public:
+    // Starts MPI (a process started without mpirun is a run of one).
+    MpiSession();
+    ~MpiSession();
+    MpiSession(const MpiSession&) = delete;
+    MpiSession& operator=(const MpiSession&) = delete;
+
+    int rank() const { return rank_; }
+    int processCount() const { return processCount_; }
+    bool isFirst() const { return rank_ == 0; }
+
+    // Runs `work` on every process (collective). If it throws on any, every process learns it:
+    // process 0 throws an error of the gravest kind among them (InputError, GlUnavailableError,
+    // else std::runtime_error) whose message names each failing process and its message; the
+    // others throw FailedOnAnotherProcess. `step` names the step for messages ("reading").
+    void together(const std::string& step, const std::function<void()>& work) const;
+
+    // Collective maximum of a value over the processes, on every process.
+    double maximum(double value) const;
+
+private:
+    int rank_ = 0;
+    int processCount_ = 1;
+};
+
+}  // namespace tstyles

@@ -1,0 +1,93 @@
+// One process's part of a sort-last frame (distributed_rendering.h).
+#include "tstyles/distributed/distributed_rendering.h"
+
+#include <chrono>
+
+#include "tstyles/data/series_crop.h"
+#include "tstyles/distributed/sort_last_compositing.h"
+
+namespace tstyles {
+namespace {
+
+// The series' times, grids and metadata without its values: what annotations read.
+Series outlineOf(const Series& series) {
+    Series outline;
+    outline.name = series.name;
+    outline.manifestPath = series.manifestPath;
+    outline.valueRange = series.valueRange;
+    outline.valueUnit = series.valueUnit;
+    outline.precision = series.precision;
+    outline.sourceFormat = series.sourceFormat;
+    outline.axes = series.axes;
+    outline.time = series.time;
+    for (const TimeStep& step : series.steps) {
+        TimeStep kept;
+        kept.time = step.time;
+        kept.grid = step.grid;
+        kept.placement = step.placement;
+        kept.sourceType = step.sourceType;
+        kept.rawRange = step.rawRange;
+        kept.valuesFile = step.valuesFile;
+        kept.maskFile = step.maskFile;
+        outline.steps.push_back(std::move(kept));
+    }
+    return outline;
+}
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+DistributedRendering::DistributedRendering(const MpiSession& mpi, Renderer& renderer, SceneOnSeries fitted)
+    : mpi_(mpi),
+      renderer_(renderer),
+      scene_(std::move(fitted.scene)),
+      blocks_(fitted.series.worldBounds(), mpi.processCount()),
+      wholeBounds_(fitted.series.worldBounds()),
+      framed_(fitted.framed),
+      frame_(fitted.frame) {
+    mpi_.together("keeping this process's block", [&] {
+        if (mpi_.isFirst()) outline_ = outlineOf(fitted.series);
+        const double finestSpacing = fitted.series.finestSpacing();
+        const Series block = cropSeriesToBox(std::move(fitted.series), blocks_.block(mpi_.rank()), kBlockGhostNodes);
+        for (const TimeStep& step : block.steps) blockVoxels_ += gridVoxelCount(step.grid);
+        renderer_.setSeries(block, finestSpacing);
+    });
+    if (mpi_.isFirst()) annotator_.emplace(outline_, framed_, frame_);
+}
+
+Image DistributedRendering::render(const Scene& scene) {
+    const View view = resolveView(scene.camera, framed_, wholeBounds_, scene.width, scene.height);
+    const glm::dmat4 inverseViewProjection = glm::inverse(view.projectionMatrix * view.viewMatrix);
+    Image local;
+    const auto renderStart = std::chrono::steady_clock::now();
+    mpi_.together("rendering this process's block", [&] {
+        // Blocks are rendered over nothing; process 0 puts the background behind the composite.
+        Scene blockScene = scene;
+        blockScene.background = glm::dvec4(0.0);
+        FrameOptions options;
+        options.size = {scene.width, scene.height};
+        options.clipBox = blocks_.block(mpi_.rank());
+        renderer_.draw(blockScene, view, options);
+        local = renderer_.readFrame();
+    });
+    lastTimes_.render = millisecondsSince(renderStart);
+    const auto compositeStart = std::chrono::steady_clock::now();
+    Image frame = compositeSortLast(mpi_, blocks_, local, inverseViewProjection);
+    lastTimes_.composite = millisecondsSince(compositeStart);
+    if (!mpi_.isFirst()) return frame;
+
+    const glm::vec4 background(scene.background);
+    const glm::vec4 behind(glm::vec3(background) * background.a, background.a);
+    for (std::size_t pixel = 0; pixel < frame.rgba.size(); pixel += 4) {
+        const glm::vec4 composited =
+            over(glm::vec4(frame.rgba[pixel], frame.rgba[pixel + 1], frame.rgba[pixel + 2], frame.rgba[pixel + 3]), behind);
+        std::copy_n(&composited.x, 4, frame.rgba.data() + pixel);
+    }
+    annotator_->annotate(frame, scene);
+    return frame;
+}
+
+}  // namespace tstyles
