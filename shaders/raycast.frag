@@ -18,6 +18,18 @@ uniform vec4 background;        // straight (not premultiplied) colour and opaci
 // docs/scaling.md), else a box around everything.
 uniform vec3 clipLower;
 uniform vec3 clipUpper;
+// The world box of the whole series. Segment ends sit on a lattice of stepLength along each ray,
+// anchored where the ray enters this box, so that a jump over empty space, a clip or a process's
+// block (which starts its rays elsewhere) resumes on the same samples as a plain march.
+uniform vec3 seriesLower;
+uniform vec3 seriesUpper;
+
+// The first lattice point after t; a segment shorter than 1 % of a step joins the next one (float
+// rounding must never make an empty segment).
+float nextLatticePoint(float t, float anchor) {
+    float point = anchor + (floor((t - anchor) / stepLength) + 1.0) * stepLength;
+    return point <= t + 0.01 * stepLength ? point + stepLength : point;
+}
 
 // 64-bit counters as (low, high) pairs (GLSL 4.50 has only 32-bit atomics), filled with
 // COLLECT_STATISTICS; `cutShortRays` always.
@@ -52,11 +64,13 @@ void main() {
     vec4 accumulated = vec4(0.0);  // premultiplied colour, opacity
     int samples = 0;
     int fetches = 0;
+    float anchor = max(rayBoxInterval(ray, seriesLower, seriesUpper).x, 0.0);
     float t = rayDepth.x;
     while (t < rayDepth.y && accumulated.a < terminationOpacity) {
-        // Each sample stands for the segment [t, segmentEnd]; the last one is shortened to end
-        // exactly at the exit, so a slab of thickness D gets exactly D worth of opacity.
-        float segmentEnd = min(t + stepLength, rayDepth.y);
+        // Each sample stands for the segment [t, segmentEnd], from t to the next lattice point; the
+        // first after an entry or a jump and the last, at the exit, are shorter, so a slab of
+        // thickness D gets exactly D worth of opacity.
+        float segmentEnd = min(nextLatticePoint(t, anchor), rayDepth.y);
         float middle = 0.5 * (t + segmentEnd);
         advanceWalk(middle);
         TemporalSample styled = compositeTemporal(ray.origin + ray.direction * middle, middle);

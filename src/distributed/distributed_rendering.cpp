@@ -50,10 +50,10 @@ DistributedRendering::DistributedRendering(const MpiSession& mpi, Renderer& rend
       frame_(fitted.frame) {
     mpi_.together("keeping this process's block", [&] {
         if (mpi_.isFirst()) outline_ = outlineOf(fitted.series);
-        const double finestSpacing = fitted.series.finestSpacing();
+        const WholeSeries whole{fitted.series.finestSpacing(), wholeBounds_};
         const Series block = cropSeriesToBox(std::move(fitted.series), blocks_.block(mpi_.rank()), kBlockGhostNodes);
         for (const TimeStep& step : block.steps) blockVoxels_ += gridVoxelCount(step.grid);
-        renderer_.setSeries(block, finestSpacing);
+        renderer_.setSeries(block, whole);
     });
     if (mpi_.isFirst()) annotator_.emplace(outline_, framed_, frame_);
 }

@@ -127,6 +127,8 @@ void Raycaster::draw(const RaycastVariant& variant, const RaycastParameters& par
     program.set("background", parameters.background);
     program.set("clipLower", parameters.clipLower);
     program.set("clipUpper", parameters.clipUpper);
+    program.set("seriesLower", parameters.seriesLower);
+    program.set("seriesUpper", parameters.seriesUpper);
     program.set("finalMode", finalModeCode(parameters.finalMode));
     program.set("changeRange", parameters.changeRange);
     const TemporalCompositorInfo& compositor = compositorInfo(variant.compositor);

@@ -27,12 +27,13 @@ double styleFootprint(const View& view, int imageHeight, double finestSpacing) {
 Renderer::Renderer(ShaderLibrary shaders)
     : shaders_(std::move(shaders)), entryExitBuffers_(shaders_), raycaster_(shaders_) {}
 
-void Renderer::setSeries(const Series& series, std::optional<double> wholeFinestSpacing) {
+void Renderer::setSeries(const Series& series, const std::optional<WholeSeries>& whole) {
     gpuSeries_.reset();  // free the old atlas before allocating the new one
     gpuSeries_.emplace(series);
     occupancyStale_ = true;
-    finestSpacing_ = wholeFinestSpacing.value_or(series.finestSpacing());
     worldBounds_ = series.worldBounds();
+    finestSpacing_ = whole ? whole->finestSpacing : series.finestSpacing();
+    latticeBounds_ = whole ? whole->bounds : worldBounds_;
 }
 
 double Renderer::stepLengthFor(const Scene& scene) const {
@@ -108,6 +109,8 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     parameters.styleTracks = styleTextures_.trackRanges();
     parameters.worldToView = glm::mat3(view.viewMatrix);
     parameters.styleFootprint = float(styleFootprint(view, options.size.y, finestSpacing_));
+    parameters.seriesLower = glm::vec3(latticeBounds_.lower);
+    parameters.seriesUpper = glm::vec3(latticeBounds_.upper);
     if (options.clipBox) {
         parameters.clipLower = glm::vec3(options.clipBox->lower);
         parameters.clipUpper = glm::vec3(options.clipBox->upper);

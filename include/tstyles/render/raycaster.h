@@ -48,6 +48,8 @@ struct RaycastParameters {
     // Rays are clipped to this world box (FrameOptions::clipBox); the default holds everything.
     glm::vec3 clipLower{-std::numeric_limits<float>::max()};
     glm::vec3 clipUpper{std::numeric_limits<float>::max()};
+    glm::vec3 seriesLower{0.0f};
+    glm::vec3 seriesUpper{0.0f};
 };
 
 struct RaycastStatistics {

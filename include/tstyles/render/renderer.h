@@ -40,6 +40,14 @@ struct FrameOptions {
     std::optional<Bounds> clipBox;
 };
 
+// What a renderer holding one block of a series needs to know of the whole: its finest spacing
+// (the default step, the opacity reference length and the style footprint; a block can lose the
+// finest cells) and its world bounds (where each ray's lattice of samples is anchored).
+struct WholeSeries {
+    double finestSpacing = 1.0;
+    Bounds bounds;
+};
+
 class Renderer {
 public:
     // Needs a current OpenGL 4.5 context for its whole life.
@@ -48,10 +56,9 @@ public:
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    // `wholeFinestSpacing`: where `series` is one block cut from a larger series (distributed
-    // rendering), the finest spacing of the whole, so that the default step, the opacity reference
-    // length and the style footprint are the whole series' (a block can lose its finest cells).
-    void setSeries(const Series& series, std::optional<double> wholeFinestSpacing = std::nullopt);
+    // `whole`: where `series` is one block cut from a larger series (distributed rendering), what
+    // of the whole its frames follow, so that they take the whole series' samples.
+    void setSeries(const Series& series, const std::optional<WholeSeries>& whole = std::nullopt);
     bool hasSeries() const { return gpuSeries_.has_value(); }
 
     // Renders into the internal target (no read-back).
@@ -75,6 +82,7 @@ private:
     std::optional<GpuSeries> gpuSeries_;
     double finestSpacing_ = 1.0;
     Bounds worldBounds_;  // of every time-step: rays outside its projection meet nothing
+    Bounds latticeBounds_;  // of the whole series: where each ray's samples are anchored
     bool occupancyStale_ = true;  // a new series needs its brick visibility computed
     TransferTables transferTables_;
     StyleTextures styleTextures_;
