@@ -7,6 +7,7 @@
 #include "tstyles/render/annotated_rendering.h"
 #include "animation_options.h"
 #include "commands.h"
+#include "gpu_memory_option.h"
 #include "scene_source.h"
 #include "tstyles/scene/automatic_scene.h"
 #include "tstyles/core/errors.h"
@@ -27,6 +28,7 @@ struct RenderOptions {
     GlOptions gl;
     std::vector<std::filesystem::path> datasetFiles;  // --dataset: instead of the scene's dataset
     DatasetOptions dataset;
+    GpuMemoryOption gpuMemory;
     std::optional<int> frame;      // --frame K: the scene of frame K of the animation
     AnimationOptions animation;    // the presets of `animate`, for --frame
     AnnotationOptions annotations;
@@ -54,6 +56,7 @@ void overrideStyles(Scene& scene, const std::vector<std::string>& overrides) {
 
 int runRender(const RenderOptions& options) {
     requireWritableImagePath(options.output);
+    parseGpuMemoryOption(options.gpuMemory);
     SceneAndSeries opened = openSceneOrDataset(options.inputs, options.datasetFiles, options.dataset);
     Scene& scene = opened.scene;
     if (options.width) scene.width = *options.width;
@@ -79,7 +82,7 @@ int runRender(const RenderOptions& options) {
     const Series& series = fitted.series;
     const auto context = createHeadlessContext(parseBackend(options.gl.backend), glDebugOutputRequested());
     Renderer renderer(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
-    renderer.setSeries(series);
+    uploadWithinGpuMemory(renderer, series, options.gpuMemory, options.dataset);
     const auto start = std::chrono::steady_clock::now();
     AnnotatedRendering rendering(renderer, fitted);
     const Image image = rendering.render(fitted.scene);
@@ -122,6 +125,7 @@ Command addRenderCommand(CLI::App& app) {
                         "file, or several files of one series (repeated or comma-separated)")
         ->delimiter(',');
     addDatasetOptions(*command, options->dataset);
+    addGpuMemoryOption(*command, options->gpuMemory);
     command->add_option("--frame", options->frame,
                         "Render frame K of the scene's animation (or of the presets below), as `animate` draws it")
         ->check(CLI::Range(0, 1000000));

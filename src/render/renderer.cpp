@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "tstyles/data/coarser_series.h"
 #include "tstyles/render/covered_pixels.h"
 #include "tstyles/scene/temporal_compositors.h"
 
@@ -33,6 +34,18 @@ void Renderer::setSeries(const Series& series) {
     occupancyStale_ = true;
     finestSpacing_ = series.finestSpacing();
     worldBounds_ = series.worldBounds();
+}
+
+GpuResidency Renderer::setSeries(const Series& series, const GpuMemoryLimits& limits) {
+    GpuResidency residency = fitToGpuMemory(series, limits);
+    gpuSeries_.reset();
+    if (residency.scale != 1.0) gpuSeries_.emplace(coarserSeries(series, residency.scale), residency.storage);
+    else gpuSeries_.emplace(series, residency.storage);
+    residency.chosenBytes = gpuSeries_->textureBytes();
+    occupancyStale_ = true;
+    finestSpacing_ = series.finestSpacing();
+    worldBounds_ = series.worldBounds();
+    return residency;
 }
 
 double Renderer::stepLengthFor(const Scene& scene) const {

@@ -10,6 +10,7 @@
 #include "tstyles/gl/program.h"
 #include "tstyles/image/image.h"
 #include "tstyles/render/entry_exit_buffers.h"
+#include "tstyles/render/gpu_memory_budget.h"
 #include "tstyles/render/gpu_series.h"
 #include "tstyles/render/raycaster.h"
 #include "tstyles/render/render_target.h"
@@ -46,6 +47,11 @@ public:
     Renderer& operator=(const Renderer&) = delete;
 
     void setSeries(const Series& series);
+    // Uploads the series within `limits` (gpu_memory_budget.h): stored smaller, or coarser, where
+    // it must be, drawn with the full series' step length and opacity reference so that the image
+    // stays the full series' as far as the resolution allows. Returns what was chosen, with the
+    // bytes the driver allocated.
+    GpuResidency setSeries(const Series& series, const GpuMemoryLimits& limits);
     bool hasSeries() const { return gpuSeries_.has_value(); }
 
     // Renders into the internal target (no read-back).
