@@ -42,7 +42,7 @@ bool holdsExactly(const Series& series, DensityPrecision requested, DensityPreci
 
 std::vector<DensityPrecision> losslessSmallerPrecisions(const Series& series, DensityPrecision requested) {
     std::vector<DensityPrecision> result;
-    for (DensityPrecision smaller : {DensityPrecision::Bits8, DensityPrecision::Bits16})
+    for (DensityPrecision smaller : {DensityPrecision::Bits16, DensityPrecision::Bits8})
         if (bitsOf(smaller) < bitsOf(requested) && holdsExactly(series, requested, smaller)) result.push_back(smaller);
     return result;
 }

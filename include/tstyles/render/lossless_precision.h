@@ -15,7 +15,8 @@ namespace tstyles {
 // values and masks are 0 or full scale at every precision and do not count.
 bool holdsExactly(const Series& series, DensityPrecision requested, DensityPrecision smaller);
 
-// The precisions below `requested` that hold the series exactly, smallest first.
+// The precisions below `requested` that hold the series exactly, largest first (llvmpipe filters
+// 8-bit textures in 8-bit arithmetic: docs/large-series.md).
 std::vector<DensityPrecision> losslessSmallerPrecisions(const Series& series, DensityPrecision requested);
 
 }  // namespace tstyles
