@@ -9,6 +9,7 @@
 #include "annotation_options.h"
 #include "tstyles/render/annotated_rendering.h"
 #include "commands.h"
+#include "gpu_memory_option.h"
 #include "frame_sink.h"
 #include "interrupt_guard.h"
 #include "progress_bar.h"
@@ -30,6 +31,7 @@ struct AnimateOptions {
     SceneOverrides overrides;
     GlOptions gl;
     DatasetOptions dataset;
+    GpuMemoryOption gpuMemory;
 };
 
 // Every frame's scene, made before anything is rendered: a key that leaves the scene's allowed
@@ -56,6 +58,7 @@ double median(std::vector<double> values) {
 }
 
 int runAnimate(const AnimateOptions& options) {
+    parseGpuMemoryOption(options.gpuMemory);
     SceneAndSeries opened = openSceneOrDataset(options.inputs, {}, options.dataset);
     Scene& scene = opened.scene;
     if (options.width) scene.width = *options.width;
@@ -72,7 +75,7 @@ int runAnimate(const AnimateOptions& options) {
 
     const auto context = createHeadlessContext(parseBackend(options.gl.backend), glDebugOutputRequested());
     Renderer renderer(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
-    renderer.setSeries(fitted.series);
+    uploadWithinGpuMemory(renderer, fitted.series, options.gpuMemory, options.dataset);
     AnnotatedRendering rendering(renderer, fitted);
     std::unique_ptr<FrameSink> sink = openFrameSink(options.output, movie);
     const InterruptGuard interrupt;
@@ -121,6 +124,7 @@ Command addAnimateCommand(CLI::App& app) {
     addSceneOverrides(*command, options->overrides);
     addGlOptions(*command, options->gl);
     addDatasetOptions(*command, options->dataset);
+    addGpuMemoryOption(*command, options->gpuMemory);
     return {command, [options] { return runAnimate(*options); }};
 }
 

@@ -7,6 +7,7 @@
 #include "tstyles/render/annotated_rendering.h"
 #include "animation_options.h"
 #include "commands.h"
+#include "gpu_memory_option.h"
 #include "scene_source.h"
 #include "tstyles/scene/automatic_scene.h"
 #include "tstyles/core/errors.h"
@@ -28,6 +29,7 @@ struct RenderOptions {
     GlOptions gl;
     std::vector<std::filesystem::path> datasetFiles;  // --dataset: instead of the scene's dataset
     DatasetOptions dataset;
+    GpuMemoryOption gpuMemory;
     std::optional<int> frame;      // --frame K: the scene of frame K of the animation
     AnimationOptions animation;    // the presets of `animate`, for --frame
     AnnotationOptions annotations;
@@ -90,11 +92,12 @@ void warnAboutCutShortRays(const RenderOptions& options, const Renderer& rendere
 
 int runRender(const RenderOptions& options) {
     requireWritableImagePath(options.output);
+    parseGpuMemoryOption(options.gpuMemory);
     SceneOnSeries fitted = fittedSceneFor(options);
     const Series& series = fitted.series;
     const auto context = createHeadlessContext(parseBackend(options.gl.backend), glDebugOutputRequested());
     Renderer renderer(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
-    renderer.setSeries(series);
+    uploadWithinGpuMemory(renderer, series, options.gpuMemory, options.dataset);
     const auto start = std::chrono::steady_clock::now();
     AnnotatedRendering rendering(renderer, fitted);
     const Image image = rendering.render(fitted.scene);
@@ -115,6 +118,7 @@ int runDistributedRender(const RenderOptions& options) {
     std::optional<SceneOnSeries> fitted;
     mpi.together("reading the scene and the series", [&] {
         if (mpi.isFirst()) requireWritableImagePath(options.output);
+        parseGpuMemoryOption(options.gpuMemory);
         fitted = fittedSceneFor(options);
     });
     std::unique_ptr<HeadlessContext> context;
@@ -124,7 +128,9 @@ int runDistributedRender(const RenderOptions& options) {
         renderer.emplace(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
     });
     const std::size_t timeSteps = fitted->series.size();
-    DistributedRendering rendering(mpi, *renderer, std::move(*fitted));
+    DistributedRendering rendering(mpi, *renderer, std::move(*fitted), [&](const Series& block, const WholeSeries& whole) {
+        uploadWithinGpuMemory(*renderer, block, options.gpuMemory, options.dataset, whole);
+    });
     const Scene& scene = rendering.scene();
     const Image image = rendering.render(scene);
     const double renderMs = mpi.maximum(rendering.lastTimes().render);
@@ -168,6 +174,7 @@ Command addRenderCommand(CLI::App& app) {
                         "file, or several files of one series (repeated or comma-separated)")
         ->delimiter(',');
     addDatasetOptions(*command, options->dataset);
+    addGpuMemoryOption(*command, options->gpuMemory);
     command->add_option("--frame", options->frame,
                         "Render frame K of the scene's animation (or of the presets below), as `animate` draws it")
         ->check(CLI::Range(0, 1000000));

@@ -40,7 +40,8 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-DistributedRendering::DistributedRendering(const MpiSession& mpi, Renderer& renderer, SceneOnSeries fitted)
+DistributedRendering::DistributedRendering(const MpiSession& mpi, Renderer& renderer, SceneOnSeries fitted,
+                                           const BlockUpload& upload)
     : mpi_(mpi),
       renderer_(renderer),
       scene_(std::move(fitted.scene)),
@@ -53,7 +54,7 @@ DistributedRendering::DistributedRendering(const MpiSession& mpi, Renderer& rend
         const WholeSeries whole{fitted.series.finestSpacing(), wholeBounds_};
         const Series block = cropSeriesToBox(std::move(fitted.series), blocks_.block(mpi_.rank()), kBlockGhostNodes);
         for (const TimeStep& step : block.steps) blockVoxels_ += gridVoxelCount(step.grid);
-        renderer_.setSeries(block, whole);
+        upload(block, whole);
     });
     if (mpi_.isFirst()) annotator_.emplace(outline_, framed_, frame_);
 }

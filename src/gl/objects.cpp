@@ -1,6 +1,7 @@
 // Creation and the few operations of the RAII GL object types.
 #include "tstyles/gl/objects.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -22,6 +23,17 @@ void Texture::setClampToEdge() const {
     glTextureParameteri(id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTextureParameteri(id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     glTextureParameteri(id(), GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+}
+
+std::size_t Texture::allocatedBytes() const {
+    const auto level0 = [this](GLenum name) {
+        GLint value = 0;
+        glGetTextureLevelParameteriv(id(), 0, name, &value);
+        return std::size_t(std::max(value, 0));
+    };
+    const std::size_t bits = level0(GL_TEXTURE_RED_SIZE) + level0(GL_TEXTURE_GREEN_SIZE) +
+                             level0(GL_TEXTURE_BLUE_SIZE) + level0(GL_TEXTURE_ALPHA_SIZE);
+    return level0(GL_TEXTURE_WIDTH) * level0(GL_TEXTURE_HEIGHT) * level0(GL_TEXTURE_DEPTH) * bits / 8;
 }
 
 Buffer Buffer::create() {

@@ -8,19 +8,23 @@
 #include "tstyles/core/errors.h"
 
 namespace tstyles {
+namespace {
 
-AtlasLayout planAtlas(const std::vector<glm::ivec3>& brickDims, int maxTextureSize) {
+glm::ivec3 largestDims(const std::vector<glm::ivec3>& brickDims) {
+    glm::ivec3 largest(0);
+    for (const auto& dims : brickDims) largest = glm::max(largest, dims);
+    return largest;
+}
+
+}  // namespace
+
+std::optional<AtlasLayout> tryPlanAtlas(const std::vector<glm::ivec3>& brickDims, int maxTextureSize) {
     AtlasLayout layout;
     if (brickDims.empty()) return layout;
-    for (const auto& dims : brickDims) layout.cellSize = glm::max(layout.cellSize, dims);
+    layout.cellSize = largestDims(brickDims);
     const auto count = static_cast<long long>(brickDims.size());
     const glm::ivec3 maxCells = glm::ivec3(maxTextureSize) / layout.cellSize;
-    if (maxCells.x < 1 || maxCells.y < 1 || maxCells.z < 1)
-        throwInputError("", "volume atlas",
-                        "a time-step of " + std::to_string(layout.cellSize.x) + "x" +
-                            std::to_string(layout.cellSize.y) + "x" + std::to_string(layout.cellSize.z) +
-                            " samples exceeds the largest 3D texture (" + std::to_string(maxTextureSize) +
-                            " per side)");
+    if (maxCells.x < 1 || maxCells.y < 1 || maxCells.z < 1) return std::nullopt;
 
     long long bestTexels = std::numeric_limits<long long>::max();
     long long bestLongestSide = std::numeric_limits<long long>::max();
@@ -39,10 +43,7 @@ AtlasLayout planAtlas(const std::vector<glm::ivec3>& brickDims, int maxTextureSi
             }
         }
     }
-    if (layout.cells.x == 0)
-        throwInputError("", "volume atlas",
-                        std::to_string(count) + " time-steps do not fit into one 3D texture of at most " +
-                            std::to_string(maxTextureSize) + " texels per side");
+    if (layout.cells.x == 0) return std::nullopt;
     layout.size = layout.cells * layout.cellSize;
     for (int index = 0; index < int(count); ++index) {
         const glm::ivec3 cell(index % layout.cells.x, (index / layout.cells.x) % layout.cells.y,
@@ -50,6 +51,19 @@ AtlasLayout planAtlas(const std::vector<glm::ivec3>& brickDims, int maxTextureSi
         layout.brickOrigins.push_back(cell * layout.cellSize);
     }
     return layout;
+}
+
+AtlasLayout planAtlas(const std::vector<glm::ivec3>& brickDims, int maxTextureSize) {
+    if (std::optional<AtlasLayout> layout = tryPlanAtlas(brickDims, maxTextureSize)) return *layout;
+    const glm::ivec3 cellSize = largestDims(brickDims);
+    if (glm::any(glm::greaterThan(cellSize, glm::ivec3(maxTextureSize))))
+        throwInputError("", "volume atlas",
+                        "a time-step of " + std::to_string(cellSize.x) + "x" + std::to_string(cellSize.y) + "x" +
+                            std::to_string(cellSize.z) + " samples exceeds the largest 3D texture (" +
+                            std::to_string(maxTextureSize) + " per side)");
+    throwInputError("", "volume atlas",
+                    std::to_string(brickDims.size()) + " time-steps do not fit into one 3D texture of at most " +
+                        std::to_string(maxTextureSize) + " texels per side");
 }
 
 }  // namespace tstyles

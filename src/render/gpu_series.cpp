@@ -17,6 +17,7 @@
 #include "tstyles/render/density_texels.h"
 #include "tstyles/render/packed_aligned_atlas.h"
 #include "tstyles/render/proxy_mesh.h"
+#include "tstyles/render/series_texture_plan.h"
 #include "tstyles/render/uneven_axis_table.h"
 
 namespace tstyles {
@@ -161,7 +162,9 @@ TimeStepInfo timeStepInfo(const Series& series, std::size_t index, const glm::iv
 
 }  // namespace
 
-GpuSeries::GpuSeries(const Series& series)
+GpuSeries::GpuSeries(const Series& series) : GpuSeries(series, SeriesStorage{series.precision, true}) {}
+
+GpuSeries::GpuSeries(const Series& series, const SeriesStorage& storage)
     : densityAtlas_(Texture::create(GL_TEXTURE_3D)),
       occupancyAtlas_(Texture::create(GL_TEXTURE_3D)),
       timeStepTable_(Buffer::create()),
@@ -181,13 +184,13 @@ GpuSeries::GpuSeries(const Series& series)
                         return grid.azimuthDeg.size() >= 2 && grid.elevationDeg.size() >= 2 &&
                                areEvenBeamAngles(grid.azimuthDeg) && areEvenBeamAngles(grid.elevationDeg);
                     });
-    std::vector<glm::ivec3> dims;
-    for (const auto& step : series.steps) dims.push_back(step.dims());
-    layout_ = planAtlas(dims, maxTextureSize3D());
+    const SeriesShape shape = shapeOf(series);
+    plan_ = planSeriesTextures(shape, storage, maxTextureSize3D());
+    layout_ = plan_.density;
 
     glGetError();  // start from a clean error state so that OUT_OF_MEMORY below is ours
-    hasMissingValues_ = tstyles::hasMissingValues(series);
-    precision_ = series.precision;
+    hasMissingValues_ = shape.missingValues;
+    precision_ = storage.precision;
     const DensityTexelFormat texelFormat =
         densityTexelFormat(precision_, densityChannelCount(hasMissingValues_, hasMasks_));
     densityAtlas_ = createAtlas(texelFormat.internalFormat, layout_.size);
@@ -214,13 +217,13 @@ GpuSeries::GpuSeries(const Series& series)
         brickGrids_.push_back(computeBrickGrid(step));
         brickCounts.push_back(brickGrids_.back().bricks);
     }
-    occupancyLayout_ = planAtlas(brickCounts, maxTextureSize3D());
+    occupancyLayout_ = plan_.occupancy;
     occupancyAtlas_ = Texture::create(GL_TEXTURE_3D);
     glTextureStorage3D(occupancyAtlas_.id(), 1, GL_R8, occupancyLayout_.size.x, occupancyLayout_.size.y,
                        occupancyLayout_.size.z);
     occupancyAtlas_.setFilter(GL_NEAREST, GL_NEAREST);
     occupancyAtlas_.setClampToEdge();
-    if (suitsPackedAtlas(series)) {
+    if (plan_.storage.packedAtlas) {
         packedAtlas_.emplace(series, brickGrids_.front().bricks, maxTextureSize3D());
         requireNoOutOfMemory(series, "packed atlas");
     }
@@ -258,9 +261,7 @@ GpuSeries::GpuSeries(const Series& series)
 }
 
 std::size_t GpuSeries::textureBytes() const {
-    return layout_.texelCount() * bytesPerDensity(precision_) *
-               std::size_t(densityChannelCount(hasMissingValues_, hasMasks_)) +
-           occupancyLayout_.texelCount() + structuredGrids_->gpuBytes() +
+    return densityAtlas_.allocatedBytes() + occupancyAtlas_.allocatedBytes() + structuredGrids_->gpuBytes() +
            (packedAtlas_ ? packedAtlas_->textureBytes() : 0);
 }
 

@@ -81,7 +81,7 @@ GpuStructuredGrids::GpuStructuredGrids(const Series& series, int firstLayer, std
 }
 
 std::size_t GpuStructuredGrids::gpuBytes() const {
-    return mapLayout_.texelCount() * sizeof(glm::vec4);
+    return inverseMapAtlas_.allocatedBytes();
 }
 
 void GpuStructuredGrids::bind() const {

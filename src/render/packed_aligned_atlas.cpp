@@ -36,7 +36,11 @@ std::vector<std::uint16_t> interleaveGroup(const Series& series, std::size_t gro
 
 bool suitsPackedAtlas(const Series& series) {
     // The packed atlas is RGBA16: only for 16-bit storage, so that packed and unpacked agree.
-    return series.size() >= 2 && series.precision == DensityPrecision::Bits16 && isFullyAligned(series) &&
+    return series.precision == DensityPrecision::Bits16 && suitsPackedAtlasAt16Bits(series);
+}
+
+bool suitsPackedAtlasAt16Bits(const Series& series) {
+    return series.size() >= 2 && isFullyAligned(series) &&
            std::all_of(series.steps.begin(), series.steps.end(), isRectilinear) && !series.hasMasks();
 }
 
@@ -128,14 +132,7 @@ PackedAlignedAtlas::PackedAlignedAtlas(const Series& series, glm::ivec3 brickCou
 }
 
 std::size_t PackedAlignedAtlas::textureBytes() const {
-    const glm::ivec3 bricks = brickCounts_;
-    const std::size_t occupancyBytes = std::size_t(bricks.x) * std::size_t(bricks.y) * std::size_t(bricks.z);
-    const glm::ivec3 shared = sharedValiditySize_;
-    std::size_t validityBytes = 0;
-    if (validity_ == PackedValidity::PerGroup) validityBytes = layout_.texelCount() * 8;
-    if (validity_ == PackedValidity::Shared)
-        validityBytes = std::size_t(shared.x) * std::size_t(shared.y) * std::size_t(shared.z) * 2;
-    return layout_.texelCount() * 8 + validityBytes + occupancyBytes;
+    return atlas_.allocatedBytes() + validityTexture_.allocatedBytes() + occupancy_.allocatedBytes();
 }
 
 void PackedAlignedAtlas::updateOccupancy(const std::vector<std::uint8_t>& unionVisibility) {

@@ -22,18 +22,9 @@ GLint integer(GLenum name) {
 
 std::string sizeText(glm::ivec2 size) { return std::to_string(size.x) + " x " + std::to_string(size.y); }
 
-bool hasExtension(const char* wanted) {
-    const GLint count = integer(GL_NUM_EXTENSIONS);
-    for (GLint index = 0; index < count; ++index) {
-        const auto* name = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(index)));
-        if (name != nullptr && std::string(name) == wanted) return true;
-    }
-    return false;
-}
-
 // The memory a frame's buffers may take: the GPU's where the driver says, else host memory.
 double frameMemoryLimit() {
-    if (hasExtension("GL_NVX_gpu_memory_info")) {
+    if (hasGlExtension("GL_NVX_gpu_memory_info")) {
         const GLint kib = integer(kGpuMemoryTotalNvx);
         if (kib > 0) return double(kib) * 1024.0;
     }
@@ -75,6 +66,15 @@ void requireRenderableSize(glm::ivec2 size, int layers) {
                         sizeText(size) + " with " + std::to_string(layers) + " entry/exit layers needs " +
                             byteCountText(bytes) + " of buffers, more than the " + byteCountText(limit) +
                             " available to the renderer: render a smaller image");
+}
+
+bool hasGlExtension(const char* wanted) {
+    const GLint count = integer(GL_NUM_EXTENSIONS);
+    for (GLint index = 0; index < count; ++index) {
+        const auto* name = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(index)));
+        if (name != nullptr && std::string(name) == wanted) return true;
+    }
+    return false;
 }
 
 void requireAllocated(glm::ivec2 size, const char* what) {

@@ -16,4 +16,7 @@ void requireRenderableSize(glm::ivec2 size, int layers);
 // After allocating `what`: GL_OUT_OF_MEMORY becomes an InputError naming the image size.
 void requireAllocated(glm::ivec2 size, const char* what);
 
+// Whether the current context's driver lists the extension.
+bool hasGlExtension(const char* wanted);
+
 }  // namespace tstyles

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "tstyles/data/coarser_series.h"
 #include "tstyles/render/covered_pixels.h"
 #include "tstyles/scene/temporal_compositors.h"
 
@@ -30,6 +31,21 @@ Renderer::Renderer(ShaderLibrary shaders)
 void Renderer::setSeries(const Series& series, const std::optional<WholeSeries>& whole) {
     gpuSeries_.reset();  // free the old atlas before allocating the new one
     gpuSeries_.emplace(series);
+    follow(series, whole);
+}
+
+GpuResidency Renderer::setSeries(const Series& series, const GpuMemoryLimits& limits,
+                                 const std::optional<WholeSeries>& whole) {
+    GpuResidency residency = fitToGpuMemory(series, limits);
+    gpuSeries_.reset();
+    if (residency.scale != 1.0) gpuSeries_.emplace(coarserSeries(series, residency.scale), residency.storage);
+    else gpuSeries_.emplace(series, residency.storage);
+    residency.chosenBytes = gpuSeries_->textureBytes();
+    follow(series, whole);
+    return residency;
+}
+
+void Renderer::follow(const Series& series, const std::optional<WholeSeries>& whole) {
     occupancyStale_ = true;
     worldBounds_ = series.worldBounds();
     finestSpacing_ = whole ? whole->finestSpacing : series.finestSpacing();

@@ -168,4 +168,24 @@ case_output_is_folder() {
     [ -z "$leftovers" ] || fail "temporary files left behind: $leftovers"
 }
 
+# A bad budget is a usage error naming the option, before any file is read.
+case_max_gpu_memory_zero() {
+    write_scene "$SCRATCH/scene.json"
+    run_tstyles -- render "$SCRATCH/scene.json" -o "$OUTPUT" --max-gpu-memory 0
+    expect_exit 2
+    expect_error_line "--max-gpu-memory" "" 'size out of range: "0"'
+    expect_no_output "$OUTPUT"
+}
+
+case_max_gpu_memory_not_a_size() {
+    write_scene "$SCRATCH/scene.json"
+    run_tstyles -- render "$SCRATCH/scene.json" -o "$OUTPUT" --max-gpu-memory abc
+    expect_exit 2
+    expect_error_line "--max-gpu-memory" "" 'expected a size such as 512M, 2G or 800000 (bytes), got "abc"'
+    expect_no_output "$OUTPUT"
+    run_tstyles -- info "$DATASET" --max-gpu-memory abc
+    expect_exit 2
+    expect_error_line "--max-gpu-memory" "" "abc"
+}
+
 run_case

@@ -92,4 +92,24 @@ case_overwrite() {
     expect_image "$SCRATCH/out.png" 64 64
 }
 
+# Over --max-gpu-memory the series is uploaded coarser (a fifth of its 5 MiB would not even hold
+# it at 8 bits) and one line on stderr says so; the image is still written.
+case_max_gpu_memory_message() {
+    write_scene "$SCRATCH/scene.json"
+    run_tstyles -- render "$SCRATCH/scene.json" -o "$SCRATCH/out.png" --max-gpu-memory 1M
+    expect_exit 0
+    expect_image "$SCRATCH/out.png" 64 64
+    expect_stderr_contains "tstyles: $DATASET: GPU memory budget 1.0 MiB (--max-gpu-memory): the series needs 5.0 MiB at full size (16-bit); uploading"
+    expect_stderr_contains "resolution 1/"
+    [ "$(wc -l <"$ERR_FILE")" -eq 1 ] || fail "expected one line on stderr"
+}
+
+# Values 0 .. 255 of a uint8 dataset are exact at 8 bits: half the bytes, the same values.
+case_max_gpu_memory_eight_bits() {
+    write_scene "$SCRATCH/scene.json"
+    run_tstyles -- render "$SCRATCH/scene.json" -o "$SCRATCH/out.png" --max-gpu-memory 3M
+    expect_exit 0
+    expect_stderr_contains "8-bit densities (every value is stored exactly)"
+}
+
 run_case

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 
 #include "tstyles/distributed/block_decomposition.h"
@@ -30,9 +31,14 @@ struct DistributedFrameTimes {
 
 class DistributedRendering {
 public:
-    // Collective. Keeps this process's block of `fitted`'s series and uploads it into `renderer`
-    // (which needs a current context); process 0 also keeps the series' outline for annotations.
-    DistributedRendering(const MpiSession& mpi, Renderer& renderer, SceneOnSeries fitted);
+    // Uploads a process's block into the renderer (Renderer::setSeries with `whole`, within the
+    // front end's GPU memory budget).
+    using BlockUpload = std::function<void(const Series& block, const WholeSeries& whole)>;
+
+    // Collective. Keeps this process's block of `fitted`'s series and has `upload` put it into
+    // `renderer` (which needs a current context); process 0 also keeps the series' outline for
+    // annotations.
+    DistributedRendering(const MpiSession& mpi, Renderer& renderer, SceneOnSeries fitted, const BlockUpload& upload);
 
     // Collective: the scene's frame, annotated, on process 0; an empty image on the others.
     Image render(const Scene& scene);

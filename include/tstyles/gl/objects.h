@@ -19,6 +19,9 @@ public:
     void bindToUnit(GLuint unit) const { glBindTextureUnit(unit, id()); }
     void setFilter(GLenum minFilter, GLenum magFilter) const;
     void setClampToEdge() const;
+    // Bytes of level 0 as the driver reports its storage: width x height x depth x the bits of its
+    // channels (0 for a texture without storage).
+    std::size_t allocatedBytes() const;
 
 private:
     Texture(GLenum target, GLuint id) : target_(target), handle_(id) {}

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -21,5 +22,7 @@ struct AtlasLayout {
 // The arrangement with the fewest texels (then the most cube-like) whose sides stay within
 // `maxTextureSize`. Throws InputError when the bricks cannot fit into one 3D texture.
 AtlasLayout planAtlas(const std::vector<glm::ivec3>& brickDims, int maxTextureSize);
+// The same, with no layout instead of the InputError.
+std::optional<AtlasLayout> tryPlanAtlas(const std::vector<glm::ivec3>& brickDims, int maxTextureSize);
 
 }  // namespace tstyles

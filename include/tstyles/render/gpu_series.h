@@ -15,6 +15,7 @@
 #include "tstyles/render/brick_occupancy.h"
 #include "tstyles/render/gpu_structured_grids.h"
 #include "tstyles/render/packed_aligned_atlas.h"
+#include "tstyles/render/series_texture_plan.h"
 
 namespace tstyles {
 
@@ -23,6 +24,8 @@ public:
     // Uploads every time-step. Throws InputError if the series does not fit into one 3D texture or
     // into GPU memory.
     explicit GpuSeries(const Series& series);
+    // The same stored as `storage` says (a GPU memory budget's choice) rather than as read.
+    GpuSeries(const Series& series, const SeriesStorage& storage);
 
     std::size_t timeStepCount() const { return timeStepCount_; }
     // Layers of the entry/exit buffers: one per distinct grid and placement.
@@ -51,8 +54,11 @@ public:
     // Fully aligned series (suitsPackedAtlas): four time-steps per texel, next to the atlas above;
     // null for other series.
     const PackedAlignedAtlas* packedAtlas() const { return packedAtlas_ ? &*packedAtlas_ : nullptr; }
-    // Bytes of texture memory: the density atlas (masks included), the packed atlas.
+    // Bytes of texture memory as the driver reports the textures allocated: the density atlas
+    // (masks included), the brick occupancy, the inverse maps, the packed atlas.
     std::size_t textureBytes() const;
+    // The plan the textures were allocated from (series_texture_plan.h).
+    const SeriesTexturePlan& texturePlan() const { return plan_; }
 
     // Marks each brick visible or empty under the STF (its baked table), for empty-space skipping.
     // Per transfer-function change, not per frame.
@@ -77,6 +83,7 @@ private:
     bool allBeamsEven_ = false;
     bool hasMissingValues_ = false;
     DensityPrecision precision_ = DensityPrecision::Bits16;
+    SeriesTexturePlan plan_;
     AtlasLayout layout_;
     Texture densityAtlas_;
     std::vector<BrickGrid> brickGrids_;

@@ -28,6 +28,8 @@ inline constexpr int kTimeStepsPerTexel = 4;
 // grid (even or uneven axes) with one placement (isFullyAligned), stored at 16 bits (the packed
 // atlas is RGBA16), without masks.
 bool suitsPackedAtlas(const Series& series);
+// The same whatever the series' precision: whether it would suit at 16 bits.
+bool suitsPackedAtlasAt16Bits(const Series& series);
 
 // The RGBA texels of one group of four time-steps (x fastest, four uint16 per voxel, time-step
 // 4 * group + channel; channels past the last time-step are 0). With `withValidity` the densities

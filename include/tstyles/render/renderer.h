@@ -10,6 +10,7 @@
 #include "tstyles/gl/program.h"
 #include "tstyles/image/image.h"
 #include "tstyles/render/entry_exit_buffers.h"
+#include "tstyles/render/gpu_memory_budget.h"
 #include "tstyles/render/gpu_series.h"
 #include "tstyles/render/raycaster.h"
 #include "tstyles/render/render_target.h"
@@ -59,6 +60,12 @@ public:
     // `whole`: where `series` is one block cut from a larger series (distributed rendering), what
     // of the whole its frames follow, so that they take the whole series' samples.
     void setSeries(const Series& series, const std::optional<WholeSeries>& whole = std::nullopt);
+    // Uploads the series within `limits` (gpu_memory_budget.h): stored smaller, or coarser, where
+    // it must be, drawn with the full series' step length and opacity reference so that the image
+    // stays the full series' as far as the resolution allows. Returns what was chosen, with the
+    // bytes the driver allocated.
+    GpuResidency setSeries(const Series& series, const GpuMemoryLimits& limits,
+                           const std::optional<WholeSeries>& whole = std::nullopt);
     bool hasSeries() const { return gpuSeries_.has_value(); }
 
     // Renders into the internal target (no read-back).
@@ -78,6 +85,10 @@ public:
     double stepLengthFor(const Scene& scene) const;
 
 private:
+    // After an upload: the step, the opacity reference, the bounds and the sample lattice of
+    // `series`, or of the whole it was cut from.
+    void follow(const Series& series, const std::optional<WholeSeries>& whole);
+
     ShaderLibrary shaders_;
     std::optional<GpuSeries> gpuSeries_;
     double finestSpacing_ = 1.0;

@@ -1,0 +1,55 @@
+// The GPU memory budget option, and the one line that says what it chose.
+#include "gpu_memory_option.h"
+
+#include <iostream>
+
+#include "tstyles/core/input_limits.h"
+#include "tstyles/render/gpu_memory_limits.h"
+
+namespace tstyles::cli {
+namespace {
+
+constexpr const char* kOption = "--max-gpu-memory";
+
+// What the series' own host copy takes: one float per voxel, one byte per mask voxel.
+std::uint64_t hostSeriesBytes(const Series& series) {
+    std::uint64_t bytes = 0;
+    for (const TimeStep& step : series.steps)
+        bytes += step.density.size() * sizeof(float) + (step.mask ? step.mask->size() : 0);
+    return bytes;
+}
+
+}  // namespace
+
+void addGpuMemoryOption(CLI::App& command, GpuMemoryOption& option) {
+    command.add_option(kOption, option.maxGpuMemory,
+                       "GPU memory the series' textures may take, e.g. 512M, 4G; a larger series is stored smaller "
+                       "(no packed atlas, fewer bits where no value changes) or coarser, and says so "
+                       "(default: the GPU's free memory, or the host's under --max-memory)");
+}
+
+std::optional<std::uint64_t> parseGpuMemoryOption(const GpuMemoryOption& option) {
+    if (!option.maxGpuMemory) return std::nullopt;
+    return parseMemorySize(*option.maxGpuMemory, kOption);
+}
+
+void uploadWithinGpuMemory(Renderer& renderer, const Series& series, const GpuMemoryOption& option,
+                           const DatasetOptions& dataset, const std::optional<WholeSeries>& whole) {
+    const std::uint64_t cap = memoryCap(dataset.maxMemory ? std::optional(parseMemorySize(*dataset.maxMemory, "--max-memory"))
+                                                          : std::nullopt);
+    const std::uint64_t host = hostSeriesBytes(series);
+    const GpuMemoryLimits limits = queryGpuMemoryLimits(parseGpuMemoryOption(option), cap > host ? cap - host : 0);
+    const GpuResidency residency = renderer.setSeries(series, limits, whole);
+    if (option.maxGpuMemory || residency.changed()) std::cerr << "tstyles: " << residencyText(series, limits, residency) << "\n";
+}
+
+void describeGpuMemory(std::ostream& out, const Series& series, const GpuMemoryOption& option) {
+    const std::optional<std::uint64_t> budget = parseGpuMemoryOption(option);
+    if (!budget) return;
+    GpuMemoryLimits limits;
+    limits.budgetBytes = *budget;
+    out << "\nGPU memory (assuming GL_MAX_3D_TEXTURE_SIZE 2048): " << residencyText(series, limits, fitToGpuMemory(series, limits))
+        << "\n";
+}
+
+}  // namespace tstyles::cli
