@@ -1,0 +1,88 @@
+// The k-d split of the world for sort-last rendering: blocks tile the bounds, and the digits name
+// the groups of each compositing round.
+#include "tstyles/distributed/block_decomposition.h"
+
+#include <gtest/gtest.h>
+
+namespace tstyles {
+namespace {
+
+double volume(const Bounds& box) {
+    const glm::dvec3 size = box.size();
+    return size.x * size.y * size.z;
+}
+
+double overlapVolume(const Bounds& a, const Bounds& b) {
+    const glm::dvec3 size = glm::max(glm::min(a.upper, b.upper) - glm::max(a.lower, b.lower), glm::dvec3(0.0));
+    return size.x * size.y * size.z;
+}
+
+const Bounds kWorld{{-1.0, 0.0, 2.0}, {3.0, 1.0, 4.0}};
+
+TEST(BlockDecomposition, OneProcessKeepsTheWholeWorld) {
+    const BlockDecomposition blocks(kWorld, 1);
+    EXPECT_TRUE(blocks.factors().empty());
+    EXPECT_EQ(blocks.block(0).lower, kWorld.lower);
+    EXPECT_EQ(blocks.block(0).upper, kWorld.upper);
+}
+
+TEST(BlockDecomposition, BlocksTileTheWorldForEveryProcessCount) {
+    for (int count = 1; count <= 12; ++count) {
+        SCOPED_TRACE("processes: " + std::to_string(count));
+        const BlockDecomposition blocks(kWorld, count);
+        int product = 1;
+        for (int factor : blocks.factors()) product *= factor;
+        EXPECT_EQ(product, count);
+        double total = 0.0;
+        for (int rank = 0; rank < count; ++rank) {
+            const Bounds& block = blocks.block(rank);
+            EXPECT_GT(volume(block), 0.0);
+            EXPECT_TRUE(glm::all(glm::greaterThanEqual(block.lower, kWorld.lower)));
+            EXPECT_TRUE(glm::all(glm::lessThanEqual(block.upper, kWorld.upper)));
+            total += volume(block);
+            for (int other = rank + 1; other < count; ++other)
+                EXPECT_NEAR(overlapVolume(block, blocks.block(other)), 0.0, 1e-12);
+        }
+        // Inside the world and without overlaps, the volumes adding up means no gap either.
+        EXPECT_NEAR(total, volume(kWorld), 1e-9);
+    }
+}
+
+TEST(BlockDecomposition, FourProcessesCutTheLongestAxesInHalves) {
+    // The world is 4 x 1 x 2: first cut along x, then each half (2 x 1 x 2) along x again (ties go
+    // to the lower axis).
+    const BlockDecomposition blocks(kWorld, 4);
+    EXPECT_EQ(blocks.factors(), (std::vector<int>{2, 2}));
+    EXPECT_DOUBLE_EQ(blocks.block(0).lower.x, -1.0);
+    EXPECT_DOUBLE_EQ(blocks.block(0).upper.x, 0.0);
+    EXPECT_DOUBLE_EQ(blocks.block(1).lower.x, 0.0);
+    EXPECT_DOUBLE_EQ(blocks.block(2).lower.x, 1.0);
+    EXPECT_DOUBLE_EQ(blocks.block(3).upper.x, 3.0);
+    EXPECT_EQ(blocks.splitAxis(0, 1), 0);
+    EXPECT_EQ(blocks.splitAxis(0, 0), 0);
+}
+
+TEST(BlockDecomposition, GroupsOfARoundAreSlabsOfOneParentInDigitOrder) {
+    const BlockDecomposition blocks(kWorld, 12);
+    for (int rank = 0; rank < 12; ++rank)
+        for (int level = 0; level < int(blocks.factors().size()); ++level) {
+            const int axis = blocks.splitAxis(rank, level);
+            for (int value = 0; value < blocks.factors()[std::size_t(level)]; ++value) {
+                const int partner = blocks.rankWithDigit(rank, level, value);
+                EXPECT_EQ(blocks.digit(partner, level), value);
+                for (int other = 0; other < int(blocks.factors().size()); ++other) {
+                    if (other != level) {
+                        EXPECT_EQ(blocks.digit(partner, other), blocks.digit(rank, other));
+                    }
+                }
+                EXPECT_EQ(blocks.splitAxis(partner, level), axis);
+                // A higher digit is a slab further along the cut axis.
+                if (value > blocks.digit(rank, level)) {
+                    EXPECT_GE(blocks.block(partner).lower[axis], blocks.block(rank).upper[axis] - 1e-12);
+                }
+            }
+        }
+}
+
+}  // namespace
+}  // namespace tstyles

@@ -1,0 +1,144 @@
+// Distributed (sort-last) rendering against one process, run under `mpirun -np N`: every temporal
+// compositor on the partial-overlap super-ellipsoid and on the hurricane (aligned, uneven z, missing
+// values), and lit-sphere styled scenes, whose gradients read ghost nodes at the block faces.
+// Process 0 also renders each case alone and compares; exit 0 when every case is within the
+// thresholds below, 1 otherwise (the table says which).
+//   distributed_equivalence SOURCE_DIR OUTPUT_DIR
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tstyles/core/errors.h"
+#include "tstyles/data/manifest.h"
+#include "tstyles/distributed/distributed_rendering.h"
+#include "tstyles/gl/headless_context.h"
+#include "tstyles/image/image_comparison.h"
+#include "tstyles/image/image_io.h"
+#include "tstyles/scene/scene_file.h"
+#include "tstyles/scene/temporal_compositors.h"
+
+namespace {
+
+using namespace tstyles;
+
+// What a block split may change, in 1/255 steps of the stored values:
+// - A ray crossing a block face has its segment there cut in two, each with its own sample (its
+//   other samples sit on the same lattice as in one process); thin features (the hurricane's rain
+//   bands, a few voxels thick) show it in a channel by a step or two.
+// - A ray that reaches the termination opacity (0.99) in a front block still gets the last 1 % from
+//   the blocks behind it, where one process shows the background: up to about 2.5 steps.
+// - Isolated pixels differ more: one of 65 536 by 14/255 on the hurricane's MIP at N = 2 and 4,
+//   8/255 on its last-above at N = 4 (cause not pinned down yet; docs/scaling.md).
+// Measured on llvmpipe at 256x256 for N = 2 and 4: at most 0.82 % of the pixels beyond 1/255 (all
+// within 2/255 but the isolated ones: at most 0.02 % beyond 2/255), mean at most 0.022/255.
+ComparisonThresholds distributedThresholds() {
+    ComparisonThresholds thresholds;
+    thresholds.maxDelta = 16;
+    thresholds.pixelThreshold = 2;
+    thresholds.maxFailingFraction = 0.002;
+    thresholds.maxMeanDelta = 0.03;
+    thresholds.minSsim = 0.999;
+    return thresholds;
+}
+
+struct SceneCases {
+    std::string sceneFile;  // under data/scenes
+    std::vector<TemporalCompositor> compositors;
+};
+
+std::vector<TemporalCompositor> everyBuiltInCompositor() {
+    return {TemporalCompositor::MaxIntensityProjection, TemporalCompositor::Average, TemporalCompositor::MaxDensityChange,
+            TemporalCompositor::Minimum, TemporalCompositor::StandardDeviation, TemporalCompositor::TimeOfMaximum,
+            TemporalCompositor::FirstArrival, TemporalCompositor::LastAbove, TemporalCompositor::LinearTrend,
+            TemporalCompositor::Chronovolume, TemporalCompositor::Difference};
+}
+
+GlBackend backendFromEnvironment() {
+    const char* name = std::getenv("TSTYLES_TEST_BACKEND");
+    return glBackendFromString(name ? name : "auto").value_or(GlBackend::Auto);
+}
+
+int run(const std::filesystem::path& sourceDir, const std::filesystem::path& outputDir) {
+    const MpiSession mpi;
+    const std::vector<SceneCases> cases = {
+        {"figure4-temporal-mip.json", everyBuiltInCompositor()},   // partial overlap
+        {"figure5-focus-step5.json", everyBuiltInCompositor()},    // the hurricane
+        {"figure4-styled-temporal-average.json", {TemporalCompositor::Average, TemporalCompositor::MaxIntensityProjection}},
+        {"figure1-styled-focus-step3.json", {TemporalCompositor::MaxIntensityProjection}},
+    };
+    const auto context = createHeadlessContext(backendFromEnvironment(), false);
+    const ComparisonThresholds thresholds = distributedThresholds();
+    int failures = 0;
+    if (mpi.isFirst())
+        std::cout << mpi.processCount() << " processes, " << context->description() << "\n"
+                  << "case                                                  max  beyond 2/255  mean/255\n";
+    for (const SceneCases& sceneCases : cases) {
+        const std::filesystem::path sceneFile = sourceDir / "data" / "scenes" / sceneCases.sceneFile;
+        Scene base = loadScene(sceneFile);
+        base.width = 256;
+        base.height = 256;
+        SceneOnSeries fitted = fitSceneToSeries(base, loadSeries(base.dataset));
+        // Every compositor's scene, with its automatic parts fitted to the whole series.
+        std::vector<Scene> scenes;
+        for (TemporalCompositor compositor : sceneCases.compositors) {
+            Scene scene = fitted.scene;
+            scene.compositor = compositor;
+            scenes.push_back(fitAutomaticParts(scene, fitted.series));
+        }
+        std::optional<SceneOnSeries> whole;
+        if (mpi.isFirst()) whole = fitted;
+        Renderer blockRenderer(ShaderLibrary::embedded());
+        DistributedRendering distributed(mpi, blockRenderer, std::move(fitted),
+                                         [&](const Series& block, const WholeSeries& wholeSeries) {
+                                             blockRenderer.setSeries(block, wholeSeries);
+                                         });
+        std::optional<Renderer> wholeRenderer;
+        if (mpi.isFirst()) {
+            wholeRenderer.emplace(ShaderLibrary::embedded());
+            wholeRenderer->setSeries(whole->series);
+        }
+        for (const Scene& scene : scenes) {
+            const Image image = distributed.render(scene);
+            if (!mpi.isFirst()) continue;
+            const Image expected = AnnotatedRendering(*wholeRenderer, *whole).render(scene);
+            const ImageDifference difference = compareImages(image, expected, thresholds.pixelThreshold);
+            const std::string name = sceneCases.sceneFile + " " + toString(scene.compositor);
+            const bool passed = within(difference, thresholds);
+            char line[200];
+            std::snprintf(line, sizeof line, "%-52s %4d  %10.4f %%  %8.5f  %s\n", name.c_str(), difference.maxDelta,
+                          100.0 * difference.failingFraction, difference.meanDelta, passed ? "ok" : "BEYOND");
+            std::cout << line;
+            if (!passed) {
+                ++failures;
+                const std::string stem = std::to_string(mpi.processCount()) + "-" + sceneCases.sceneFile + "-" +
+                                         toString(scene.compositor);
+                std::filesystem::create_directories(outputDir);
+                writeImage(image, outputDir / (stem + ".distributed.png"));
+                writeImage(expected, outputDir / (stem + ".one-process.png"));
+            }
+        }
+    }
+    if (mpi.isFirst()) std::cout << (failures == 0 ? "all within the thresholds\n" : "some cases are beyond the thresholds\n");
+    return failures == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 3) {
+        std::cerr << "usage: distributed_equivalence SOURCE_DIR OUTPUT_DIR\n";
+        return 2;
+    }
+    try {
+        return run(argv[1], argv[2]);
+    } catch (const tstyles::FailedOnAnotherProcess& failure) {
+        return failure.exitCode();
+    } catch (const std::exception& error) {
+        std::cerr << "distributed_equivalence: " << error.what() << "\n";
+        return 1;
+    }
+}
