@@ -1,0 +1,130 @@
+// Cutting a series to one process's block: the kept nodes are the ones the block's samples and
+// gradients read, at the same world positions with the same values.
+#include "tstyles/data/series_crop.h"
+
+#include <gtest/gtest.h>
+
+#include "tstyles/core/errors.h"
+
+namespace tstyles {
+namespace {
+
+// A value that tells nodes apart: linear in the world position.
+float valueAt(const glm::dvec3& world) { return float(0.1 * world.x + 0.01 * world.y + 0.001 * world.z); }
+
+// One rectilinear time-step of dims nodes, `spacing` apart, at `placement`, holding valueAt.
+TimeStep linearStep(glm::ivec3 dims, glm::dvec3 spacing, const Placement& placement,
+                    std::array<std::vector<double>, 3> uneven = {}) {
+    TimeStep step;
+    RectilinearGrid grid;
+    grid.dims = dims;
+    grid.spacing = spacing;
+    grid.axisPositions = std::move(uneven);
+    const auto local = [&](glm::ivec3 node) {
+        glm::dvec3 position = glm::dvec3(node) * spacing;
+        for (int axis = 0; axis < 3; ++axis)
+            if (grid.isUneven(axis)) position[axis] = grid.axisPositions[std::size_t(axis)][std::size_t(node[axis])];
+        return position;
+    };
+    const glm::dmat4 toWorld = placement.gridToWorld();
+    for (int z = 0; z < dims.z; ++z)
+        for (int y = 0; y < dims.y; ++y)
+            for (int x = 0; x < dims.x; ++x)
+                step.density.push_back(valueAt(glm::dvec3(toWorld * glm::dvec4(local({x, y, z}), 1.0))));
+    step.mask = std::vector<std::uint8_t>(step.density.size(), 1);
+    step.grid = grid;
+    step.placement = placement;
+    return step;
+}
+
+// Every kept node holds the value of its world position.
+void expectValuesFollowTheirNodes(const TimeStep& step) {
+    const RectilinearGrid& grid = step.rectilinear();
+    const glm::dmat4 toWorld = step.placement.gridToWorld();
+    std::size_t index = 0;
+    for (int z = 0; z < grid.dims.z; ++z)
+        for (int y = 0; y < grid.dims.y; ++y)
+            for (int x = 0; x < grid.dims.x; ++x, ++index) {
+                glm::dvec3 local = glm::dvec3(x, y, z) * grid.spacing;
+                for (int axis = 0; axis < 3; ++axis)
+                    if (grid.isUneven(axis)) local[axis] = grid.axisPositions[std::size_t(axis)][std::size_t(glm::ivec3(x, y, z)[axis])];
+                ASSERT_NEAR(step.density[index], valueAt(glm::dvec3(toWorld * glm::dvec4(local, 1.0))), 1e-5);
+            }
+    ASSERT_EQ(step.mask->size(), step.density.size());
+}
+
+TEST(SeriesCrop, KeepsTheCellsTheBoxTouchesPlusGhostNodes) {
+    Series series;
+    series.steps.push_back(linearStep({11, 6, 5}, glm::dvec3(0.1), Placement{}));
+    // x in [0.25, 0.45]: cells 2..4 (nodes 2..5), two ghost nodes on each side: nodes 0..7.
+    const Series block = cropSeriesToBox(series, Bounds{{0.25, -1.0, -1.0}, {0.45, 1.0, 1.0}}, 2);
+    const TimeStep& step = block.steps[0];
+    EXPECT_EQ(step.rectilinear().dims, glm::ivec3(8, 6, 5));
+    EXPECT_NEAR(step.placement.origin.x, 0.0, 1e-12);
+    expectValuesFollowTheirNodes(step);
+    // Further in, the first kept node moves: x in [0.55, 0.65] keeps nodes 3..9.
+    const Series inner = cropSeriesToBox(series, Bounds{{0.55, -1.0, -1.0}, {0.65, 1.0, 1.0}}, 2);
+    EXPECT_EQ(inner.steps[0].rectilinear().dims.x, 7);
+    EXPECT_NEAR(inner.steps[0].placement.origin.x, 0.3, 1e-12);
+    expectValuesFollowTheirNodes(inner.steps[0]);
+}
+
+TEST(SeriesCrop, RotatedPlacementsAndUnevenAxesKeepTheirWorldPositions) {
+    Placement placement;
+    placement.origin = {1.0, 2.0, 3.0};
+    placement.rotation = fromAxisAngle({{0.0, 0.0, 1.0}, 90.0});
+    Series series;
+    series.steps.push_back(linearStep({9, 7, 6}, glm::dvec3(0.2, 0.1, 0.3), placement,
+                                      {std::vector<double>{}, std::vector<double>{},
+                                       std::vector<double>{0.0, 0.1, 0.3, 0.7, 1.2, 2.0}}));
+    const Bounds box{{0.62, 2.1, 3.35}, {0.88, 2.9, 3.8}};
+    const Series block = cropSeriesToBox(series, box, 1);
+    const TimeStep& step = block.steps[0];
+    const RectilinearGrid& grid = step.rectilinear();
+    EXPECT_LT(grid.dims.x, 9);
+    EXPECT_LT(grid.dims.y, 7);
+    EXPECT_LT(grid.dims.z, 6);
+    EXPECT_DOUBLE_EQ(grid.axisPositions[2].front(), 0.0);
+    expectValuesFollowTheirNodes(step);
+    // The kept grid still covers the box.
+    const Bounds kept = block.worldBounds(0);
+    EXPECT_TRUE(glm::all(glm::lessThanEqual(kept.lower, box.lower + 1e-12)));
+    EXPECT_TRUE(glm::all(glm::greaterThanEqual(kept.upper, box.upper - 1e-12)));
+}
+
+TEST(SeriesCrop, ATimeStepOutsideTheBoxKeepsItsNearestCell) {
+    Series series;
+    series.steps.push_back(linearStep({5, 5, 5}, glm::dvec3(0.1), Placement{}));
+    Placement far;
+    far.origin = {10.0, 0.0, 0.0};
+    series.steps.push_back(linearStep({5, 5, 5}, glm::dvec3(0.1), far));
+    const Series block = cropSeriesToBox(series, Bounds{{0.0, 0.0, 0.0}, {0.4, 0.4, 0.4}}, 2);
+    ASSERT_EQ(block.size(), 2u);  // time-step indices keep their meaning
+    EXPECT_EQ(block.steps[1].rectilinear().dims.x, 2);
+    EXPECT_NEAR(block.steps[1].placement.origin.x, 10.0, 1e-12);
+    expectValuesFollowTheirNodes(block.steps[1]);
+}
+
+TEST(SeriesCrop, BeamGridsAreRefusedByName) {
+    Series series;
+    series.manifestPath = "survey/series.json";
+    series.steps.push_back(linearStep({3, 3, 3}, glm::dvec3(0.1), Placement{}));
+    TimeStep ping;
+    BeamGrid beams;
+    beams.dims = {2, 2, 2};
+    beams.azimuthDeg = {-10.0, 10.0};
+    beams.elevationDeg = {-5.0, 5.0};
+    ping.grid = beams;
+    ping.density.assign(8, 0.5f);
+    series.steps.push_back(ping);
+    try {
+        cropSeriesToBox(series, Bounds{{0.0, 0.0, 0.0}, {1.0, 1.0, 1.0}}, 2);
+        FAIL() << "a beam grid was cut";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("survey/series.json: time-step 1: is a beam grid"), std::string::npos)
+            << error.what();
+    }
+}
+
+}  // namespace
+}  // namespace tstyles
