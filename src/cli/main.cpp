@@ -24,8 +24,10 @@ int main(int argc, char** argv) {
     try {
         for (const auto& command : commands)
             if (command.parsed->parsed()) return command.run();
-    } catch (const FailedOnAnotherProcess& failure) {
-        return failure.exitCode();  // process 0 of the MPI run says why
+    } catch (const FailedOnAnotherProcess&) {
+        // Process 0 of the MPI run says why and exits with the code; mpirun passes it on. A non-zero
+        // exit here would make mpirun stop the job, process 0 too, perhaps before it has printed.
+        return cli::kExitSuccess;
     } catch (const InputError& error) {
         std::cerr << "tstyles: " << error.what() << "\n";
         return cli::kExitBadInput;

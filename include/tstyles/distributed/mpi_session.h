@@ -9,8 +9,9 @@
 
 namespace tstyles {
 
-// Thrown on the processes other than 0 when a step failed somewhere: process 0 reports it; the
-// others end quietly with the same exit code.
+// Thrown on the processes other than 0 when a step failed somewhere: process 0 reports it and ends
+// with the exit code; the others end quietly (the command line lets them exit 0, so that mpirun,
+// which stops a job at the first non-zero exit, cannot stop process 0 before it has said why).
 class FailedOnAnotherProcess : public std::runtime_error {
 public:
     explicit FailedOnAnotherProcess(int exitCode)
