@@ -15,6 +15,7 @@
 #include "progress_bar.h"
 #include "scene_source.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/distributed/distributed_rendering.h"
 #include "tstyles/render/renderer.h"
 #include "tstyles/scene/automatic_scene.h"
 
@@ -32,6 +33,7 @@ struct AnimateOptions {
     GlOptions gl;
     DatasetOptions dataset;
     GpuMemoryOption gpuMemory;
+    bool distributed = false;  // --distributed: every frame sort-last over the MPI processes
 };
 
 // Every frame's scene, made before anything is rendered: a key that leaves the scene's allowed
@@ -57,7 +59,14 @@ double median(std::vector<double> values) {
     return values[values.size() / 2];
 }
 
-int runAnimate(const AnimateOptions& options) {
+// The fitted scene with its animation, and every frame's scene.
+struct AnimationPlan {
+    SceneOnSeries fitted;
+    MovieSettings movie;
+    std::vector<Scene> scenes;
+};
+
+AnimationPlan planAnimation(const AnimateOptions& options, bool checkOutput) {
     parseGpuMemoryOption(options.gpuMemory);
     SceneAndSeries opened = openSceneOrDataset(options.inputs, {}, options.dataset);
     Scene& scene = opened.scene;
@@ -70,9 +79,23 @@ int runAnimate(const AnimateOptions& options) {
     fitted.scene.animation =
         animationFor(fitted.scene, fitted.series.size(), options.animation, sceneName, cameraDistance(fitted));
     const MovieSettings movie{fitted.scene.width, fitted.scene.height, fitted.scene.animation.framesPerSecond};
-    requireWritableFrameOutput(options.output, movie);
-    const std::vector<Scene> scenes = frameScenes(fitted.scene, fitted.series.size(), options.inputs.front());
+    if (checkOutput) requireWritableFrameOutput(options.output, movie);
+    std::vector<Scene> scenes = frameScenes(fitted.scene, fitted.series.size(), options.inputs.front());
+    return {std::move(fitted), movie, std::move(scenes)};
+}
 
+void reportWritten(const AnimateOptions& options, const FrameSink& sink, const MovieSettings& movie,
+                   const std::vector<double>& milliseconds, const std::string& how) {
+    std::cout << "wrote " << options.output.string() << " (" << sink.description() << ", " << movie.width << "x"
+              << movie.height << " at " << sink.framesPerSecond() << " fps; median " << median(milliseconds)
+              << " ms per frame; " << how << ")\n";
+}
+
+int runAnimate(const AnimateOptions& options) {
+    AnimationPlan plan = planAnimation(options, true);
+    SceneOnSeries& fitted = plan.fitted;
+    const MovieSettings& movie = plan.movie;
+    const std::vector<Scene>& scenes = plan.scenes;
     const auto context = createHeadlessContext(parseBackend(options.gl.backend), glDebugOutputRequested());
     Renderer renderer(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
     uploadWithinGpuMemory(renderer, fitted.series, options.gpuMemory, options.dataset);
@@ -96,9 +119,58 @@ int runAnimate(const AnimateOptions& options) {
     progress.update(int(scenes.size()));
     progress.finish();
     sink->finish();
-    std::cout << "wrote " << options.output.string() << " (" << sink->description() << ", " << movie.width << "x"
-              << movie.height << " at " << sink->framesPerSecond() << " fps; median " << median(milliseconds)
-              << " ms per frame; " << context->description() << ")\n";
+    reportWritten(options, *sink, movie, milliseconds, context->description());
+    return kExitSuccess;
+}
+
+// --distributed: every frame is rendered by all processes, each its block of the series, and
+// composited onto process 0, which writes the movie (docs/scaling.md).
+int runDistributedAnimate(const AnimateOptions& options) {
+    const MpiSession mpi;
+    std::optional<AnimationPlan> plan;
+    mpi.together("reading the scene and the series", [&] { plan = planAnimation(options, mpi.isFirst()); });
+    std::unique_ptr<HeadlessContext> context;
+    std::optional<Renderer> renderer;
+    mpi.together("starting OpenGL", [&] {
+        context = createHeadlessContext(parseBackend(options.gl.backend), glDebugOutputRequested());
+        renderer.emplace(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
+    });
+    DistributedRendering rendering(mpi, *renderer, std::move(plan->fitted), [&](const Series& block, const WholeSeries& whole) {
+        uploadWithinGpuMemory(*renderer, block, options.gpuMemory, options.dataset, whole);
+    });
+    std::unique_ptr<FrameSink> sink;
+    mpi.together("opening the output", [&] {
+        if (mpi.isFirst()) sink = openFrameSink(options.output, plan->movie);
+    });
+    const InterruptGuard interrupt;
+    std::optional<ProgressBar> progress;
+    if (mpi.isFirst()) progress.emplace("rendering frame", int(plan->scenes.size()));
+    std::vector<double> milliseconds;
+    for (std::size_t frame = 0; frame < plan->scenes.size(); ++frame) {
+        // Ctrl+C reaches every process; all stop at the same frame.
+        if (mpi.maximum(interrupt.interrupted() ? 1.0 : 0.0) > 0.0) {
+            if (!mpi.isFirst()) return kExitSuccess;
+            progress->finish();
+            std::cerr << "tstyles: interrupted; " << options.output.string() << " was not written\n";
+            return kExitInterrupted;
+        }
+        if (progress) progress->update(int(frame));
+        const auto start = std::chrono::steady_clock::now();
+        const Image image = rendering.render(plan->scenes[frame]);
+        mpi.together("writing a frame", [&] {
+            if (mpi.isFirst()) sink->add(image);
+        });
+        milliseconds.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    }
+    mpi.together("finishing the output", [&] {
+        if (mpi.isFirst()) sink->finish();
+    });
+    if (!mpi.isFirst()) return kExitSuccess;
+    progress->update(int(plan->scenes.size()));
+    progress->finish();
+    reportWritten(options, *sink, plan->movie, milliseconds,
+                  std::to_string(mpi.processCount()) + " processes, sort-last; " + context->description());
     return kExitSuccess;
 }
 
@@ -125,7 +197,10 @@ Command addAnimateCommand(CLI::App& app) {
     addGlOptions(*command, options->gl);
     addDatasetOptions(*command, options->dataset);
     addGpuMemoryOption(*command, options->gpuMemory);
-    return {command, [options] { return runAnimate(*options); }};
+    command->add_flag("--distributed", options->distributed,
+                      "Render every frame sort-last over the MPI processes this runs in (mpirun -np N tstyles "
+                      "animate ... --distributed): each keeps one block of the series (docs/scaling.md)");
+    return {command, [options] { return options->distributed ? runDistributedAnimate(*options) : runAnimate(*options); }};
 }
 
 }  // namespace tstyles::cli

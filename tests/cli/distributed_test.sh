@@ -57,4 +57,19 @@ case_failure_on_one_process_ends_all() {
     [ "$(grep -c "process [12] of 3" "$ERR_FILE")" -eq 0 ] || fail "processes 1 and 2 did not fail, yet are reported"
 }
 
+case_animate_frames_match_one() {
+    # The growing multiple exposure, 80 frames at 64x64; the first, a middle and the last compared.
+    run_tstyles -- animate "$SCENE" --exposure grow --width 64 --height 64 -o "$SCRATCH/one/"
+    expect_exit 0
+    run_mpi 2 animate "$SCENE" --exposure grow --width 64 --height 64 -o "$SCRATCH/two/" --distributed
+    expect_exit 0
+    expect_stdout_contains "80 frames as PNG"
+    expect_stdout_contains "2 processes, sort-last"
+    for frame in 0000 0040 0079; do
+        run_tstyles -- compare "$SCRATCH/one/frame-$frame.png" "$SCRATCH/two/frame-$frame.png" --max-difference 16 \
+            --pixel-threshold 2 --max-failing-share 0.2 --max-mean 0.03 --min-ssim 0.999
+        expect_exit 0
+    done
+}
+
 run_case
