@@ -11,9 +11,11 @@
 #include <sys/resource.h>
 
 #include "bench_datasets.h"
+#include "bench_distributed.h"
 #include "bench_scaling.h"
 #include "commands.h"
 #include "tstyles/core/atomic_file.h"
+#include "tstyles/core/errors.h"
 #include "tstyles/data/manifest.h"
 #include "tstyles/gl/gl_api.h"
 #include "tstyles/render/renderer.h"
@@ -38,6 +40,7 @@ struct BenchOptions {
     // The scaling run instead of the matrix: super-ellipsoid series of these lengths.
     std::vector<int> scalingSteps;
     bool styled = false;
+    bool distributed = false;  // sort-last over the MPI processes (bench_distributed.h)
     GlOptions gl;
 };
 
@@ -209,6 +212,11 @@ void runScaling(Renderer& renderer, const BenchOptions& options, std::vector<Ben
 }
 
 int runBench(const BenchOptions& options) {
+    if (options.distributed) {
+        if (options.baseline || options.styled || !options.scalingSteps.empty())
+            throwInputError("", "--distributed", "measures the flat matrix; it takes neither --baseline, --styled nor --scaling");
+        return runDistributedBench({options.datasets, options.sizes, options.frames, options.warmup, options.json, options.gl});
+    }
     const auto context = createHeadlessContext(parseBackend(options.gl.backend), false);
     Renderer renderer(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
     std::vector<BenchResult> results;
@@ -247,6 +255,9 @@ Command addBenchCommand(CLI::App& app) {
                         "numbers of time-steps, partial and full overlap (e.g. --scaling 10 20 40 80 160)")
         ->check(CLI::Range(2, 1000));
     command->add_flag("--styled", options->styled, "Measure the Figure 4 scenes with lit-sphere styles");
+    command->add_flag("--distributed", options->distributed,
+                      "Under mpirun: render sort-last over the MPI processes and report each frame's rendering (the "
+                      "slowest block) and compositing, for strong scaling (docs/scaling.md)");
     addGlOptions(*command, options->gl);
     return {command, [options] { return runBench(*options); }};
 }
