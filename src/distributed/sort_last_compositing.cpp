@@ -28,9 +28,12 @@ glm::dvec3 PixelRays::direction(std::size_t pixel) const {
     const double column = double(pixel % std::size_t(size_.x)) + 0.5;
     const double row = double(size_.y - 1 - int(pixel / std::size_t(size_.x))) + 0.5;
     const glm::dvec2 ndc = glm::dvec2(column, row) / glm::dvec2(size_) * 2.0 - 1.0;
-    const glm::dvec4 nearPoint = inverseViewProjection_ * glm::dvec4(ndc, -1.0, 1.0);
-    const glm::dvec4 farPoint = inverseViewProjection_ * glm::dvec4(ndc, 1.0, 1.0);
-    return glm::dvec3(farPoint) / farPoint.w - glm::dvec3(nearPoint) / nearPoint.w;
+    const glm::dmat4& m = inverseViewProjection_;
+    const glm::dvec4 onScreen = m[0] * ndc.x + m[1] * ndc.y + m[3];
+    const glm::dvec4 nearPoint = onScreen - m[2];
+    const glm::dvec4 farPoint = onScreen + m[2];
+    // far / far.w - near / near.w, times near.w * far.w (positive: both points are in front of the eye).
+    return glm::dvec3(farPoint) * nearPoint.w - glm::dvec3(nearPoint) * farPoint.w;
 }
 
 void compositeSlabs(const std::vector<const float*>& pieces, PixelSpan span, int axis, const PixelRays& rays,

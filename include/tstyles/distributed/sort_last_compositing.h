@@ -35,7 +35,9 @@ PixelSpan finalSpan(const BlockDecomposition& blocks, int rank, std::size_t pixe
 class PixelRays {
 public:
     PixelRays(const glm::dmat4& inverseViewProjection, glm::ivec2 size);
-    // The ray's direction (not normalised; only signs are used) of pixel `pixel` in row order.
+    // A vector along the ray of pixel `pixel` in row order, of arbitrary positive length (only
+    // signs are used): the near and far points of the pixel are affine in its position before the
+    // perspective division, so their difference after it has the sign of far * near.w - near * far.w.
     glm::dvec3 direction(std::size_t pixel) const;
 
 private:
