@@ -19,9 +19,7 @@ vec2 activeIntervals[MAX_TIME_STEPS];
 
 
 // Returns the ray depth (min entry, max exit); empty (x >= y) when the ray meets no time-step.
-// Every time-step's interval is cut to `clip`, the part of the ray this pass renders (all of it,
-// or the ray inside one process's block in distributed rendering).
-vec2 extractVolumeOverlap(ivec2 pixel, vec2 clip) {
+vec2 extractVolumeOverlap(ivec2 pixel) {
     activeCount = 0;
     vec2 rayDepth = vec2(NO_ENTRY, NO_EXIT);
 #if PACKED_ALIGNED
@@ -42,8 +40,7 @@ vec2 extractVolumeOverlap(ivec2 pixel, vec2 clip) {
         float entryDepth = depths.x;
         // No entry face but an exit: the near plane cuts the box, the ray starts inside it.
         if (entryDepth >= NO_ENTRY) entryDepth = 0.0;
-        entryDepth = max(entryDepth, max(clip.x, 0.0));
-        exitDepth = min(exitDepth, clip.y);
+        entryDepth = max(entryDepth, 0.0);
         if (exitDepth <= entryDepth) continue;
 
         // Insertion by entry depth keeps the list in the order the ray meets the time-steps.

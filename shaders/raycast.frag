@@ -14,8 +14,9 @@ uniform float stepLength;       // world units between samples
 uniform float referenceLength;  // the length over which a transfer-function opacity applies
 uniform float terminationOpacity;
 uniform vec4 background;        // straight (not premultiplied) colour and opacity
-// Rays are clipped to this world box: one process's block in distributed rendering (sort-last,
-// docs/scaling.md), else a box around everything.
+// The part of the world this pass renders: one process's block in distributed rendering
+// (sort-last, docs/scaling.md), else a box around everything. A ray's segment belongs to the block
+// its middle lies in, so the blocks take exactly the samples of one whole render between them.
 uniform vec3 clipLower;
 uniform vec3 clipUpper;
 // The world box of the whole series. Segment ends sit on a lattice of stepLength along each ray,
@@ -29,6 +30,18 @@ uniform vec3 seriesUpper;
 float nextLatticePoint(float t, float anchor) {
     float point = anchor + (floor((t - anchor) / stepLength) + 1.0) * stepLength;
     return point <= t + 0.01 * stepLength ? point + stepLength : point;
+}
+
+float latticePointAtOrBefore(float t, float anchor) {
+    return anchor + floor((t - anchor) / stepLength) * stepLength;
+}
+
+// Where a jump to `target` (over empty space, or to the next time-step's entry) resumes: at the
+// lattice point at or before it, so that the samples after a jump are the ones a plain march takes
+// (the ones skipped were transparent), but never before `segmentEnd`; a jump to the ray's end ends it.
+float resumeAt(float target, float segmentEnd, float rayEnd, float anchor) {
+    if (target >= rayEnd) return rayEnd;
+    return max(segmentEnd, latticePointAtOrBefore(target, anchor));
 }
 
 // 64-bit counters as (low, high) pairs (GLSL 4.50 has only 32-bit atomics), filled with
@@ -54,37 +67,47 @@ layout(location = 0) out vec4 fragmentColor;  // premultiplied by alpha
 
 void main() {
     Ray ray = rayForPixel(gl_FragCoord.xy);
-    vec2 rayDepth = extractVolumeOverlap(ivec2(gl_FragCoord.xy), rayBoxInterval(ray, clipLower, clipUpper));
-    // A ray that meets no time-step would give the background, which the renderer has already
-    // cleared the target to. Discarding it lets llvmpipe skip the rest of the shader for a block of
-    // pixels that all miss (a branch would not: both sides run, masked).
-    if (rayDepth.x >= rayDepth.y) discard;
+    vec2 rayDepth = extractVolumeOverlap(ivec2(gl_FragCoord.xy));
+    vec2 clip = rayBoxInterval(ray, clipLower, clipUpper);
+    // A ray that meets no time-step (in the clip box) would give the background, which the renderer
+    // has already cleared the target to. Discarding it lets llvmpipe skip the rest of the shader for
+    // a block of pixels that all miss (a branch would not: both sides run, masked).
+    if (max(rayDepth.x, clip.x) >= min(rayDepth.y, clip.y)) discard;
     prepareWalk(ray);
 
     vec4 accumulated = vec4(0.0);  // premultiplied colour, opacity
     int samples = 0;
     int fetches = 0;
     float anchor = max(rayBoxInterval(ray, seriesLower, seriesUpper).x, 0.0);
-    float t = rayDepth.x;
+    // In a block, start at the segment that holds the clip's entry.
+    float t = clip.x > rayDepth.x ? max(rayDepth.x, latticePointAtOrBefore(clip.x, anchor)) : rayDepth.x;
     while (t < rayDepth.y && accumulated.a < terminationOpacity) {
         // Each sample stands for the segment [t, segmentEnd], from t to the next lattice point; the
-        // first after an entry or a jump and the last, at the exit, are shorter, so a slab of
-        // thickness D gets exactly D worth of opacity.
+        // first (at the ray's entry, or at a block's face) and the last (at the exit) are shorter,
+        // so a slab of thickness D gets exactly D worth of opacity.
         float segmentEnd = min(nextLatticePoint(t, anchor), rayDepth.y);
         float middle = 0.5 * (t + segmentEnd);
+        if (middle < clip.x) {  // the block in front's segment
+            t = segmentEnd;
+            continue;
+        }
+        if (middle >= clip.y) {  // the block behind's: this block's part of the ray is done
+            t = rayDepth.y;
+            break;
+        }
         advanceWalk(middle);
         TemporalSample styled = compositeTemporal(ray.origin + ray.direction * middle, middle);
         samples += 1;
         fetches += styled.fetches;
         if (WALK_SKIPS_EMPTY_SPACE && styled.contributing == 0) {
             // Between time-steps: jump to where the next one begins.
-            t = nextEntryAfter(middle, rayDepth.y);
+            t = resumeAt(nextEntryAfter(middle, rayDepth.y), segmentEnd, rayDepth.y, anchor);
             continue;
         }
         if (WALK_SKIPS_EMPTY_SPACE && styled.emptyUntil > 0.0) {
             // Every time-step here is transparent: jump to the end of the empty bricks, but not past
             // the entry of a time-step the ray has not reached yet.
-            t = max(segmentEnd, min(styled.emptyUntil, nextEntryAfter(middle, rayDepth.y)));
+            t = resumeAt(min(styled.emptyUntil, nextEntryAfter(middle, rayDepth.y)), segmentEnd, rayDepth.y, anchor);
             continue;
         }
         float opacity = clamp(styled.colorOpacity.a, 0.0, 1.0);

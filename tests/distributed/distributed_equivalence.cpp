@@ -25,21 +25,23 @@ namespace {
 
 using namespace tstyles;
 
-// What a block split may change, in 1/255 steps of the stored values:
-// - A ray crossing a block face has its segment there cut in two, each with its own sample (its
-//   other samples sit on the same lattice as in one process); thin features (the hurricane's rain
-//   bands, a few voxels thick) show it in a channel by a step or two.
-// - A ray that reaches the termination opacity (0.99) in a front block still gets the last 1 % from
-//   the blocks behind it, where one process shows the background: up to about 2.5 steps.
-// - Isolated pixels differ more: one of 65 536 by 14/255 on the hurricane's MIP at N = 2 and 4,
-//   8/255 on its last-above at N = 4 (cause not pinned down yet; docs/scaling.md).
-// Measured on llvmpipe at 256x256 for N = 2 and 4: at most 0.82 % of the pixels beyond 1/255 (all
-// within 2/255 but the isolated ones: at most 0.02 % beyond 2/255), mean at most 0.022/255.
+// What a block split may change, in 1/255 steps of the stored values. The blocks take exactly the
+// samples of one whole render between them (a segment belongs to the block its middle lies in, on
+// one lattice along the ray), so only two things differ:
+// - A ray that reaches the termination opacity (0.99) in a front block still gets up to the last
+//   1 % from the blocks behind it, where one process shows the background: up to 2.5 steps.
+//   With termination 1.0 every pixel of the hurricane at N = 4 is within 1/255 but one (below).
+// - Near-ties: the hurricane's index-coloured MIP and time of maximum pick the time-step of the
+//   largest density; where two time-steps nearly tie, the float rounding of a block's own voxel
+//   mapping can flip the pick, and the pixel takes the other time-step's colour (one pixel of
+//   65 536, 14/255 at N = 2 and 4).
+// Measured on llvmpipe at 256x256, N = 2 and 4: at most 3/255 elsewhere, at most 0.005 % of the
+// pixels beyond 2/255, mean at most 0.022/255 (docs/scaling.md).
 ComparisonThresholds distributedThresholds() {
     ComparisonThresholds thresholds;
-    thresholds.maxDelta = 16;
-    thresholds.pixelThreshold = 2;
-    thresholds.maxFailingFraction = 0.002;
+    thresholds.maxDelta = 64;                 // a near-tie's other colour
+    thresholds.pixelThreshold = 3;            // early termination
+    thresholds.maxFailingFraction = 0.0002;   // 13 pixels of 65 536
     thresholds.maxMeanDelta = 0.03;
     thresholds.minSsim = 0.999;
     return thresholds;
@@ -75,7 +77,7 @@ int run(const std::filesystem::path& sourceDir, const std::filesystem::path& out
     int failures = 0;
     if (mpi.isFirst())
         std::cout << mpi.processCount() << " processes, " << context->description() << "\n"
-                  << "case                                                  max  beyond 2/255  mean/255\n";
+                  << "case                                                  max  beyond 3/255  mean/255\n";
     for (const SceneCases& sceneCases : cases) {
         const std::filesystem::path sceneFile = sourceDir / "data" / "scenes" / sceneCases.sceneFile;
         Scene base = loadScene(sceneFile);

@@ -1,6 +1,7 @@
-// FrameOptions::clipBox, which a distributed render's process uses for its block: only the parts of
-// the rays inside the box are rendered, with Beer-Lambert attenuation over the clipped thickness,
-// and the frames of two halves composited front over back give the whole.
+// FrameOptions::clipBox, which a distributed render's process uses for its block: a ray's segments
+// whose middles lie inside the box are rendered (here the box's faces sit on the sample lattice, so
+// that is Beer-Lambert over the clipped thickness), and the frames of two halves composited front
+// over back give the whole.
 #include <gtest/gtest.h>
 
 #include "render_test_support.h"
