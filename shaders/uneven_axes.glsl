@@ -29,14 +29,23 @@ float nodeIndexOf(int step, int axis, float position) {
     int first = unevenAxes.firstNode[step][axis];
     int count = int(timeSteps.steps[step].dims[axis]);
     // After the nodes, a bucket lookup: 1 / bucket width, bucket count, each bucket's lower node.
-    // Buckets are at most half the finest gap wide, so the walks below take a step or none.
     int lookup = first + count;
     int buckets = int(axisNodes.positions[lookup + 1]);
     int bucket = clamp(int(position * axisNodes.positions[lookup]), 0, buckets - 1);
     // The last node at or below `position`, in [0, count - 2].
     int low = int(axisNodes.positions[lookup + 2 + bucket]);
+#if UNEVEN_AXIS_WALK
+    // Some axis' buckets are wider than half its finest gap (the table's limit): walk.
     while (low < count - 2 && axisNodes.positions[first + low + 1] <= position) ++low;
     while (low > 0 && axisNodes.positions[first + low] > position) --low;
+#else
+    // Buckets at most half the finest gap wide: the node is the bucket's or the next one (the one
+    // before where float rounding picked the next bucket). No loop: llvmpipe counts a pass of a
+    // while loop even where it runs none, and these ran for every time-step at every sample (twice
+    // with empty-space skipping), which cut the hurricane's rays short on the general path.
+    if (low < count - 2 && axisNodes.positions[first + low + 1] <= position) ++low;
+    if (low > 0 && axisNodes.positions[first + low] > position) --low;
+#endif
     float lower = axisNodes.positions[first + low];
     float upper = axisNodes.positions[first + low + 1];
     return clamp(float(low) + (position - lower) / (upper - lower), 0.0, float(count - 1));

@@ -8,6 +8,7 @@
 //   ALL_AFFINE          1 when every time-step's world -> voxel map is affine (even rectilinear grids)
 //   STRUCTURED_GRIDS    1 when the series has explicit structured time-steps
 //   UNEVEN_AXES         1 when a time-step has an uneven rectilinear axis
+//   UNEVEN_AXIS_WALK    1 when an uneven axis' bucket may hold several nodes (UnevenAxisTable::crowdedBuckets)
 //   BEAM_GRIDS          1 when a time-step is a beam (sonar) grid
 //   EVEN_BEAMS          1 when every beam grid's beams are evenly spaced on both axes
 //   PACKED_ALIGNED      1 when the packed groups of four are walked (walk_packed_groups.glsl)
@@ -22,6 +23,6 @@
     !defined(UNEVEN_AXES) || !defined(BEAM_GRIDS) || !defined(EVEN_BEAMS) || !defined(PACKED_ALIGNED) ||   \
     !defined(PACKED_VALIDITY) || !defined(MAX_TIME_STEPS) || !defined(COLLECT_STATISTICS) ||             \
     !defined(CUSTOM_READS_INDEX) || !defined(STYLED_TRACKS) || !defined(SKIP_EMPTY_BRICKS) || \
-    !defined(MISSING_VALUES)
+    !defined(MISSING_VALUES) || !defined(UNEVEN_AXIS_WALK)
 #error "a raycasting switch is not defined: build the program through RaycastVariant"
 #endif

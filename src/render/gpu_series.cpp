@@ -256,6 +256,7 @@ GpuSeries::GpuSeries(const Series& series, const SeriesStorage& storage)
     hasUnevenAxes_ = std::any_of(uneven.firstNode.begin(), uneven.firstNode.end(), [](const glm::ivec4& first) {
         return glm::any(glm::greaterThanEqual(first, glm::ivec4(0)));
     });
+    hasCrowdedUnevenAxes_ = uneven.crowdedBuckets;
     unevenAxisTable_.setData(std::as_bytes(std::span(uneven.firstNode)), GL_STATIC_DRAW);
     axisNodeTable_.setData(std::as_bytes(std::span(uneven.positions)), GL_STATIC_DRAW);
 }

@@ -105,6 +105,7 @@ ShaderDefines RaycastVariant::defines() const {
         {"ALL_AFFINE", flag(allAffine)},
         {"STRUCTURED_GRIDS", flag(structuredGrids)},
         {"UNEVEN_AXES", flag(unevenAxes)},
+        {"UNEVEN_AXIS_WALK", flag(unevenAxisWalk)},
         {"BEAM_GRIDS", flag(beamGrids)},
         {"EVEN_BEAMS", flag(evenBeams)},
         {"PACKED_ALIGNED", flag(walk == TimeStepWalk::PackedGroups)},
@@ -153,6 +154,7 @@ std::vector<RaycastVariant> requestableRaycastVariants() {
                     variant.styledTracks = styled ? kAllStyleTracks : 0;
                     variant.allAffine = kind.allAffine;
                     variant.unevenAxes = kind.unevenAxes;
+                    variant.unevenAxisWalk = kind.unevenAxes && !styled;  // both lookups compile
                     variant.structuredGrids = kind.structuredGrids;
                     variant.beamGrids = kind.beamGrids;
                     variant.evenBeams = kind.evenBeams;

@@ -88,6 +88,7 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     variant.missingValues = gpuSeries_->hasMissingValues();
     variant.allAffine = gpuSeries_->allAffine();
     variant.unevenAxes = gpuSeries_->hasUnevenAxes();
+    variant.unevenAxisWalk = gpuSeries_->hasCrowdedUnevenAxes();
     variant.beamGrids = gpuSeries_->hasBeamGrids();
     variant.evenBeams = gpuSeries_->allBeamsEven();
     variant.structuredGrids = gpuSeries_->structuredGrids().layerCount() > 0;

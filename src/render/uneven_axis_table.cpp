@@ -12,11 +12,14 @@ constexpr int kMaxBuckets = 4096;
 
 // After an axis' nodes: 1 / bucket width, the bucket count, then each bucket's lower node (the
 // last node at or below the bucket's start, at most count - 2). Buckets are half the finest gap
-// wide where that takes at most kMaxBuckets, so a lookup lands on its node or the one before.
-void appendBuckets(const std::vector<double>& nodes, std::vector<float>& positions) {
+// wide where that takes at most kMaxBuckets, so a lookup lands on its node or the one before (one
+// step up; one down where float rounding picked the next bucket). Returns false where the limit
+// made them wider: a bucket may then hold several nodes, and the lookup has to walk.
+bool appendBuckets(const std::vector<double>& nodes, std::vector<float>& positions) {
     double finestGap = nodes.back();
     for (std::size_t k = 1; k < nodes.size(); ++k) finestGap = std::min(finestGap, nodes[k] - nodes[k - 1]);
-    const int buckets = std::clamp(int(std::ceil(2.0 * nodes.back() / finestGap)), 1, kMaxBuckets);
+    const double halfGapBuckets = std::ceil(2.0 * nodes.back() / finestGap);
+    const int buckets = int(std::clamp(halfGapBuckets, 1.0, double(kMaxBuckets)));
     const double width = nodes.back() / buckets;
     positions.push_back(float(1.0 / width));
     positions.push_back(float(buckets));
@@ -26,6 +29,7 @@ void appendBuckets(const std::vector<double>& nodes, std::vector<float>& positio
         while (lower < lastCell && nodes[std::size_t(lower) + 1] <= bucket * width) ++lower;
         positions.push_back(float(lower));
     }
+    return halfGapBuckets <= double(kMaxBuckets);
 }
 
 }  // namespace
@@ -40,7 +44,7 @@ UnevenAxisTable buildUnevenAxisTable(const Series& series) {
             first[axis] = int(table.positions.size());
             const std::vector<double>& nodes = grid->axisPositions[std::size_t(axis)];
             for (const double position : nodes) table.positions.push_back(float(position));
-            appendBuckets(nodes, table.positions);
+            if (!appendBuckets(nodes, table.positions)) table.crowdedBuckets = true;
         }
         table.firstNode.push_back(first);
     }
@@ -53,8 +57,13 @@ float lookUpNodeIndex(const UnevenAxisTable& table, int first, int count, float 
     const int buckets = int(node(count + 1));
     const int bucket = std::clamp(int(position * node(count)), 0, buckets - 1);
     int low = int(node(count + 2 + bucket));
-    while (low < count - 2 && node(low + 1) <= position) ++low;
-    while (low > 0 && node(low) > position) --low;
+    if (table.crowdedBuckets) {
+        while (low < count - 2 && node(low + 1) <= position) ++low;
+        while (low > 0 && node(low) > position) --low;
+    } else {
+        if (low < count - 2 && node(low + 1) <= position) ++low;
+        if (low > 0 && node(low) > position) --low;
+    }
     return std::clamp(float(low) + (position - node(low)) / (node(low + 1) - node(low)), 0.0f, float(count - 1));
 }
 

@@ -1,6 +1,7 @@
 // The bucket lookup of uneven axes (render/uneven_axis_table.h, mirrored by the shaders' nodeIndexOf)
 // gives the same fractional node index as the data model's inverse of the axis (data/grid_axes.h),
-// on the synthetic hurricane's levels and on an axis whose gaps span four orders of magnitude.
+// on the synthetic hurricane's levels (one step from the bucket's node, no loop) and on an axis
+// whose gaps span four orders of magnitude (a walk, UNEVEN_AXIS_WALK).
 #include <cmath>
 #include <vector>
 
@@ -48,6 +49,8 @@ TEST(UnevenAxisLookup, HurricaneLevels) {
     const double growth = (0.4 - lowest * 24.0) / (0.5 * 24.0 * 23.0);
     for (int gap = 0; gap < 24; ++gap) nodes.push_back(nodes.back() + lowest + growth * gap);
     expectLookupMatchesGridAxes(nodes);
+    // 96 buckets of half the finest gap: the shaders look up without a loop (UNEVEN_AXIS_WALK 0).
+    EXPECT_FALSE(buildUnevenAxisTable(seriesWithZNodes(nodes)).crowdedBuckets);
 }
 
 TEST(UnevenAxisLookup, GapsOverFourOrdersOfMagnitude) {
@@ -56,6 +59,7 @@ TEST(UnevenAxisLookup, GapsOverFourOrdersOfMagnitude) {
     std::vector<double> nodes{0.0};
     for (int k = 0; k < 60; ++k) nodes.push_back(nodes.back() + std::pow(10.0, 3.7 * k / 59.0));
     expectLookupMatchesGridAxes(nodes);
+    EXPECT_TRUE(buildUnevenAxisTable(seriesWithZNodes(nodes)).crowdedBuckets);
 }
 
 TEST(UnevenAxisLookup, TheTableFollowsEachAxisNodes) {

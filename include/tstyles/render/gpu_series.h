@@ -41,6 +41,8 @@ public:
     bool allAffine() const { return allAffine_; }
     // Whether any time-step has an uneven rectilinear axis (node lists in the uneven-axis table).
     bool hasUnevenAxes() const { return hasUnevenAxes_; }
+    // Whether an uneven axis' lookup buckets may hold several nodes (UnevenAxisTable::crowdedBuckets).
+    bool hasCrowdedUnevenAxes() const { return hasCrowdedUnevenAxes_; }
     // Whether any time-step is a beam (sonar) grid.
     bool hasBeamGrids() const { return hasBeamGrids_; }
     // Whether every beam grid has evenly spaced beams on both axes (a beam index is linear in its
@@ -79,6 +81,7 @@ private:
     bool hasMasks_ = false;
     bool allAffine_ = true;
     bool hasUnevenAxes_ = true;
+    bool hasCrowdedUnevenAxes_ = true;
     bool hasBeamGrids_ = false;
     bool allBeamsEven_ = false;
     bool hasMissingValues_ = false;

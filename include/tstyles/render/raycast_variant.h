@@ -33,6 +33,7 @@ struct RaycastVariant {
     bool allAffine = false;        // every time-step's world -> voxel map is affine
     bool structuredGrids = false;  // the series has structured time-steps (inverse-map lookups)
     bool unevenAxes = false;       // a time-step has an uneven axis (node lookups)
+    bool unevenAxisWalk = false;   // an uneven axis' bucket may hold several nodes (walking lookups)
     bool beamGrids = false;        // a time-step is a beam (sonar) grid
     bool evenBeams = false;        // every beam grid has evenly spaced beams on both axes
     // PackedGroups with missing values: how the packed validities are held.
