@@ -20,8 +20,9 @@ uniform vec4 background;        // straight (not premultiplied) colour and opaci
 uniform vec3 clipLower;
 uniform vec3 clipUpper;
 // The world box of the whole series. Segment ends sit on a lattice of stepLength along each ray,
-// anchored where the ray enters this box, so that a jump over empty space, a clip or a process's
-// block (which starts its rays elsewhere) resumes on the same samples as a plain march.
+// anchored where the ray enters this box: after a jump over empty space the ray is back on the
+// lattice from the next lattice point on, and a process's block (whose part of the ray starts
+// elsewhere) takes the same samples as one whole render.
 uniform vec3 seriesLower;
 uniform vec3 seriesUpper;
 
@@ -34,14 +35,6 @@ float nextLatticePoint(float t, float anchor) {
 
 float latticePointAtOrBefore(float t, float anchor) {
     return anchor + floor((t - anchor) / stepLength) * stepLength;
-}
-
-// Where a jump to `target` (over empty space, or to the next time-step's entry) resumes: at the
-// lattice point at or before it, so that the samples after a jump are the ones a plain march takes
-// (the ones skipped were transparent), but never before `segmentEnd`; a jump to the ray's end ends it.
-float resumeAt(float target, float segmentEnd, float rayEnd, float anchor) {
-    if (target >= rayEnd) return rayEnd;
-    return max(segmentEnd, latticePointAtOrBefore(target, anchor));
 }
 
 // 64-bit counters as (low, high) pairs (GLSL 4.50 has only 32-bit atomics), filled with
@@ -83,8 +76,8 @@ void main() {
     float t = clip.x > rayDepth.x ? max(rayDepth.x, latticePointAtOrBefore(clip.x, anchor)) : rayDepth.x;
     while (t < rayDepth.y && accumulated.a < terminationOpacity) {
         // Each sample stands for the segment [t, segmentEnd], from t to the next lattice point; the
-        // first (at the ray's entry, or at a block's face) and the last (at the exit) are shorter,
-        // so a slab of thickness D gets exactly D worth of opacity.
+        // first (at the ray's entry, or after a jump) and the last (at the exit) are shorter, so a
+        // slab of thickness D gets exactly D worth of opacity.
         float segmentEnd = min(nextLatticePoint(t, anchor), rayDepth.y);
         float middle = 0.5 * (t + segmentEnd);
         if (middle < clip.x) {  // the block in front's segment
@@ -101,13 +94,13 @@ void main() {
         fetches += styled.fetches;
         if (WALK_SKIPS_EMPTY_SPACE && styled.contributing == 0) {
             // Between time-steps: jump to where the next one begins.
-            t = resumeAt(nextEntryAfter(middle, rayDepth.y), segmentEnd, rayDepth.y, anchor);
+            t = nextEntryAfter(middle, rayDepth.y);
             continue;
         }
         if (WALK_SKIPS_EMPTY_SPACE && styled.emptyUntil > 0.0) {
             // Every time-step here is transparent: jump to the end of the empty bricks, but not past
             // the entry of a time-step the ray has not reached yet.
-            t = resumeAt(min(styled.emptyUntil, nextEntryAfter(middle, rayDepth.y)), segmentEnd, rayDepth.y, anchor);
+            t = max(segmentEnd, min(styled.emptyUntil, nextEntryAfter(middle, rayDepth.y)));
             continue;
         }
         float opacity = clamp(styled.colorOpacity.a, 0.0, 1.0);

@@ -25,9 +25,10 @@ namespace {
 
 using namespace tstyles;
 
-// What a block split may change, in 1/255 steps of the stored values. The blocks take exactly the
-// samples of one whole render between them (a segment belongs to the block its middle lies in, on
-// one lattice along the ray), so only two things differ:
+// What a block split may change, in 1/255 steps of the stored values. The blocks take the samples
+// of one whole render between them (a segment belongs to the block its middle lies in, on one
+// lattice along the ray; only a jump over empty bricks that lands elsewhere in a block, whose bricks
+// start at its first kept node, moves the one sample after it), so two things remain:
 // - A ray that reaches the termination opacity (0.99) in a front block still gets up to the last
 //   1 % from the blocks behind it, where one process shows the background: up to 2.5 steps.
 //   With termination 1.0 every pixel of the hurricane at N = 4 is within 1/255 but one (below).
