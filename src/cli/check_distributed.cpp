@@ -2,6 +2,8 @@
 // the round, agree that every process did, then send the results to process 0.
 #include "check_distributed.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <mutex>
 #include <new>
 #include <optional>
@@ -42,30 +44,42 @@ std::string spreadLine(int processes, std::size_t cases) {
 
 CaseRun runCasesDistributed(const MpiSession& mpi, const CheckSuite& suite, const std::vector<Scene>& scenes,
                             const std::vector<bool>& update, const CaseRunOptions& options, std::ostream& out) {
-    std::mutex datasetReading;  // one worker per process: never contended
-    std::optional<CaseWorker> worker;
-    mpi.together("starting OpenGL", [&] { worker.emplace(options.backend, options.shaders, datasetReading); });
     const std::size_t total = suite.cases.size();
     const std::size_t processes = std::size_t(mpi.processCount());
+    std::mutex datasetReading;  // one worker per process: never contended
+    std::optional<CaseWorker> worker;
+    mpi.together("starting OpenGL", [&] {
+        // A process beyond the last case has nothing to render and makes no context.
+        if (std::size_t(mpi.rank()) < total) worker.emplace(options.backend, options.shaders, datasetReading);
+    });
     if (mpi.isFirst()) out << spreadLine(mpi.processCount(), total) << "\n" << std::flush;
 
-    CaseRun run{{}, worker->context().description()};
+    CaseRun run{{}, worker ? worker->context().description() : std::string()};
     for (std::size_t round = 0; round * processes < total; ++round) {
-        const std::size_t mine = round * processes + std::size_t(mpi.rank());
+        const std::size_t first = round * processes, end = std::min(total, first + processes);
+        const std::size_t mine = first + std::size_t(mpi.rank());
         std::optional<CaseResult> result;
+        std::vector<std::uint8_t> message;  // the result as sent to process 0
         mpi.together("rendering the cases", [&] {
-            if (mine < total) result = checkNamingTheCase(*worker, suite.cases[mine], scenes[mine], update[mine]);
+            if (mine >= total) return;
+            result = checkNamingTheCase(*worker, suite.cases[mine], scenes[mine], update[mine]);
+            if (!mpi.isFirst()) message = encodeCaseResult(*result);
         });
-        if (!mpi.isFirst()) {
-            if (result) mpi.send(0, encodeCaseResult(*result));
-            continue;
-        }
-        // Process 0 takes the round's results in suite order: its own, then one from each process.
-        for (std::size_t index = round * processes; index < std::min(total, (round + 1) * processes); ++index) {
-            const int from = int(index % processes);
-            run.results.push_back(from == 0 ? std::move(*result) : decodeCaseResult(mpi.receive(from)));
-            printCaseFinished(out, index + 1, total, run.results.back());
-        }
+        // What can fail here (reading a message) runs inside `together` too, after every message
+        // of the round has been received: a process never waits on one that has given up.
+        mpi.together("gathering the results", [&] {
+            if (!mpi.isFirst()) {
+                if (mine < total) mpi.send(0, message);
+                return;
+            }
+            std::vector<std::vector<std::uint8_t>> received(end - first);
+            for (std::size_t index = first + 1; index < end; ++index)
+                received[index - first] = mpi.receive(int(index - first));
+            for (std::size_t index = first; index < end; ++index) {
+                run.results.push_back(index == first ? std::move(*result) : decodeCaseResult(received[index - first]));
+                printCaseFinished(out, index + 1, total, run.results.back());
+            }
+        });
     }
     return run;
 }
