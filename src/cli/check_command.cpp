@@ -112,6 +112,7 @@ int runCheck(const CheckOptions& options) {
 int runDistributedCheck(const CheckOptions& options) {
     const MpiSession mpi;
     std::optional<PreparedCheck> check;
+    std::optional<CaseRunOptions> runOptions;
     mpi.together("reading the suite", [&] {
         if (!mpi.isFirst()) return;
         if (options.jobsGiven)
@@ -119,12 +120,14 @@ int runDistributedCheck(const CheckOptions& options) {
                             "goes without --distributed: each process renders one case at a time; for more cases "
                             "at once, start more processes (mpirun -np N)");
         check = prepareCheck(options, true);
+        runOptions = caseRunOptions(options, 1);
     });
     mpi.together("reading the suite", [&] {
-        if (!mpi.isFirst()) check = prepareCheck(options, false);
+        if (mpi.isFirst()) return;
+        check = prepareCheck(options, false);
+        runOptions = caseRunOptions(options, 1);
     });
-    const CaseRun run =
-        runCasesDistributed(mpi, check->suite, check->scenes, check->update, caseRunOptions(options, 1), std::cout);
+    const CaseRun run = runCasesDistributed(mpi, check->suite, check->scenes, check->update, *runOptions, std::cout);
     if (!mpi.isFirst()) return kExitSuccess;
     return finishCheck(options, check->suite, run);
 }

@@ -36,8 +36,9 @@ CaseResult checkNamingTheCase(CaseWorker& worker, const CheckCase& entry, const 
 
 std::string spreadLine(int processes, std::size_t cases) {
     const std::string count = std::to_string(processes);
-    return std::to_string(cases) + " cases over " + count + " MPI process" + (processes == 1 ? "" : "es") +
-           ", one at a time each (--distributed: case k on process (k-1) mod " + count + ")";
+    const std::string spread = processes == 1 ? " MPI process, one at a time" : " MPI processes, one at a time each";
+    return std::to_string(cases) + " cases over " + count + spread + " (--distributed: case k on process (k-1) mod " +
+           count + ")";
 }
 
 }  // namespace
