@@ -62,9 +62,7 @@ public:
 private:
     void finish(std::size_t index, CaseResult result) {
         const std::lock_guard lock(mutex_);
-        out_ << "[" << ++finished_ << "/" << results_.size() << "] " << result.name << ": "
-             << toString(result.outcome) << std::fixed << std::setprecision(2) << " (" << result.seconds << " s)\n"
-             << std::defaultfloat << std::setprecision(6) << std::flush;
+        printCaseFinished(out_, ++finished_, results_.size(), result);
         results_[index] = std::move(result);
     }
 
@@ -112,6 +110,12 @@ Parallelism chooseParallelism(std::optional<int> requested, const std::string& g
     const int jobs = std::min({4, int(std::max(hardwareThreads, 1u)), cases});
     return {jobs, casesAtOnce(jobs) + " (auto: at most 4, one per hardware thread" +
                       (jobs == cases && cases < 4 ? ", one per case)" : ")")};
+}
+
+void printCaseFinished(std::ostream& out, std::size_t finished, std::size_t total, const CaseResult& result) {
+    out << "[" << finished << "/" << total << "] " << result.name << ": " << toString(result.outcome) << std::fixed
+        << std::setprecision(2) << " (" << result.seconds << " s)\n"
+        << std::defaultfloat << std::setprecision(6) << std::flush;
 }
 
 CaseRun runCases(const CheckSuite& suite, const std::vector<Scene>& scenes, const std::vector<bool>& update,

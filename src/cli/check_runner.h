@@ -42,6 +42,9 @@ struct CaseRun {
     std::string context;              // the first context's description, for the summary line
 };
 
+// The progress line of a case that has just finished: "[3/17] name: pass (0.35 s)".
+void printCaseFinished(std::ostream& out, std::size_t finished, std::size_t total, const CaseResult& result);
+
 // Renders and compares every case (`update[i]`: case i's golden is to be rewritten; the render is
 // kept in its result). Prints the parallelism line, then a progress line per case as it finishes.
 // The first thread's context decides the backend of the others. When a case throws, no new case

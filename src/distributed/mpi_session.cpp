@@ -3,6 +3,8 @@
 
 #include <mpi.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <new>
 #include <vector>
 
@@ -15,6 +17,11 @@ namespace {
 // input, 3 no OpenGL. Where processes fail differently, the larger code is the one reported: a
 // machine without OpenGL explains the others' failures, bad input explains internal errors.
 enum FailureKind : int { kNoFailure = 0, kInternal = 1, kBadInput = 2, kNoOpenGl = 3 };
+
+// Point-to-point messages: a length, then the bytes in pieces that MPI's int counts can hold (an
+// image of 16384x16384 float RGBA is 4 GiB).
+constexpr int kBytesTag = 7301;
+constexpr std::uint64_t kPieceBytes = std::uint64_t(1) << 30;
 
 }  // namespace
 
@@ -87,6 +94,26 @@ void MpiSession::together(const std::string& step, const std::function<void()>& 
 double MpiSession::maximum(double value) const {
     MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
     return value;
+}
+
+void MpiSession::send(int process, const std::vector<std::uint8_t>& bytes) const {
+    std::uint64_t length = bytes.size();
+    MPI_Send(&length, 1, MPI_UINT64_T, process, kBytesTag, MPI_COMM_WORLD);
+    for (std::uint64_t offset = 0; offset < length; offset += kPieceBytes) {
+        const int piece = int(std::min(kPieceBytes, length - offset));
+        MPI_Send(bytes.data() + offset, piece, MPI_BYTE, process, kBytesTag, MPI_COMM_WORLD);
+    }
+}
+
+std::vector<std::uint8_t> MpiSession::receive(int process) const {
+    std::uint64_t length = 0;
+    MPI_Recv(&length, 1, MPI_UINT64_T, process, kBytesTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    std::vector<std::uint8_t> bytes(length);
+    for (std::uint64_t offset = 0; offset < length; offset += kPieceBytes) {
+        const int piece = int(std::min(kPieceBytes, length - offset));
+        MPI_Recv(bytes.data() + offset, piece, MPI_BYTE, process, kBytesTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    }
+    return bytes;
 }
 
 }  // namespace tstyles

@@ -88,16 +88,6 @@ case_deterministic_renders() {
     expect_exit 0
 }
 
-# The table in suite order (after the progress lines and a blank line; the summary line, which
-# names the report folder, left out) without its timings.
-table_of() {
-    sed -n '/^$/,$p' "$1" | sed '$d' | sed -E 's/  \([0-9.]+ s\)$//'
-}
-
-# junit.xml without its time="..." attributes: timings differ from run to run, the rest must not.
-junit_without_times() {
-    sed -E 's/ time="[^"]*"//g' "$1"
-}
 
 # --jobs 1 and --jobs 3 on one backend: the same exit code, table, report and images, whatever
 # order the cases finished in.

@@ -148,3 +148,14 @@ run_case() {
     "case_$CASE"
     echo "PASS [$CASE]"
 }
+
+# The table of a `tstyles check` run's stdout, in suite order (after the progress lines and a blank
+# line; the summary line, which names the report folder, left out) without its timings.
+table_of() {
+    sed -n '/^$/,$p' "$1" | sed '$d' | sed -E 's/  \([0-9.]+ s\)$//'
+}
+
+# junit.xml without its time="..." attributes: timings differ from run to run, the rest must not.
+junit_without_times() {
+    sed -E 's/ time="[^"]*"//g' "$1"
+}

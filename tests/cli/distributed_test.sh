@@ -2,6 +2,8 @@
 # End-to-end: `mpirun -np N tstyles render ... --distributed` (sort-last over MPI processes,
 # docs/scaling.md): the image matches one process, and a failure on one process or on all ends
 # every process with one message and exit 2 (never a hang: ctest's timeout would show one).
+# `check --distributed` (a suite's cases spread over the processes): the same table, report,
+# goldens and exit code as one process, and bad suites or cases end every process.
 # Usage: distributed_test.sh TSTYLES SOURCE_DIR SCRATCH_ROOT CASE (see cli_test_lib.sh); MPIEXEC is
 # mpirun, with OMPI_ALLOW_RUN_AS_ROOT set by ctest where the tests run as root.
 source "$(dirname "${BASH_SOURCE[0]}")/cli_test_lib.sh"
@@ -70,6 +72,107 @@ case_animate_frames_match_one() {
             --pixel-threshold 3 --max-failing-share 0.02 --max-mean 0.03 --min-ssim 0.999
         expect_exit 0
     done
+}
+
+# --- check --distributed ------------------------------------------------------------------------
+SCENES="$SOURCE_DIR/data/scenes"
+
+# Five 64x64 cases, so that 3 processes take two rounds and process 0 gets cases 1 and 4.
+# `focus6` is held to the golden of `focus3` (another picture): it fails once that golden exists.
+write_check_suite() {
+    mkdir -p "$SCRATCH/golden"
+    cat >"$SCRATCH/suite.json" <<JSON
+{
+  "thresholds": {"max_difference": 2},
+  "cases": [
+    {"name": "focus3", "scene": "$SCENES/figure1-focus-step3.json", "golden": "golden/focus3.png", "width": 64, "height": 64},
+    {"name": "focus6", "scene": "$SCENES/figure1-focus-step6.json", "golden": "golden/focus3.png", "width": 64, "height": 64},
+    {"name": "mip", "scene": "$SCENES/figure4-temporal-mip.json", "golden": "golden/mip.png", "width": 64, "height": 64},
+    {"name": "average", "scene": "$SCENES/figure4-temporal-average.json", "golden": "golden/average.png", "width": 64, "height": 64},
+    {"name": "styled", "scene": "$SCENES/figure1-styled-focus-step3.json", "golden": "golden/styled.png", "width": 64, "height": 64}
+  ]
+}
+JSON
+}
+
+# Passing, failing and missing-golden cases: 3 processes print the table of one process, write the
+# same report (images compared as files: they travelled as floats) and exit 1 as it does.
+case_check_matches_one_process() {
+    write_check_suite
+    run_tstyles -- check "$SCRATCH/suite.json" --update focus3,mip,styled --report "$SCRATCH/report"
+    expect_exit 1  # `average` has no golden
+    run_tstyles -- check "$SCRATCH/suite.json" --report "$SCRATCH/report-one"
+    expect_exit 1
+    cp "$OUT_FILE" "$SCRATCH/stdout-one.txt"
+    run_mpi 3 check "$SCRATCH/suite.json" --report "$SCRATCH/report-three" --distributed
+    expect_exit 1
+    cp "$OUT_FILE" "$SCRATCH/stdout-three.txt"
+    head -n 1 "$OUT_FILE" | grep -qx "5 cases over 3 MPI processes, one at a time each (--distributed: case k on process (k-1) mod 3)" ||
+        fail "the first line does not say how the cases are spread"
+    [ "$(grep -c '^\[[1-5]/5\] [a-z0-9]*: ' "$OUT_FILE")" = 5 ] || fail "not one progress line per case"
+    expect_stdout_contains "2 of 5 cases fail"
+    diff <(table_of "$SCRATCH/stdout-one.txt") <(table_of "$SCRATCH/stdout-three.txt") >&2 ||
+        fail "the tables of one process and of three differ"
+    grep -q "^\[2/5\] focus6  *FAIL" <(table_of "$SCRATCH/stdout-three.txt") || fail "focus6 did not fail"
+    grep -q "^\[4/5\] average  *NO GOLDEN" <(table_of "$SCRATCH/stdout-three.txt") || fail "average has a golden"
+    diff <(junit_without_times "$SCRATCH/report-one/junit.xml") <(junit_without_times "$SCRATCH/report-three/junit.xml") >&2 ||
+        fail "junit.xml of one process and of three differ"
+    diff -r "$SCRATCH/report-one" "$SCRATCH/report-three" -x junit.xml >&2 ||
+        fail "the reports (index.html, images) of one process and of three differ"
+    expect_image "$SCRATCH/report-three/focus6.actual.png" 64 64
+}
+
+# --update of one case (the third, rendered by process 2) writes the golden one process writes,
+# and no other.
+case_check_update_distributed() {
+    write_check_suite
+    run_tstyles -- check "$SCRATCH/suite.json" --update mip --report "$SCRATCH/report"
+    expect_exit 1  # the other cases have no goldens
+    mv "$SCRATCH/golden/mip.png" "$SCRATCH/mip-one.png"
+    run_mpi 3 check "$SCRATCH/suite.json" --update mip --report "$SCRATCH/report" --distributed
+    expect_exit 1
+    expect_stdout_contains "new golden $SCRATCH/golden/mip.png"
+    expect_image "$SCRATCH/golden/mip.png" 64 64
+    [ "$(find "$SCRATCH/golden" -type f | wc -l)" -eq 1 ] || fail "goldens other than mip.png were written"
+    run_tstyles -- compare "$SCRATCH/mip-one.png" "$SCRATCH/golden/mip.png" --max-difference 0
+    expect_exit 0
+}
+
+# A bad suite fails on process 0 before anything renders: exit 2, one message, no report.
+case_check_bad_suite_distributed() {
+    printf '{"cases": [{"scene": "%s", "tolerance": 3}]}\n' "$SCENES/figure1-focus-step3.json" >"$SCRATCH/suite.json"
+    run_mpi 3 check "$SCRATCH/suite.json" --report "$SCRATCH/report" --distributed
+    expect_exit 2
+    expect_stderr_contains "tstyles: process 0 of 3: $SCRATCH/suite.json: cases[0].tolerance: unknown key"
+    [ "$(grep -c '^tstyles: ' "$ERR_FILE")" -eq 1 ] || fail "not one message"
+    [ "$(grep -c 'process [12] of 3' "$ERR_FILE")" -eq 0 ] || fail "processes 1 and 2 are reported"
+    [ ! -e "$SCRATCH/report" ] || fail "a report was written for a bad suite"
+}
+
+# A case that cannot be rendered (its dataset does not exist) on process 1 ends every process:
+# exit 2, the case named, no report and no golden.
+case_check_bad_case_distributed() {
+    write_check_suite
+    sed 's|"dataset": "[^"]*"|"dataset": "nowhere/series.json"|' "$SCENES/figure1-focus-step6.json" >"$SCRATCH/bad.json"
+    sed -i "s|\"scene\": \"$SCENES/figure1-focus-step6.json\"|\"scene\": \"$SCRATCH/bad.json\"|" "$SCRATCH/suite.json"
+    grep -q bad.json "$SCRATCH/suite.json" || fail "the test did not write its bad suite"
+    run_mpi 3 check "$SCRATCH/suite.json" --update --all --report "$SCRATCH/report" --distributed
+    expect_exit 2
+    expect_stderr_contains "tstyles: process 1 of 3: case \"focus6\" ($SCRATCH/bad.json): "
+    expect_stderr_contains "nowhere/series.json"
+    [ "$(grep -c '^tstyles: ' "$ERR_FILE")" -eq 1 ] || fail "not one message"
+    [ ! -e "$SCRATCH/report" ] || fail "a report was written after a bad case"
+    [ -z "$(find "$SCRATCH/golden" -type f)" ] || fail "goldens were written after a bad case"
+}
+
+# --jobs is refused with --distributed (each process renders one case at a time), once.
+case_check_jobs_refused_distributed() {
+    write_check_suite
+    run_mpi 2 check "$SCRATCH/suite.json" --jobs 2 --report "$SCRATCH/report" --distributed
+    expect_exit 2
+    expect_stderr_contains "tstyles: process 0 of 2: --jobs: goes without --distributed"
+    [ "$(grep -c '^tstyles: ' "$ERR_FILE")" -eq 1 ] || fail "not one message"
+    [ ! -e "$SCRATCH/report" ] || fail "a report was written"
 }
 
 run_case

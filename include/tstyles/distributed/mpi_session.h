@@ -3,9 +3,11 @@
 // ends every process with one message instead of leaving the others waiting.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace tstyles {
 
@@ -42,6 +44,11 @@ public:
 
     // Collective maximum of a value over the processes, on every process.
     double maximum(double value) const;
+
+    // Point-to-point: bytes of any length to one process, which receives them with `receive` from
+    // this one. Messages between two processes arrive in the order they were sent. Blocking.
+    void send(int process, const std::vector<std::uint8_t>& bytes) const;
+    std::vector<std::uint8_t> receive(int process) const;
 
 private:
     int rank_ = 0;
