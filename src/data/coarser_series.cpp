@@ -44,27 +44,12 @@ glm::ivec3 coarserDims(glm::ivec3 dims, double scale) {
 
 Series coarserSeries(const Series& series, double scale) {
     if (!canCoarsen(series)) throw std::logic_error("coarserSeries: only rectilinear time-steps can be resampled");
-    Series result;
-    result.name = series.name;
-    result.manifestPath = series.manifestPath;
-    result.axes = series.axes;
-    result.time = series.time;
-    result.valueUnit = series.valueUnit;
-    result.valueRange = series.valueRange;
-    result.precision = series.precision;
-    result.sourceFormat = series.sourceFormat;
+    Series result = withoutTimeSteps(series);
     for (const TimeStep& step : series.steps) {
         const RectilinearGrid& grid = step.rectilinear();
         const glm::ivec3 dims = coarserDims(grid.dims, scale);
-        TimeStep coarse;
-        coarse.time = step.time;
-        coarse.placement = step.placement;
-        coarse.sourceType = step.sourceType;
-        coarse.rawRange = step.rawRange;
-        coarse.valuesFile = step.valuesFile;
-        coarse.maskFile = step.maskFile;
+        TimeStep coarse = withoutValues(step);
         if (dims == grid.dims) {
-            coarse.grid = grid;
             coarse.density = step.density;
             coarse.mask = step.mask;
         } else {

@@ -163,6 +163,31 @@ Bounds Series::worldBounds(std::size_t step) const {
     return bounds;
 }
 
+Series withoutTimeSteps(const Series& series) {
+    Series result;
+    result.name = series.name;
+    result.manifestPath = series.manifestPath;
+    result.valueRange = series.valueRange;
+    result.valueUnit = series.valueUnit;
+    result.precision = series.precision;
+    result.sourceFormat = series.sourceFormat;
+    result.axes = series.axes;
+    result.time = series.time;
+    return result;
+}
+
+TimeStep withoutValues(const TimeStep& step) {
+    TimeStep result;
+    result.time = step.time;
+    result.grid = step.grid;
+    result.placement = step.placement;
+    result.sourceType = step.sourceType;
+    result.rawRange = step.rawRange;
+    result.valuesFile = step.valuesFile;
+    result.maskFile = step.maskFile;
+    return result;
+}
+
 Bounds Series::worldBounds() const {
     if (steps.empty()) throw std::logic_error("Series::worldBounds: the series has no time-steps");
     Bounds all = worldBounds(0);

@@ -11,26 +11,8 @@ namespace {
 
 // The series' times, grids and metadata without its values: what annotations read.
 Series outlineOf(const Series& series) {
-    Series outline;
-    outline.name = series.name;
-    outline.manifestPath = series.manifestPath;
-    outline.valueRange = series.valueRange;
-    outline.valueUnit = series.valueUnit;
-    outline.precision = series.precision;
-    outline.sourceFormat = series.sourceFormat;
-    outline.axes = series.axes;
-    outline.time = series.time;
-    for (const TimeStep& step : series.steps) {
-        TimeStep kept;
-        kept.time = step.time;
-        kept.grid = step.grid;
-        kept.placement = step.placement;
-        kept.sourceType = step.sourceType;
-        kept.rawRange = step.rawRange;
-        kept.valuesFile = step.valuesFile;
-        kept.maskFile = step.maskFile;
-        outline.steps.push_back(std::move(kept));
-    }
+    Series outline = withoutTimeSteps(series);
+    for (const TimeStep& step : series.steps) outline.steps.push_back(withoutValues(step));
     return outline;
 }
 

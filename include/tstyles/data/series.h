@@ -195,4 +195,9 @@ struct Series {
     double finestSpacing() const;
 };
 
+// For series made from another (coarser, an outline for annotations): everything of `series` but
+// its time-steps; and everything of a time-step but its values and mask.
+Series withoutTimeSteps(const Series& series);
+TimeStep withoutValues(const TimeStep& step);
+
 }  // namespace tstyles
