@@ -78,15 +78,6 @@ struct FrameTimes {
     std::vector<double> cpuMs;
 };
 
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t middle = values.size() / 2;
-    return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
-}
-
-constexpr TemporalCompositor kCompositors[] = {TemporalCompositor::MaxIntensityProjection,
-                                              TemporalCompositor::Average, TemporalCompositor::MaxDensityChange};
-
 BenchResult runCase(Renderer& renderer, const Series& series, const BenchCase& benchCase,
                     const BenchOptions& options) {
     Scene scene = loadScene(bundledDataDirectory() / "scenes" / (benchCase.scene + ".json"));
@@ -181,7 +172,7 @@ nlohmann::json toJson(const std::vector<BenchResult>& results, const std::string
 void runSeries(Renderer& renderer, const Series& series, const BenchDataset& dataset, const BenchOptions& options,
                std::vector<BenchResult>& results) {
     renderer.setSeries(series);
-    for (auto compositor : kCompositors)
+    for (auto compositor : kBenchCompositors)
         for (int size : options.sizes) {
             results.push_back(runCase(renderer, series,
                                       {dataset.folder, benchSceneFor(dataset, compositor, options.styled),

@@ -1,7 +1,6 @@
 // The dataset table of the benchmark matrix (bench_datasets.h).
 #include "bench_datasets.h"
 
-
 #include <algorithm>
 
 #include "tstyles/scene/temporal_compositors.h"
@@ -39,6 +38,12 @@ std::string benchSceneFor(const BenchDataset& dataset, TemporalCompositor compos
         case CompositorReads::GradientTstf: return prefix + "max-density-change";
     }
     return prefix + "temporal-mip";
+}
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t middle = values.size() / 2;
+    return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
 }
 
 }  // namespace tstyles::cli

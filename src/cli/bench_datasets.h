@@ -1,4 +1,4 @@
-// The datasets of `tstyles bench`: one line per dataset. A dataset whose folder is not under data/
+// The datasets of `tstyles bench` (one line per dataset), the compositors it measures, and its median. A dataset whose folder is not under data/
 // (it arrives with another feature, or was not generated) is skipped with a printed note.
 #pragma once
 
@@ -26,6 +26,13 @@ const std::vector<BenchDataset>& benchDatasets();
 
 // The entry for a folder; folders not in the table get the super-ellipsoid's Figure 4 scenes.
 BenchDataset benchDatasetFor(const std::string& folder);
+
+// The compositors every dataset is measured with.
+inline constexpr TemporalCompositor kBenchCompositors[] = {
+    TemporalCompositor::MaxIntensityProjection, TemporalCompositor::Average, TemporalCompositor::MaxDensityChange};
+
+// The median of frame times (the mean of the middle two for an even count); `values` not empty.
+double median(std::vector<double> values);
 
 // The bundled scene for a dataset and compositor, flat or with lit-sphere styles.
 std::string benchSceneFor(const BenchDataset& dataset, TemporalCompositor compositor, bool styled);

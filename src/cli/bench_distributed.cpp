@@ -28,15 +28,6 @@ struct DistributedResult {
     double blockBytes = 0.0;   // the largest block's textures
 };
 
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t middle = values.size() / 2;
-    return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
-}
-
-constexpr TemporalCompositor kCompositors[] = {TemporalCompositor::MaxIntensityProjection,
-                                              TemporalCompositor::Average, TemporalCompositor::MaxDensityChange};
-
 // Every compositor at every size on one dataset, with one DistributedRendering.
 void runDataset(const MpiSession& mpi, Renderer& renderer, const std::string& folder,
                 const DistributedBenchOptions& options, std::vector<DistributedResult>& results) {
@@ -45,7 +36,7 @@ void runDataset(const MpiSession& mpi, Renderer& renderer, const std::string& fo
     std::optional<Series> series;
     mpi.together("reading " + folder, [&] {
         series = loadSeries(bundledDataDirectory() / folder / "series.json");
-        for (TemporalCompositor compositor : kCompositors) {
+        for (TemporalCompositor compositor : kBenchCompositors) {
             Scene scene = loadScene(bundledDataDirectory() / "scenes" / (benchSceneFor(dataset, compositor, false) + ".json"));
             scene.compositor = compositor;
             scenes.push_back(std::move(scene));
