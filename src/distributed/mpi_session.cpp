@@ -76,7 +76,7 @@ void MpiSession::together(const std::string& step, const std::function<void()>& 
     MPI_Gatherv(message.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(), MPI_CHAR, 0,
                 MPI_COMM_WORLD);
     const int exitCode = gravest;
-    if (rank_ != 0) throw FailedOnAnotherProcess(exitCode);
+    if (rank_ != 0) throw FailedOnAnotherProcess();
 
     std::string report;
     int failing = 0;

@@ -16,12 +16,7 @@ namespace tstyles {
 // which stops a job at the first non-zero exit, cannot stop process 0 before it has said why).
 class FailedOnAnotherProcess : public std::runtime_error {
 public:
-    explicit FailedOnAnotherProcess(int exitCode)
-        : std::runtime_error("failed on another process"), exitCode_(exitCode) {}
-    int exitCode() const { return exitCode_; }
-
-private:
-    int exitCode_;
+    FailedOnAnotherProcess() : std::runtime_error("failed on another process") {}
 };
 
 class MpiSession {
