@@ -25,10 +25,14 @@ std::string dimsText(const glm::ivec3& dims) {
                         std::to_string(source.stepIndex) + " " + problem);
 }
 
-// Reads the whole file after checking that it exists and has exactly `expectedBytes`, so a wrong
-// grid or type is reported as a size mismatch rather than as garbage values.
-std::vector<std::uint8_t> readExactly(const RawFileSource& source, const std::string& kind,
-                                      std::size_t expectedBytes, const std::string& layout) {
+// Values decoded per read: the file's bytes never sit in memory beside all of its values, so a
+// time-step takes its float values' memory and no more (a 4 GiB float32 file took 8 GiB).
+constexpr std::size_t kValuesPerRead = std::size_t(1) << 20;
+
+// Opens the file after checking that it exists and has exactly `expectedBytes`, so a wrong grid or
+// type is reported as a size mismatch rather than as garbage values.
+std::ifstream openExactly(const RawFileSource& source, const std::string& kind, std::size_t expectedBytes,
+                          const std::string& layout) {
     std::error_code error;
     if (!std::filesystem::exists(source.file, error)) failFile(source, kind, "not found");
     if (!std::filesystem::is_regular_file(source.file, error))
@@ -41,16 +45,27 @@ std::vector<std::uint8_t> readExactly(const RawFileSource& source, const std::st
                  std::string(verdict) + ": expected " + std::to_string(expectedBytes) + " bytes (" + layout +
                      "), found " + std::to_string(actualBytes) + " bytes");
     }
+    std::ifstream in(source.file, std::ios::binary);
+    if (!in) failFile(source, kind, "cannot be opened for reading");
+    return in;
+}
+
+void readInto(std::ifstream& in, const RawFileSource& source, const std::string& kind, std::uint8_t* bytes,
+              std::size_t count) {
+    in.read(reinterpret_cast<char*>(bytes), static_cast<std::streamsize>(count));
+    if (!in || static_cast<std::size_t>(in.gcount()) != count) failFile(source, kind, "cannot be read");
+}
+
+// The whole file, `expectedBytes` long (openExactly's checks).
+std::vector<std::uint8_t> readExactly(const RawFileSource& source, const std::string& kind,
+                                      std::size_t expectedBytes, const std::string& layout) {
+    std::ifstream in = openExactly(source, kind, expectedBytes, layout);
     // The manifest's series is checked against the cap before its files are read; this is the
     // backstop for files read before that (a structured grid's coordinates).
     requireMemory(source.manifest, source.field, double(expectedBytes), defaultMemoryCap(),
                   kind + " '" + source.file.string() + "' (" + layout + ") would");
     std::vector<std::uint8_t> bytes(expectedBytes);
-    std::ifstream in(source.file, std::ios::binary);
-    in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-    if (!in || static_cast<std::size_t>(in.gcount()) != bytes.size()) {
-        failFile(source, kind, "cannot be read");
-    }
+    readInto(in, source, kind, bytes.data(), bytes.size());
     return bytes;
 }
 
@@ -67,8 +82,8 @@ RawValues readRawValues(const RawFileSource& source, const glm::ivec3& dims, Val
                         std::optional<double> missingMarker) {
     const std::size_t stride = bytesPerValue(type);
     const std::size_t count = std::size_t(dims.x) * std::size_t(dims.y) * std::size_t(dims.z);
-    const std::vector<std::uint8_t> bytes =
-        readExactly(source, "value file", count * stride, dimsText(dims) + " " + toString(type) + " values");
+    std::ifstream in =
+        openExactly(source, "value file", count * stride, dimsText(dims) + " " + toString(type) + " values");
     // Compared in the file's own precision: a float32 file stores the marker 1e35 as float(1e35).
     const bool nanIsMissing = missingMarker && std::isnan(*missingMarker);
     const float marker = missingMarker && !nanIsMissing ? float(*missingMarker) : 0.0f;
@@ -76,23 +91,29 @@ RawValues readRawValues(const RawFileSource& source, const glm::ivec3& dims, Val
 
     RawValues raw;
     raw.values.resize(count);
+    std::vector<std::uint8_t> bytes(std::min(count, kValuesPerRead) * stride);
     float lowest = std::numeric_limits<float>::infinity();
     float highest = -std::numeric_limits<float>::infinity();
-    for (std::size_t index = 0; index < count; ++index) {
-        const float value = float(decodeValue(bytes.data() + index * stride, type, ByteOrder::Little));
-        if ((markerIsSet && value == marker) || (nanIsMissing && std::isnan(value))) {
-            raw.values[index] = missingDensity();
-            continue;
+    for (std::size_t first = 0; first < count; first += kValuesPerRead) {
+        const std::size_t values = std::min(kValuesPerRead, count - first);
+        readInto(in, source, "value file", bytes.data(), values * stride);
+        for (std::size_t offset = 0; offset < values; ++offset) {
+            const std::size_t index = first + offset;
+            const float value = float(decodeValue(bytes.data() + offset * stride, type, ByteOrder::Little));
+            if ((markerIsSet && value == marker) || (nanIsMissing && std::isnan(value))) {
+                raw.values[index] = missingDensity();
+                continue;
+            }
+            if (!std::isfinite(value)) {
+                failFile(source, "value file",
+                         std::string("holds a non-finite value (") + (std::isnan(value) ? "NaN" : "Inf") +
+                             ") at voxel (x, y, z) = " + voxelText(index, dims) +
+                             (std::isnan(value) ? " (declare \"missing_value\": \"NaN\" if NaN marks missing data)" : ""));
+            }
+            raw.values[index] = value;
+            lowest = std::min(lowest, value);
+            highest = std::max(highest, value);
         }
-        if (!std::isfinite(value)) {
-            failFile(source, "value file",
-                     std::string("holds a non-finite value (") + (std::isnan(value) ? "NaN" : "Inf") +
-                         ") at voxel (x, y, z) = " + voxelText(index, dims) +
-                         (std::isnan(value) ? " (declare \"missing_value\": \"NaN\" if NaN marks missing data)" : ""));
-        }
-        raw.values[index] = value;
-        lowest = std::min(lowest, value);
-        highest = std::max(highest, value);
     }
     const double none = std::numeric_limits<double>::quiet_NaN();
     raw.range = lowest <= highest ? std::array<double, 2>{double(lowest), double(highest)}

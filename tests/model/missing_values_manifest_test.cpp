@@ -1,6 +1,7 @@
 // Missing values and uneven axes in manifests: what loads, what round-trips through writeSeries,
 // and every bad spelling reported with the file, the field and the problem.
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -91,6 +92,38 @@ TEST(MissingValues, Float32MarkerComparesInFloatPrecision) {
     const auto series = tstyles::loadSeries(folder / "series.json");
     EXPECT_TRUE(isMissing(series.steps[0].density[0]));
     EXPECT_EQ(series.steps[0].rawRange[1], 2.0);
+}
+
+// Value files are decoded a million values per read (raw_values.cpp): a file of several reads
+// keeps every value where it belongs, finds the range and the missing values in every read, and
+// reports a bad value by its voxel, not by its place in the read.
+TEST(MissingValues, AFileOfSeveralReadsDecodesEveryValue) {
+    const glm::ivec3 dims{128, 128, 100};  // 1 638 400 values: two reads, the second partial
+    const std::size_t count = std::size_t(dims.x) * std::size_t(dims.y) * std::size_t(dims.z);
+    json manifest = withMarker(-1);
+    manifest.erase("value_range");
+    manifest["time_steps"] = {manifest["time_steps"][0]};
+    manifest["time_steps"][0].erase("mask");
+    manifest["time_steps"][0]["grid"]["dims"] = {dims.x, dims.y, dims.z};
+    manifest["time_steps"][0]["values"]["type"] = "float32";
+    std::vector<float> values(count);
+    for (std::size_t index = 0; index < count; ++index) values[index] = float(index % 1000);
+    values[(std::size_t(1) << 20) + 5] = -1.0f;  // missing, in the second read
+    values[count - 1] = 5000.0f;                 // the maximum, the last value of the last read
+    const auto folder = writeBaseDataset("several_reads", manifest);
+    tstyles_test::writeBytes(folder / "t00.raw", tstyles_test::float32Bytes(values));
+    const auto series = tstyles::loadSeries(folder / "series.json");
+    const auto& step = series.steps[0];
+    EXPECT_EQ(step.rawRange[0], 0.0);
+    EXPECT_EQ(step.rawRange[1], 5000.0);
+    EXPECT_TRUE(isMissing(step.density[(std::size_t(1) << 20) + 5]));
+    const std::size_t inSecondRead = (std::size_t(1) << 20) + 123;
+    EXPECT_FLOAT_EQ(step.density[inSecondRead], float(inSecondRead % 1000) / 5000.0f);
+    EXPECT_EQ(step.density[count - 1], 1.0f);
+
+    values[count - 2] = std::numeric_limits<float>::infinity();  // voxel (126, 127, 99)
+    tstyles_test::writeBytes(folder / "t00.raw", tstyles_test::float32Bytes(values));
+    expectMentions(loadError(folder / "series.json"), {"time_steps[0].values.file", "Inf", "(126, 127, 99)"});
 }
 
 TEST(MissingValues, BadMarkersAndAllMissingAreErrors) {
