@@ -14,6 +14,7 @@
 #include "bench_distributed.h"
 #include "bench_scaling.h"
 #include "commands.h"
+#include "gpu_memory_option.h"
 #include "tstyles/core/atomic_file.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/data/manifest.h"
@@ -41,6 +42,7 @@ struct BenchOptions {
     std::vector<int> scalingSteps;
     bool styled = false;
     bool distributed = false;  // sort-last over the MPI processes (bench_distributed.h)
+    GpuMemoryOption gpuMemory;
     GlOptions gl;
 };
 
@@ -63,6 +65,8 @@ struct BenchResult {
     RaycastStatistics statistics;
     std::size_t seriesTextureBytes = 0;
     std::size_t frameTextureBytes = 0;
+    // What --max-gpu-memory (or the driver's memory) changed in the series' storage; empty: as read.
+    std::vector<std::string> gpuStorageChanges;
 };
 
 // User and system time of every thread of this process so far.
@@ -163,6 +167,7 @@ nlohmann::json toJson(const std::vector<BenchResult>& results, const std::string
                          {"samples", r.statistics.samples}, {"fetches", r.statistics.fetches},
                          {"series_texture_bytes", r.seriesTextureBytes},
                          {"frame_texture_bytes", r.frameTextureBytes},
+                         {"gpu_storage_changes", r.gpuStorageChanges},
                          {"naive_median_ms", r.naiveMedianMs ? nlohmann::json(*r.naiveMedianMs) : nlohmann::json()},
                          {"speed_up", r.naiveMedianMs ? nlohmann::json(*r.naiveMedianMs / r.medianMs) : nlohmann::json()}});
     return {{"device", device}, {"cases", cases}};
@@ -171,13 +176,14 @@ nlohmann::json toJson(const std::vector<BenchResult>& results, const std::string
 // Every compositor at every size on one series.
 void runSeries(Renderer& renderer, const Series& series, const BenchDataset& dataset, const BenchOptions& options,
                std::vector<BenchResult>& results) {
-    renderer.setSeries(series);
+    const GpuResidency residency = uploadWithinGpuMemory(renderer, series, options.gpuMemory, DatasetOptions{});
     for (auto compositor : kBenchCompositors)
         for (int size : options.sizes) {
             results.push_back(runCase(renderer, series,
                                       {dataset.folder, benchSceneFor(dataset, compositor, options.styled),
                                        compositor, size},
                                       options));
+            results.back().gpuStorageChanges = residencyChanges(series, residency);
             std::cerr << "." << std::flush;
         }
 }
@@ -206,7 +212,8 @@ int runBench(const BenchOptions& options) {
     if (options.distributed) {
         if (options.baseline || options.styled || !options.scalingSteps.empty())
             throwInputError("", "--distributed", "measures the flat matrix; it takes neither --baseline, --styled nor --scaling");
-        return runDistributedBench({options.datasets, options.sizes, options.frames, options.warmup, options.json, options.gl});
+        return runDistributedBench(
+            {options.datasets, options.sizes, options.frames, options.warmup, options.json, options.gpuMemory, options.gl});
     }
     const auto context = createHeadlessContext(parseBackend(options.gl.backend), false);
     Renderer renderer(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
@@ -249,8 +256,12 @@ Command addBenchCommand(CLI::App& app) {
     command->add_flag("--distributed", options->distributed,
                       "Under mpirun: render sort-last over the MPI processes and report each frame's rendering (the "
                       "slowest block) and compositing, for strong scaling (docs/scaling.md)");
+    addGpuMemoryOption(*command, options->gpuMemory);
     addGlOptions(*command, options->gl);
-    return {command, [options] { return runBench(*options); }};
+    return {command, [options] {
+        parseGpuMemoryOption(options->gpuMemory);  // a bad size fails before anything is read
+        return runBench(*options);
+    }};
 }
 
 }  // namespace tstyles::cli

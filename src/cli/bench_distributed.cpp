@@ -45,7 +45,9 @@ void runDataset(const MpiSession& mpi, Renderer& renderer, const std::string& fo
     SceneOnSeries fitted = fitSceneToSeries(scenes.front(), std::move(*series));
     for (Scene& scene : scenes) scene = fitAutomaticParts(scene, fitted.series);
     DistributedRendering rendering(mpi, renderer, std::move(fitted),
-                                   [&](const Series& block, const WholeSeries& whole) { renderer.setSeries(block, whole); });
+                                   [&](const Series& block, const WholeSeries& whole) {
+                                       uploadWithinGpuMemory(renderer, block, options.gpuMemory, DatasetOptions{}, whole);
+                                   });
     const double blockBytes = mpi.maximum(double(renderer.seriesTextureBytes()));
     for (Scene scene : scenes)
         for (int size : options.sizes) {

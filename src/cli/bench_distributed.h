@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "gpu_memory_option.h"
 
 namespace tstyles::cli {
 
@@ -18,6 +19,7 @@ struct DistributedBenchOptions {
     int frames = 7;
     int warmup = 2;
     std::optional<std::filesystem::path> json;
+    GpuMemoryOption gpuMemory;  // each process's block within it
     GlOptions gl;
 };
 

@@ -3,21 +3,12 @@
 
 #include <iostream>
 
-#include "tstyles/core/input_limits.h"
 #include "tstyles/render/gpu_memory_limits.h"
 
 namespace tstyles::cli {
 namespace {
 
 constexpr const char* kOption = "--max-gpu-memory";
-
-// What the series' own host copy takes: one float per voxel, one byte per mask voxel.
-std::uint64_t hostSeriesBytes(const Series& series) {
-    std::uint64_t bytes = 0;
-    for (const TimeStep& step : series.steps)
-        bytes += step.density.size() * sizeof(float) + (step.mask ? step.mask->size() : 0);
-    return bytes;
-}
 
 }  // namespace
 
@@ -33,14 +24,14 @@ std::optional<std::uint64_t> parseGpuMemoryOption(const GpuMemoryOption& option)
     return parseMemorySize(*option.maxGpuMemory, kOption);
 }
 
-void uploadWithinGpuMemory(Renderer& renderer, const Series& series, const GpuMemoryOption& option,
-                           const DatasetOptions& dataset, const std::optional<WholeSeries>& whole) {
-    const std::uint64_t cap = memoryCap(dataset.maxMemory ? std::optional(parseMemorySize(*dataset.maxMemory, "--max-memory"))
-                                                          : std::nullopt);
-    const std::uint64_t host = hostSeriesBytes(series);
-    const GpuMemoryLimits limits = queryGpuMemoryLimits(parseGpuMemoryOption(option), cap > host ? cap - host : 0);
+GpuResidency uploadWithinGpuMemory(Renderer& renderer, const Series& series, const GpuMemoryOption& option,
+                                   const DatasetOptions& dataset, const std::optional<WholeSeries>& whole) {
+    const std::optional<std::uint64_t> maxHostMemory =
+        dataset.maxMemory ? std::optional(parseMemorySize(*dataset.maxMemory, "--max-memory")) : std::nullopt;
+    const GpuMemoryLimits limits = gpuMemoryLimitsFor(series, parseGpuMemoryOption(option), maxHostMemory);
     const GpuResidency residency = renderer.setSeries(series, limits, whole);
     if (option.maxGpuMemory || residency.changed()) std::cerr << "tstyles: " << residencyText(series, limits, residency) << "\n";
+    return residency;
 }
 
 void describeGpuMemory(std::ostream& out, const Series& series, const GpuMemoryOption& option) {

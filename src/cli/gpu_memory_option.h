@@ -1,4 +1,5 @@
-// --max-gpu-memory SIZE: the GPU memory budget of render, animate and info (docs/large-series.md).
+// --max-gpu-memory SIZE: the GPU memory budget of render, animate, view, bench and info
+// (docs/large-series.md).
 #pragma once
 
 #include <cstdint>
@@ -24,8 +25,9 @@ std::optional<std::uint64_t> parseGpuMemoryOption(const GpuMemoryOption& option)
 // Uploads the series within the budget (--max-gpu-memory, else the driver's or the host's, see
 // queryGpuMemoryLimits) and says on stderr what was chosen where a budget was given or anything
 // had to change. `whole`: where `series` is one process's block (Renderer::setSeries).
-void uploadWithinGpuMemory(Renderer& renderer, const Series& series, const GpuMemoryOption& option,
-                           const DatasetOptions& dataset, const std::optional<WholeSeries>& whole = std::nullopt);
+// Returns what was chosen.
+GpuResidency uploadWithinGpuMemory(Renderer& renderer, const Series& series, const GpuMemoryOption& option,
+                                   const DatasetOptions& dataset, const std::optional<WholeSeries>& whole = std::nullopt);
 
 // `info`: what render would choose within --max-gpu-memory, assuming GL_MAX_3D_TEXTURE_SIZE 2048;
 // nothing without the option.

@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "commands.h"
+#include "gpu_memory_option.h"
 #include "tstyles/core/errors.h"
 #include "viewer/viewer.h"
 
@@ -11,6 +12,7 @@ namespace {
 struct ViewOptions {
     std::vector<std::filesystem::path> inputs;
     DatasetOptions dataset;
+    GpuMemoryOption gpuMemory;
     std::optional<std::filesystem::path> script;
     std::string size = "1280x800";
     bool noVsync = false;
@@ -34,6 +36,7 @@ glm::ivec2 parseWindowSize(const std::string& text) {
 int runView(const ViewOptions& options) {
     viewer::ViewerOptions viewerOptions;
     viewerOptions.inputs = options.inputs;
+    viewerOptions.maxGpuMemoryBytes = parseGpuMemoryOption(options.gpuMemory);
     viewerOptions.readOptions = toReadOptions(options.dataset);
     viewerOptions.dataDirectory = bundledDataDirectory();
     viewerOptions.script = options.script;
@@ -62,6 +65,7 @@ Command addViewCommand(CLI::App& app) {
                         "Load shaders from this folder instead of the embedded copy (also: TSTYLES_SHADER_DIR)")
         ->check(CLI::ExistingDirectory);
     addDatasetOptions(*command, options->dataset);
+    addGpuMemoryOption(*command, options->gpuMemory);
     return {command, [options] { return runView(*options); }};
 }
 

@@ -113,20 +113,10 @@ GpuResidency fitToGpuMemory(const Series& series, const GpuMemoryLimits& limits)
     }
 }
 
-std::string residencyText(const Series& series, const GpuMemoryLimits& limits, const GpuResidency& residency) {
-    const bool packable = suitsPackedAtlasAt16Bits(series);
-    std::ostringstream text;
-    text << series.manifestPath.string() << ": GPU memory budget " << byteCountText(double(limits.budgetBytes)) << " ("
-         << limits.budgetSource << "): the series needs "
-         << (residency.fullBytes ? byteCountText(double(*residency.fullBytes)) : std::string("more than one 3D texture"))
-         << " at full size (" << storageText(residency.requested, packable) << ")";
-    if (!residency.changed()) {
-        text << ", which fits";
-        return text.str();
-    }
-    text << "; uploading " << byteCountText(double(residency.chosenBytes)) << ": ";
+std::vector<std::string> residencyChanges(const Series& series, const GpuResidency& residency) {
     std::vector<std::string> changes;
-    if (packable && residency.requested.precision == DensityPrecision::Bits16 && !residency.storage.packedAtlas)
+    if (suitsPackedAtlasAt16Bits(series) && residency.requested.precision == DensityPrecision::Bits16 &&
+        !residency.storage.packedAtlas)
         changes.push_back("no packed atlas (same image, slower)");
     if (residency.storage.precision != residency.requested.precision)
         changes.push_back(std::to_string(precisionBits(residency.storage.precision)) +
@@ -138,6 +128,21 @@ std::string residencyText(const Series& series, const GpuMemoryLimits& limits, c
                << " -> " << dimsText(residency.chosenDims) << ")";
         changes.push_back(coarse.str());
     }
+    return changes;
+}
+
+std::string residencyText(const Series& series, const GpuMemoryLimits& limits, const GpuResidency& residency) {
+    std::ostringstream text;
+    text << series.manifestPath.string() << ": GPU memory budget " << byteCountText(double(limits.budgetBytes)) << " ("
+         << limits.budgetSource << "): the series needs "
+         << (residency.fullBytes ? byteCountText(double(*residency.fullBytes)) : std::string("more than one 3D texture"))
+         << " at full size (" << storageText(residency.requested, suitsPackedAtlasAt16Bits(series)) << ")";
+    if (!residency.changed()) {
+        text << ", which fits";
+        return text.str();
+    }
+    text << "; uploading " << byteCountText(double(residency.chosenBytes)) << ": ";
+    const std::vector<std::string> changes = residencyChanges(series, residency);
     for (std::size_t index = 0; index < changes.size(); ++index) text << (index ? ", " : "") << changes[index];
     return text.str();
 }

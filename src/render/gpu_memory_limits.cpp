@@ -4,6 +4,7 @@
 #include <string>
 
 #include "render_size_limits.h"
+#include "tstyles/core/input_limits.h"
 #include "tstyles/gl/objects.h"
 
 namespace tstyles {
@@ -15,6 +16,14 @@ constexpr GLenum kGpuMemoryAvailableNvx = 0x9049;
 bool isLlvmpipe() {
     const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     return renderer != nullptr && std::string(renderer).find("llvmpipe") != std::string::npos;
+}
+
+// What the series' own host copy takes: one float per voxel, one byte per mask voxel.
+std::uint64_t hostSeriesBytes(const Series& series) {
+    std::uint64_t bytes = 0;
+    for (const TimeStep& step : series.steps)
+        bytes += step.density.size() * sizeof(float) + (step.mask ? step.mask->size() : 0);
+    return bytes;
 }
 
 }  // namespace
@@ -39,6 +48,13 @@ GpuMemoryLimits queryGpuMemoryLimits(std::optional<std::uint64_t> given, std::ui
         limits.budgetSource = "host memory: the --max-memory cap less the series' own copy";
     }
     return limits;
+}
+
+GpuMemoryLimits gpuMemoryLimitsFor(const Series& series, std::optional<std::uint64_t> given,
+                                   std::optional<std::uint64_t> maxHostMemory) {
+    const std::uint64_t cap = memoryCap(maxHostMemory);
+    const std::uint64_t host = hostSeriesBytes(series);
+    return queryGpuMemoryLimits(given, cap > host ? cap - host : 0);
 }
 
 }  // namespace tstyles

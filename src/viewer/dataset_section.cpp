@@ -94,6 +94,10 @@ void drawDatasetSection(SidePanelState& state, UiAnchors&) {
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("GPU textures: series atlas %s, per-frame buffers %s",
                           bytesText(state.memory.seriesBytes).c_str(), bytesText(state.memory.frameBytes).c_str());
+    // A series stored smaller or coarser than read says so where its memory is shown (--max-gpu-memory).
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.3f, 1.0f));
+    for (const std::string& change : state.memory.storageChanges) ImGui::TextWrapped("GPU: %s", change.c_str());
+    ImGui::PopStyleColor();
     if (ImGui::TreeNode("Time-steps")) {
         drawStepTable(series, state.timeLabels);
         ImGui::TreePop();

@@ -1,6 +1,7 @@
 // The interactive viewer's entry point, as `tstyles view` calls it.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <vector>
@@ -17,6 +18,9 @@ struct ViewerOptions {
     std::vector<std::filesystem::path> inputs;
     // How the first dataset is read (--var, --steps, ...); files opened later use the defaults.
     ReadOptions readOptions;
+    // --max-gpu-memory: what every series the viewer shows may take on the GPU (default: the GPU's
+    // free memory, or the host's under --max-memory; docs/large-series.md).
+    std::optional<std::uint64_t> maxGpuMemoryBytes;
     std::filesystem::path dataDirectory;  // where the bundled default is looked for
     std::optional<std::filesystem::path> script;
     glm::ivec2 windowSize{1280, 800};

@@ -11,6 +11,7 @@
 #include "tstyles/gl/gl_api.h"
 #include "tstyles/gl/headless_context.h"
 #include "tstyles/image/image_io.h"
+#include "tstyles/render/gpu_memory_limits.h"
 #include "tstyles/scene/scene_file.h"
 #include "viewer_menu.h"
 #include "window_capture.h"
@@ -50,7 +51,16 @@ ViewerApp::ViewerApp(const ViewerOptions& options)
       history_(document_.scene),
       lastRenderable_(document_.scene),
       savedScene_(document_.scene) {
-    renderer_.setSeries(*document_.series);
+    uploadSeries(*document_.series);
+}
+
+void ViewerApp::uploadSeries(const Series& series) {
+    const GpuMemoryLimits limits =
+        gpuMemoryLimitsFor(series, options_.maxGpuMemoryBytes, options_.readOptions.maxMemoryBytes);
+    const GpuResidency residency = renderer_.setSeries(series, limits);
+    gpuStorageChanges_ = residencyChanges(series, residency);
+    if (options_.maxGpuMemoryBytes || residency.changed())
+        std::cerr << "tstyles: " << residencyText(series, limits, residency) << std::endl;
 }
 
 int ViewerApp::run() {
@@ -107,7 +117,7 @@ void ViewerApp::buildUi(double seconds) {
                         time_,
                         pick_,
                         std::exchange(pickIsNew_, false),
-                        {renderer_.seriesTextureBytes(), renderer_.frameTextureBytes()},
+                        {renderer_.seriesTextureBytes(), renderer_.frameTextureBytes(), gpuStorageChanges_},
                         0.5 * document_.series->finestSpacing(),
                         animation_};
     drawSidePanel(layout_.sidePanel, side, commands_, anchors_);

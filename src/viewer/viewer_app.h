@@ -5,6 +5,8 @@
 #include <chrono>
 #include <filesystem>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "animation_state.h"
 #include "annotation_overlay.h"
@@ -77,6 +79,9 @@ private:
     // Opens a scene or dataset; a failure shows the error dialog and keeps the current scene.
     void openPath(const std::filesystem::path& path);
     void adopt(ViewerDocument next);
+    // Uploads the series within the GPU memory limits (ViewerOptions::maxGpuMemoryBytes) and keeps
+    // what had to change for the dataset section; says so on stderr as `render` does.
+    void uploadSeries(const Series& series);
     // Writes the scene as shown (image size = the volume area). Throws InputError.
     void saveTo(const std::filesystem::path& path);
     std::filesystem::path dialogFolder() const;
@@ -125,6 +130,8 @@ private:
     // The scene as opened or last saved: anything else is an unsaved change.
     Scene savedScene_;
     std::string title_;
+    // How the shown series is stored on the GPU where the memory limits changed it (empty: as read).
+    std::vector<std::string> gpuStorageChanges_;
 };
 
 }  // namespace tstyles::viewer

@@ -144,10 +144,10 @@ void ViewerApp::openPath(const std::filesystem::path& path) {
 void ViewerApp::adopt(ViewerDocument next) {
     if (next.series != document_.series) {
         try {
-            renderer_.setSeries(*next.series);
+            uploadSeries(*next.series);
         } catch (...) {
-            // The upload failed half-way (too big for the GPU, say): put the current series back.
-            renderer_.setSeries(*document_.series);
+            // The upload failed half-way (nothing fits the GPU memory, say): put the current series back.
+            uploadSeries(*document_.series);
             throw;
         }
     }

@@ -50,4 +50,20 @@ case_scaling_json() {
     [ "$cases" -eq 6 ] || fail "expected 6 cases of 12 time-steps in the JSON, found $cases"
 }
 
+# --max-gpu-memory: the series is stored within it as `render` stores it, said on stderr, and
+# the JSON says what changed for each case; a bad size is refused before anything is read.
+case_max_gpu_memory() {
+    run_tstyles -- bench --sizes 24 --frames 1 --warmup 0 --datasets superellipsoid --max-gpu-memory 2M \
+        --json "$SCRATCH/budget.json"
+    expect_exit 0
+    expect_rows superellipsoid 10 24
+    expect_stderr_contains "GPU memory budget 2.0 MiB (--max-gpu-memory)"
+    local changed
+    changed=$(grep -c '"resolution 1/' "$SCRATCH/budget.json")
+    [ "$changed" -eq 3 ] || fail "expected 3 cases stored coarser in the JSON, found $changed"
+    run_tstyles -- bench --sizes 24 --frames 1 --warmup 0 --datasets superellipsoid --max-gpu-memory lots
+    expect_exit 2
+    expect_stderr_contains "--max-gpu-memory"
+}
+
 run_case

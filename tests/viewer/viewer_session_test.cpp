@@ -83,28 +83,32 @@ protected:
     }
 
     // Runs the viewer on `input` with a script from tests/viewer/scripts in a 640x480 window.
-    CommandResult view(const fs::path& input, const std::string& script) const {
+    // `options`: more command-line options, as typed.
+    CommandResult view(const fs::path& input, const std::string& script, const std::string& options = "") const {
         const fs::path scriptFile = fs::path(TSTYLES_SOURCE_DIR) / "tests/viewer/scripts" / script;
         const std::string command = "OUT=" + quoted(out_) + " timeout 100 " + quoted(*xvfbRun_) +
                                     " -a -s '-screen 0 1024x768x24' " + quoted(TSTYLES_EXECUTABLE) + " view " +
-                                    quoted(input) + " --size 640x480 --no-vsync --script " + quoted(scriptFile);
+                                    quoted(input) + " --size 640x480 --no-vsync --script " + quoted(scriptFile) +
+                                    (options.empty() ? "" : " " + options);
         CommandResult result = runCommand(command);
         fs::path log = out_ / "viewer.log";
         std::ofstream(log) << command << "\n" << result.output;
         return result;
     }
 
-    Image renderHeadless(const fs::path& scene, const fs::path& image) const {
+    Image renderHeadless(const fs::path& scene, const fs::path& image, const std::string& options = "") const {
         const CommandResult result = runCommand(quoted(TSTYLES_EXECUTABLE) + " render " + quoted(scene) + " -o " +
-                                                quoted(image));
+                                                quoted(image) + (options.empty() ? "" : " " + options));
         EXPECT_EQ(result.exitCode, 0) << result.output;
         return tstyles::readImage(image);
     }
 
     // The window's volume area against `tstyles render` of the scene it saved.
-    void expectWindowMatchesHeadless(const fs::path& scene, const fs::path& windowImage) const {
+    // `options`: the render options that match the viewer's (--max-gpu-memory).
+    void expectWindowMatchesHeadless(const fs::path& scene, const fs::path& windowImage,
+                                     const std::string& options = "") const {
         const Image window = tstyles::readImage(windowImage);
-        const Image headless = renderHeadless(scene, out_ / "headless.png");
+        const Image headless = renderHeadless(scene, out_ / "headless.png", options);
         ASSERT_EQ(window.width, headless.width);
         ASSERT_EQ(window.height, headless.height);
         const auto difference = tstyles::compareImages(window, headless, 1);
@@ -189,6 +193,22 @@ TEST_F(ViewerSession, AStyledSceneRefinesToTheOnePassRender) {
     ASSERT_EQ(run.exitCode, 0) << run.output;
     EXPECT_EQ(tstyles::loadScene(out_ / "shown.json").indexTstf, scene.indexTstf);
     expectWindowMatchesHeadless(out_ / "shown.json", out_ / "window.png");
+}
+
+// --max-gpu-memory in the viewer stores the series as `render` does under the same budget: the
+// Figure 1 series (5.0 MiB at 16 bits; 2.5 MiB at 8) in 2 MiB is uploaded coarser, the viewer says
+// so on stderr, and the window shows what `render --max-gpu-memory 2M` shows, not what the
+// full-resolution render shows.
+TEST_F(ViewerSession, AGpuMemoryBudgetShowsWhatRenderShowsUnderIt) {
+    const CommandResult run = view(bundledScene("figure1-focus-step3.json"), "refine_and_save.txt", "--max-gpu-memory 2M");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("GPU memory budget 2.0 MiB (--max-gpu-memory)"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("resolution 1/"), std::string::npos) << run.output;
+
+    expectWindowMatchesHeadless(out_ / "shown.json", out_ / "window.png", "--max-gpu-memory 2M");
+    const Image full = renderHeadless(out_ / "shown.json", out_ / "full-resolution.png");
+    const auto difference = tstyles::compareImages(tstyles::readImage(out_ / "window.png"), full, 1);
+    EXPECT_GT(difference.maxDelta, kMaxLevels) << "the budget changed nothing: " << tstyles::describe(difference);
 }
 
 TEST_F(ViewerSession, UndoRestoresThePreviousSceneExactly) {

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "tstyles/data/series.h"
 #include "tstyles/render/series_texture_plan.h"
@@ -40,6 +41,10 @@ struct GpuResidency {
 // InputError naming the series and --max-gpu-memory when nothing fits (a grid that cannot be
 // resampled, or not even 2 x 2 x 2 samples per time-step).
 GpuResidency fitToGpuMemory(const Series& series, const GpuMemoryLimits& limits);
+
+// What was given up, one phrase each ("no packed atlas (same image, slower)", "8-bit densities
+// (every value is stored exactly)", "resolution 1/1.6 per axis (...)"); empty when nothing changed.
+std::vector<std::string> residencyChanges(const Series& series, const GpuResidency& residency);
 
 // One line: the file, the budget, the bytes at full size and what was chosen.
 std::string residencyText(const Series& series, const GpuMemoryLimits& limits, const GpuResidency& residency);

@@ -18,4 +18,10 @@ inline constexpr std::uint64_t kLlvmpipeLargestTexture = std::uint64_t(2) << 30;
 // GL_MAX_3D_TEXTURE_SIZE.
 GpuMemoryLimits queryGpuMemoryLimits(std::optional<std::uint64_t> given, std::uint64_t hostBytesLeft);
 
+// queryGpuMemoryLimits for `series` as every front end (render, animate, view, bench) uploads it:
+// `given` is --max-gpu-memory, `maxHostMemory` --max-memory (default: memoryCap's), of which the
+// series' own host copy (a float per voxel, a byte per mask voxel) is already taken.
+GpuMemoryLimits gpuMemoryLimitsFor(const Series& series, std::optional<std::uint64_t> given,
+                                   std::optional<std::uint64_t> maxHostMemory);
+
 }  // namespace tstyles
