@@ -297,18 +297,31 @@ std::array<SpatialAxis, 3> readAxes(const ManifestField& field) {
     return axes;
 }
 
-// Before any value file is read: the whole series under the memory limit.
+// Before any value file is read: the whole series under the memory limit; where a hook cuts each
+// time-step as it is read, the voxels it keeps and the largest time-step (held whole while cut).
 void requireSeriesMemory(const std::filesystem::path& manifest, const std::vector<StepEntry>& entries,
                          const ManifestLimits& limits) {
-    double bytes = 0.0;
+    const bool masks = std::any_of(entries.begin(), entries.end(), [](const StepEntry& e) { return !e.maskField.empty(); });
+    const double bytesPerVoxel = double(sizeof(float) + limits.gpuBytesPerVoxel + (masks ? 1 : 0));
+    double whole = 0.0;
+    double largest = 0.0;
     for (const StepEntry& entry : entries) {
         const glm::ivec3 dims = entry.step.dims();
         const double voxels = double(dims.x) * double(dims.y) * double(dims.z);
-        bytes += voxels * double(sizeof(float) + limits.gpuBytesPerVoxel + (entry.maskField.empty() ? 0 : 1));
+        whole += voxels * double(sizeof(float) + limits.gpuBytesPerVoxel + (entry.maskField.empty() ? 0 : 1));
+        largest = std::max(largest, voxels * double(sizeof(float) + (entry.maskField.empty() ? 0 : 1)));
     }
-    requireMemory(manifest, "time_steps", bytes, memoryCap(limits.maxMemoryBytes),
-                  "the series' " + std::to_string(entries.size()) + " time-step(s) (4 bytes a voxel in memory, " +
-                      std::to_string(limits.gpuBytesPerVoxel) + " on the GPU, 1 per mask)");
+    const std::string perVoxel = " (4 bytes a voxel in memory, " + std::to_string(limits.gpuBytesPerVoxel) +
+                                 " on the GPU, 1 per mask)";
+    if (!limits.afterStepRead) {
+        requireMemory(manifest, "time_steps", whole, memoryCap(limits.maxMemoryBytes),
+                      "the series' " + std::to_string(entries.size()) + " time-step(s)" + perVoxel);
+        return;
+    }
+    requireMemory(manifest, "time_steps", double(limits.keptVoxels) * bytesPerVoxel + largest,
+                  memoryCap(limits.maxMemoryBytes),
+                  "the " + std::to_string(limits.keptVoxels) + " voxels kept of its time-steps" + perVoxel +
+                      " and its largest time-step while it is read");
 }
 
 std::string defaultName(const std::filesystem::path& manifest) {
@@ -319,7 +332,17 @@ std::string defaultName(const std::filesystem::path& manifest) {
 
 }  // namespace
 
-Series loadSeries(const std::filesystem::path& manifestPath, const ManifestLimits& limits) {
+namespace {
+
+// The manifest read and checked, no value or mask file opened yet.
+struct ParsedManifest {
+    Series series;  // everything but the time-steps and the value range
+    std::vector<StepEntry> entries;
+    std::optional<std::array<double, 2>> explicitRange;
+    std::optional<double> missingMarker;
+};
+
+ParsedManifest parseSeriesManifest(const std::filesystem::path& manifestPath) {
     const std::filesystem::path manifest = manifestFileOf(manifestPath);
     const nlohmann::json document = parseManifest(manifest);
     const ManifestField root(manifest, document, "");
@@ -337,27 +360,48 @@ Series loadSeries(const std::filesystem::path& manifestPath, const ManifestLimit
     root.allowOnlyKeys(
         {"format", "version", "name", "value_range", "missing_value", "time_units", "calendar", "axes", "time_steps"});
 
-    Series series;
+    ParsedManifest parsed;
+    Series& series = parsed.series;
     series.manifestPath = manifest;
     const auto name = root.optionalMember("name");
     series.name = name ? name->string() : defaultName(manifest);
-    const auto explicitRange = readValueRange(root.optionalMember("value_range"));
-    const std::optional<double> missingMarker = readMissingValue(root.optionalMember("missing_value"));
-    std::vector<StepEntry> entries = readStepEntries(root.member("time_steps"));
+    parsed.explicitRange = readValueRange(root.optionalMember("value_range"));
+    parsed.missingMarker = readMissingValue(root.optionalMember("missing_value"));
+    parsed.entries = readStepEntries(root.member("time_steps"));
     series.time = readTimeAxis(manifest, root);
     if (const auto axes = root.optionalMember("axes")) series.axes = readAxes(*axes);
+    return parsed;
+}
+
+}  // namespace
+
+Series loadSeries(const std::filesystem::path& manifestPath, const ManifestLimits& limits) {
+    ParsedManifest parsed = parseSeriesManifest(manifestPath);
+    Series series = std::move(parsed.series);
+    std::vector<StepEntry>& entries = parsed.entries;
+    const std::filesystem::path& manifest = series.manifestPath;
 
     requireSeriesMemory(manifest, entries, limits);
     for (std::size_t index = 0; index < entries.size(); ++index) {
-        readStepFiles(manifest, index, entries[index], missingMarker);
+        readStepFiles(manifest, index, entries[index], parsed.missingMarker);
+        if (limits.afterStepRead) limits.afterStepRead(index, entries[index].step);
     }
-    series.valueRange = explicitRange ? *explicitRange : valueRangeFromData(manifest, entries);
+    series.valueRange = parsed.explicitRange ? *parsed.explicitRange : valueRangeFromData(manifest, entries);
 
     series.steps.reserve(entries.size());
     for (StepEntry& entry : entries) {
         normalizeToDensity(entry.step.density, series.valueRange);
         series.steps.push_back(std::move(entry.step));
     }
+    return series;
+}
+
+Series loadSeriesOutline(const std::filesystem::path& manifestPath) {
+    ParsedManifest parsed = parseSeriesManifest(manifestPath);
+    Series series = std::move(parsed.series);
+    const double unknown = std::numeric_limits<double>::quiet_NaN();
+    series.valueRange = parsed.explicitRange.value_or(std::array<double, 2>{unknown, unknown});
+    for (StepEntry& entry : parsed.entries) series.steps.push_back(std::move(entry.step));
     return series;
 }
 

@@ -65,45 +65,67 @@ std::vector<Value> cropValues(const std::vector<Value>& values, glm::ivec3 dims,
     return cropped;
 }
 
-// Cuts `step` (time-step `index` of `series`) in place.
-void cropTimeStep(TimeStep& step, std::size_t index, const Series& series, const Bounds& box, int ghost) {
+// The nodes of `step` that the box needs: the first, how many, and the cut grid.
+struct KeptNodes {
+    glm::ivec3 first{0};
+    glm::ivec3 count{0};
+    glm::dvec3 offset{0.0};  // grid-local position of the first kept node
+    RectilinearGrid grid;
+};
+
+KeptNodes keptNodes(const TimeStep& step, std::size_t index, const std::filesystem::path& source, const Bounds& box,
+                    int ghost) {
     const RectilinearGrid* grid = std::get_if<RectilinearGrid>(&step.grid);
     if (!grid)
-        throwInputError(series.manifestPath, "time-step " + std::to_string(index),
+        throwInputError(source, "time-step " + std::to_string(index),
                         "is a " + gridTypeName(step.grid) +
                             " grid; distributed rendering splits rectilinear grids only (render it without "
                             "--distributed)");
     const Bounds local = localBounds(step.placement, box);
-    glm::ivec3 first{0};
-    glm::ivec3 count{0};
-    RectilinearGrid cropped;
-    cropped.spacing = grid->spacing;
-    glm::dvec3 offset{0.0};  // grid-local position of the first kept node
+    KeptNodes kept;
+    kept.grid.spacing = grid->spacing;
     for (int axis = 0; axis < 3; ++axis) {
         const glm::ivec2 range = nodeRange(*grid, axis, local.lower[axis], local.upper[axis], ghost);
-        first[axis] = range.x;
-        count[axis] = range.y - range.x + 1;
+        kept.first[axis] = range.x;
+        kept.count[axis] = range.y - range.x + 1;
         if (grid->isUneven(axis)) {
             const std::vector<double>& nodes = grid->axisPositions[std::size_t(axis)];
-            offset[axis] = nodes[std::size_t(range.x)];
-            std::vector<double>& kept = cropped.axisPositions[std::size_t(axis)];
-            for (int node = range.x; node <= range.y; ++node) kept.push_back(nodes[std::size_t(node)] - offset[axis]);
+            kept.offset[axis] = nodes[std::size_t(range.x)];
+            std::vector<double>& positions = kept.grid.axisPositions[std::size_t(axis)];
+            for (int node = range.x; node <= range.y; ++node)
+                positions.push_back(nodes[std::size_t(node)] - kept.offset[axis]);
         } else {
-            offset[axis] = double(range.x) * grid->spacing[axis];
+            kept.offset[axis] = double(range.x) * grid->spacing[axis];
         }
     }
-    cropped.dims = count;
-    step.density = cropValues(step.density, grid->dims, first, count);
-    if (step.mask) step.mask = cropValues(*step.mask, grid->dims, first, count);
-    step.placement.origin = glm::dvec3(step.placement.gridToWorld() * glm::dvec4(offset, 1.0));
-    step.grid = std::move(cropped);
+    kept.grid.dims = kept.count;
+    return kept;
 }
 
 }  // namespace
 
+std::size_t croppedVoxelCount(const TimeStep& step, std::size_t index, const std::filesystem::path& source,
+                              const Bounds& box, int ghostNodes) {
+    return keptNodes(step, index, source, box, ghostNodes).grid.voxelCount();
+}
+
+void cropTimeStepToBox(TimeStep& step, std::size_t index, const std::filesystem::path& source, const Bounds& box,
+                       int ghost) {
+    KeptNodes kept = keptNodes(step, index, source, box, ghost);
+    const RectilinearGrid& grid = step.rectilinear();
+    const glm::ivec3 first = kept.first;
+    const glm::ivec3 count = kept.count;
+    const glm::dvec3 offset = kept.offset;
+    RectilinearGrid cropped = std::move(kept.grid);
+    step.density = cropValues(step.density, grid.dims, first, count);
+    if (step.mask) step.mask = cropValues(*step.mask, grid.dims, first, count);
+    step.placement.origin = glm::dvec3(step.placement.gridToWorld() * glm::dvec4(offset, 1.0));
+    step.grid = std::move(cropped);
+}
+
 Series cropSeriesToBox(Series series, const Bounds& box, int ghostNodes) {
     for (std::size_t index = 0; index < series.steps.size(); ++index)
-        cropTimeStep(series.steps[index], index, series, box, ghostNodes);
+        cropTimeStepToBox(series.steps[index], index, series.manifestPath, box, ghostNodes);
     return series;
 }
 

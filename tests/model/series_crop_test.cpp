@@ -105,6 +105,30 @@ TEST(SeriesCrop, ATimeStepOutsideTheBoxKeepsItsNearestCell) {
     expectValuesFollowTheirNodes(block.steps[1]);
 }
 
+// What a reader checks against the memory cap before it reads (croppedVoxelCount, from the grid
+// and placement alone) is what cutting the read time-step keeps.
+TEST(SeriesCrop, TheVoxelCountKnownBeforeReadingIsWhatTheCutKeeps) {
+    Placement turned;
+    turned.origin = {0.3, -0.2, 0.1};
+    turned.rotation = fromAxisAngle({{1.0, 1.0, 0.0}, 35.0});
+    const std::vector<TimeStep> steps = {
+        linearStep({11, 6, 5}, glm::dvec3(0.1), Placement{}),
+        linearStep({9, 7, 6}, glm::dvec3(0.2, 0.1, 0.3), turned,
+                   {std::vector<double>{}, std::vector<double>{}, std::vector<double>{0.0, 0.1, 0.3, 0.7, 1.2, 2.0}})};
+    for (const Bounds& box : {Bounds{{0.25, -1.0, -1.0}, {0.45, 1.0, 1.0}}, Bounds{{0.0, 0.0, 0.0}, {0.2, 0.2, 0.2}},
+                              Bounds{{5.0, 5.0, 5.0}, {6.0, 6.0, 6.0}}}) {
+        for (std::size_t index = 0; index < steps.size(); ++index) {
+            TimeStep outline = withoutValues(steps[index]);
+            TimeStep cut = steps[index];
+            const std::size_t expected = croppedVoxelCount(outline, index, "series.json", box, 2);
+            cropTimeStepToBox(cut, index, "series.json", box, 2);
+            EXPECT_EQ(expected, cut.density.size()) << "time-step " << index;
+            EXPECT_EQ(expected, gridVoxelCount(cut.grid));
+            expectValuesFollowTheirNodes(cut);
+        }
+    }
+}
+
 TEST(SeriesCrop, BeamGridsAreRefusedByName) {
     Series series;
     series.manifestPath = "survey/series.json";

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 
 #include "tstyles/data/series.h"
@@ -12,9 +13,19 @@ namespace tstyles {
 
 // What a series may take: memory (none given: half of the machine's, defaultMemoryCap()) for 4
 // bytes a voxel in memory, a mask byte where there is a mask, and the GPU's copy.
+// Called for each time-step as soon as its files are read (raw values, missing ones NaN, and
+// rawRange over the whole file), before the values are mapped to density: where a process keeps
+// one block of every time-step (distributed rendering), it cuts each one there, so that it never
+// holds more than its block and one whole time-step.
+using StepReadHook = std::function<void(std::size_t index, TimeStep& step)>;
+
 struct ManifestLimits {
     std::optional<std::uint64_t> maxMemoryBytes;  // --max-memory
     std::size_t gpuBytesPerVoxel = 2;             // --precision 16
+    // With a hook, the memory check counts the largest time-step (held whole while it is cut) and
+    // `keptVoxels`, the voxels the hook keeps of all time-steps, rather than the whole series.
+    StepReadHook afterStepRead;
+    std::size_t keptVoxels = 0;
 };
 
 // Loads the manifest and every value and mask file it names (paths relative to the manifest).
@@ -22,6 +33,11 @@ struct ManifestLimits {
 // memory limit is refused, with the figure it needs, before any value file is read. A dataset
 // folder may be given instead of its manifest: it stands for the folder's series.json.
 Series loadSeries(const std::filesystem::path& manifestPath, const ManifestLimits& limits = {});
+
+// The manifest's series without its values: times, grids, placements, axes and metadata, checked
+// as loadSeries checks them, with no value or mask file opened. valueRange is the manifest's
+// "value_range", or NaN, NaN where the range comes from the data.
+Series loadSeriesOutline(const std::filesystem::path& manifestPath);
 
 // One time-step's values as they should be written to disk.
 struct RawTimeStep {

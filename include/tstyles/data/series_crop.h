@@ -2,6 +2,9 @@
 // around it, for distributed (sort-last) rendering, where each process keeps only its block.
 #pragma once
 
+#include <cstddef>
+#include <filesystem>
+
 #include "tstyles/data/series.h"
 
 namespace tstyles {
@@ -14,5 +17,15 @@ namespace tstyles {
 // over. Rectilinear grids only: a beam or structured time-step is an InputError naming it. Takes
 // the series by value so that a caller who moves it in never holds the whole and the block at once.
 Series cropSeriesToBox(Series series, const Bounds& box, int ghostNodes);
+
+// The same for one time-step (`index` of the series read from `source`, for the message), in
+// place: what a reader that cuts each time-step as it reads it calls (loadSeriesBlock).
+void cropTimeStepToBox(TimeStep& step, std::size_t index, const std::filesystem::path& source, const Bounds& box,
+                       int ghostNodes);
+
+// The voxels cropTimeStepToBox keeps of `step`, from its grid and placement alone (no values
+// needed): what a reader that cuts time-steps as it reads them checks against the memory cap.
+std::size_t croppedVoxelCount(const TimeStep& step, std::size_t index, const std::filesystem::path& source,
+                              const Bounds& box, int ghostNodes);
 
 }  // namespace tstyles
