@@ -9,6 +9,7 @@
 #include "annotation_options.h"
 #include "tstyles/render/annotated_rendering.h"
 #include "commands.h"
+#include "distributed_source.h"
 #include "gpu_memory_option.h"
 #include "frame_sink.h"
 #include "interrupt_guard.h"
@@ -66,9 +67,8 @@ struct AnimationPlan {
     std::vector<Scene> scenes;
 };
 
-AnimationPlan planAnimation(const AnimateOptions& options, bool checkOutput) {
-    parseGpuMemoryOption(options.gpuMemory);
-    SceneAndSeries opened = openSceneOrDataset(options.inputs, {}, options.dataset);
+// `opened`: the scene and series the options ask for.
+AnimationPlan planAnimation(const AnimateOptions& options, SceneAndSeries opened, bool checkOutput) {
     Scene& scene = opened.scene;
     if (options.width) scene.width = *options.width;
     if (options.height) scene.height = *options.height;
@@ -92,7 +92,8 @@ void reportWritten(const AnimateOptions& options, const FrameSink& sink, const M
 }
 
 int runAnimate(const AnimateOptions& options) {
-    AnimationPlan plan = planAnimation(options, true);
+    parseGpuMemoryOption(options.gpuMemory);
+    AnimationPlan plan = planAnimation(options, openSceneOrDataset(options.inputs, {}, options.dataset), true);
     SceneOnSeries& fitted = plan.fitted;
     const MovieSettings& movie = plan.movie;
     const std::vector<Scene>& scenes = plan.scenes;
@@ -128,16 +129,23 @@ int runAnimate(const AnimateOptions& options) {
 int runDistributedAnimate(const AnimateOptions& options) {
     const MpiSession mpi;
     std::optional<AnimationPlan> plan;
-    mpi.together("reading the scene and the series", [&] { plan = planAnimation(options, mpi.isFirst()); });
+    std::optional<DistributedSource> source;
+    mpi.together("reading the scene and the series", [&] {
+        parseGpuMemoryOption(options.gpuMemory);
+        source = openDistributedSource(options.inputs, {}, options.dataset);
+        plan = planAnimation(options, std::move(source->opened), mpi.isFirst());
+    });
     std::unique_ptr<HeadlessContext> context;
     std::optional<Renderer> renderer;
     mpi.together("starting OpenGL", [&] {
         context = createHeadlessContext(parseBackend(options.gl.backend), glDebugOutputRequested());
         renderer.emplace(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
     });
-    DistributedRendering rendering(mpi, *renderer, std::move(plan->fitted), [&](const Series& block, const WholeSeries& whole) {
-        uploadWithinGpuMemory(*renderer, block, options.gpuMemory, options.dataset, whole);
-    });
+    DistributedRendering rendering = startDistributedRendering(
+        mpi, *renderer, std::move(plan->fitted), *source, options.dataset,
+        [&](const Series& block, const WholeSeries& whole) {
+            uploadWithinGpuMemory(*renderer, block, options.gpuMemory, options.dataset, whole);
+        });
     std::unique_ptr<FrameSink> sink;
     mpi.together("opening the output", [&] {
         if (mpi.isFirst()) sink = openFrameSink(options.output, plan->movie);
@@ -170,7 +178,8 @@ int runDistributedAnimate(const AnimateOptions& options) {
     progress->update(int(plan->scenes.size()));
     progress->finish();
     reportWritten(options, *sink, plan->movie, milliseconds,
-                  std::to_string(mpi.processCount()) + " processes, sort-last; " + context->description());
+                  std::to_string(mpi.processCount()) + " processes, sort-last; " + readingText(*source) + "; " +
+                      context->description());
     return kExitSuccess;
 }
 
@@ -199,7 +208,7 @@ Command addAnimateCommand(CLI::App& app) {
     addGpuMemoryOption(*command, options->gpuMemory);
     command->add_flag("--distributed", options->distributed,
                       "Render every frame sort-last over the MPI processes this runs in (mpirun -np N tstyles "
-                      "animate ... --distributed): each keeps one block of the series (docs/scaling.md)");
+                      "animate ... --distributed): each reads or keeps one block of the series (docs/scaling.md)");
     return {command, [options] { return options->distributed ? runDistributedAnimate(*options) : runAnimate(*options); }};
 }
 

@@ -7,10 +7,12 @@
 #include "tstyles/render/annotated_rendering.h"
 #include "animation_options.h"
 #include "commands.h"
+#include "distributed_source.h"
 #include "gpu_memory_option.h"
 #include "scene_source.h"
 #include "tstyles/scene/automatic_scene.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/core/process_memory.h"
 #include "tstyles/distributed/distributed_rendering.h"
 #include "tstyles/image/image_io.h"
 #include "tstyles/render/renderer.h"
@@ -56,9 +58,8 @@ void overrideStyles(Scene& scene, const std::vector<std::string>& overrides) {
     }
 }
 
-// The scene and series the options ask for, fitted to each other, at the frame asked for.
-SceneOnSeries fittedSceneFor(const RenderOptions& options) {
-    SceneAndSeries opened = openSceneOrDataset(options.inputs, options.datasetFiles, options.dataset);
+// The scene and series the options ask for (`opened`), fitted to each other, at the frame asked for.
+SceneOnSeries fittedSceneFor(const RenderOptions& options, SceneAndSeries opened) {
     Scene& scene = opened.scene;
     if (options.width) scene.width = *options.width;
     if (options.height) scene.height = *options.height;
@@ -93,7 +94,8 @@ void warnAboutCutShortRays(const RenderOptions& options, const Renderer& rendere
 int runRender(const RenderOptions& options) {
     requireWritableImagePath(options.output);
     parseGpuMemoryOption(options.gpuMemory);
-    SceneOnSeries fitted = fittedSceneFor(options);
+    SceneOnSeries fitted =
+        fittedSceneFor(options, openSceneOrDataset(options.inputs, options.datasetFiles, options.dataset));
     const Series& series = fitted.series;
     const auto context = createHeadlessContext(parseBackend(options.gl.backend), glDebugOutputRequested());
     Renderer renderer(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
@@ -111,15 +113,18 @@ int runRender(const RenderOptions& options) {
     return kExitSuccess;
 }
 
-// --distributed: every process reads the scene and the series, keeps its block, renders it; the
-// frames meet on process 0, which writes the image (docs/scaling.md).
+// --distributed: every process reads the scene and its block of the series (or the whole series,
+// keeping its block), renders it; the frames meet on process 0, which writes the image
+// (docs/scaling.md).
 int runDistributedRender(const RenderOptions& options) {
     const MpiSession mpi;
+    std::optional<DistributedSource> source;
     std::optional<SceneOnSeries> fitted;
     mpi.together("reading the scene and the series", [&] {
         if (mpi.isFirst()) requireWritableImagePath(options.output);
         parseGpuMemoryOption(options.gpuMemory);
-        fitted = fittedSceneFor(options);
+        source = openDistributedSource(options.inputs, options.datasetFiles, options.dataset);
+        fitted = fittedSceneFor(options, std::move(source->opened));
     });
     std::unique_ptr<HeadlessContext> context;
     std::optional<Renderer> renderer;
@@ -128,15 +133,17 @@ int runDistributedRender(const RenderOptions& options) {
         renderer.emplace(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
     });
     const std::size_t timeSteps = fitted->series.size();
-    DistributedRendering rendering(mpi, *renderer, std::move(*fitted), [&](const Series& block, const WholeSeries& whole) {
-        uploadWithinGpuMemory(*renderer, block, options.gpuMemory, options.dataset, whole);
-    });
+    DistributedRendering rendering = startDistributedRendering(
+        mpi, *renderer, std::move(*fitted), *source, options.dataset, [&](const Series& block, const WholeSeries& whole) {
+            uploadWithinGpuMemory(*renderer, block, options.gpuMemory, options.dataset, whole);
+        });
     const Scene& scene = rendering.scene();
     const Image image = rendering.render(scene);
     const double renderMs = mpi.maximum(rendering.lastTimes().render);
     const double compositeMs = mpi.maximum(rendering.lastTimes().composite);
     const double blockVoxels = mpi.maximum(double(rendering.blockVoxelCount()));
     const double blockBytes = mpi.maximum(double(renderer->seriesTextureBytes()));
+    const double peakBytes = mpi.maximum(double(peakResidentBytes()));
     if (!mpi.isFirst()) return kExitSuccess;
     writeImage(image, options.output);
     warnAboutCutShortRays(options, *renderer, *context);
@@ -144,7 +151,8 @@ int runDistributedRender(const RenderOptions& options) {
               << toString(scene.compositor) << ", " << timeSteps << " time-steps, " << mpi.processCount()
               << " processes: render " << renderMs << " ms incl. shader compilation, composite " << compositeMs
               << " ms (slowest process); largest block " << blockVoxels << " voxels, " << blockBytes / (1024.0 * 1024.0)
-              << " MiB of textures; " << context->description() << ")\n";
+              << " MiB of textures, peak memory " << peakBytes / (1024.0 * 1024.0) << " MiB (largest process); "
+              << readingText(*source) << "; " << context->description() << ")\n";
     return kExitSuccess;
 }
 

@@ -32,13 +32,41 @@ DistributedRendering::DistributedRendering(const MpiSession& mpi, Renderer& rend
       framed_(fitted.framed),
       frame_(fitted.frame) {
     mpi_.together("keeping this process's block", [&] {
-        if (mpi_.isFirst()) outline_ = outlineOf(fitted.series);
-        const WholeSeries whole{fitted.series.finestSpacing(), wholeBounds_};
+        // Every process needs the whole series' finest spacing; process 0 its outline too.
+        Series outline = outlineOf(fitted.series);
         const Series block = cropSeriesToBox(std::move(fitted.series), blocks_.block(mpi_.rank()), kBlockGhostNodes);
-        for (const TimeStep& step : block.steps) blockVoxels_ += gridVoxelCount(step.grid);
-        upload(block, whole);
+        keepBlock(block, std::move(outline), upload);
     });
     if (mpi_.isFirst()) annotator_.emplace(outline_, framed_, frame_);
+}
+
+DistributedRendering::DistributedRendering(const MpiSession& mpi, Renderer& renderer, SceneOnSeries fittedOutline,
+                                           const BlockReader& read, const BlockUpload& upload)
+    : mpi_(mpi),
+      renderer_(renderer),
+      scene_(std::move(fittedOutline.scene)),
+      blocks_(fittedOutline.series.worldBounds(), mpi.processCount()),
+      wholeBounds_(fittedOutline.series.worldBounds()),
+      framed_(fittedOutline.framed),
+      frame_(fittedOutline.frame) {
+    mpi_.together("reading this process's block", [&] {
+        const Series block = read(blocks_.block(mpi_.rank()));
+        // The value range and each time-step's raw range come from the values, which the outline
+        // has not read; every block has them of the whole series.
+        Series& outline = fittedOutline.series;
+        outline.valueRange = block.valueRange;
+        for (std::size_t index = 0; index < outline.steps.size(); ++index)
+            outline.steps[index].rawRange = block.steps[index].rawRange;
+        keepBlock(block, std::move(outline), upload);
+    });
+    if (mpi_.isFirst()) annotator_.emplace(outline_, framed_, frame_);
+}
+
+void DistributedRendering::keepBlock(const Series& block, Series outline, const BlockUpload& upload) {
+    const WholeSeries whole{outline.finestSpacing(), wholeBounds_};
+    for (const TimeStep& step : block.steps) blockVoxels_ += gridVoxelCount(step.grid);
+    upload(block, whole);
+    if (mpi_.isFirst()) outline_ = std::move(outline);
 }
 
 Image DistributedRendering::render(const Scene& scene) {

@@ -26,9 +26,46 @@ case_four_processes_match_one() {
     run_mpi 4 render "$SCENE" -o "$SCRATCH/four.png" --width 192 --height 192 --distributed
     expect_exit 0
     expect_stdout_contains "4 processes: render"
+    expect_stdout_contains "each process read only its block"
     expect_image "$SCRATCH/four.png" 192 192
     # The thresholds of tests/distributed/distributed_equivalence.cpp, which says why they are not 0.
     run_tstyles -- compare "$SCRATCH/one.png" "$SCRATCH/four.png" --max-difference 64 --pixel-threshold 3 \
+        --max-failing-share 0.02 --max-mean 0.03 --min-ssim 0.999
+    expect_exit 0
+}
+
+# Framing the visible data needs the values before the blocks are known: every process reads the
+# whole series and keeps its block, says so, and the image is the one process's.
+case_whole_series_where_the_scene_needs_values() {
+    sed 's#"fov_deg": 30}#"fov_deg": 30, "frame": "visible"}#; s#"\.\./superellipsoid/#"'"$SOURCE_DIR"'/data/superellipsoid/#' \
+        "$SCENE" >"$SCRATCH/visible.json"
+    grep -q '"frame": "visible"' "$SCRATCH/visible.json" || fail "the scene was not rewritten"
+    run_tstyles -- render "$SCRATCH/visible.json" -o "$SCRATCH/one.png" --width 128 --height 128
+    expect_exit 0
+    run_mpi 2 render "$SCRATCH/visible.json" -o "$SCRATCH/two.png" --width 128 --height 128 --distributed
+    expect_exit 0
+    expect_stdout_contains "every process read the whole series: the camera frames the visible data, which the values decide"
+    run_tstyles -- compare "$SCRATCH/one.png" "$SCRATCH/two.png" --max-difference 64 --pixel-threshold 3 \
+        --max-failing-share 0.02 --max-mean 0.03 --min-ssim 0.999
+    expect_exit 0
+}
+
+# The hurricane takes 23.4 MB under the memory check (4 bytes a voxel in memory, 2 on the GPU), so
+# --max-memory 16M refuses it whole; four processes each hold a block (about 7.9 MB with the
+# largest time-step while it is read) and render it.
+case_blocks_fit_where_the_whole_series_does_not() {
+    local hurricane="$SOURCE_DIR/data/scenes/figure5-focus-step5.json"
+    run_tstyles -- render "$hurricane" -o "$SCRATCH/one.png" --width 64 --height 64 --max-memory 16M
+    expect_exit 2
+    expect_stderr_contains "--max-memory"
+    expect_no_output "$SCRATCH/one.png"
+    run_mpi 4 render "$hurricane" -o "$SCRATCH/four.png" --width 64 --height 64 --max-memory 16M --distributed
+    expect_exit 0
+    expect_stdout_contains "each process read only its block"
+    expect_image "$SCRATCH/four.png" 64 64
+    run_tstyles -- render "$hurricane" -o "$SCRATCH/unlimited.png" --width 64 --height 64
+    expect_exit 0
+    run_tstyles -- compare "$SCRATCH/unlimited.png" "$SCRATCH/four.png" --max-difference 64 --pixel-threshold 3 \
         --max-failing-share 0.02 --max-mean 0.03 --min-ssim 0.999
     expect_exit 0
 }

@@ -2,7 +2,9 @@
 // compositor on the partial-overlap super-ellipsoid and on the hurricane (aligned, uneven z, missing
 // values), and lit-sphere styled scenes, whose gradients read ghost nodes at the block faces.
 // Process 0 also renders each case alone and compares; exit 0 when every case is within the
-// thresholds below, 1 otherwise (the table says which).
+// thresholds below, 1 otherwise (the table says which). Each case is rendered twice distributed:
+// with each process's block cut from the whole series, and with each process reading only its
+// block (readManifestBlock); those two must be the same image to the bit.
 //   distributed_equivalence SOURCE_DIR OUTPUT_DIR
 #include <cstdio>
 #include <cstdlib>
@@ -14,6 +16,7 @@
 
 #include "tstyles/core/errors.h"
 #include "tstyles/data/manifest.h"
+#include "tstyles/distributed/block_reading.h"
 #include "tstyles/distributed/distributed_rendering.h"
 #include "tstyles/gl/headless_context.h"
 #include "tstyles/image/image_comparison.h"
@@ -94,6 +97,16 @@ int run(const std::filesystem::path& sourceDir, const std::filesystem::path& out
         }
         std::optional<SceneOnSeries> whole;
         if (mpi.isFirst()) whole = fitted;
+        // The same blocks read by each process itself, time-step by time-step, from the outline
+        // fitted alike (readManifestBlock): no process holds the whole series.
+        SceneOnSeries fittedOutline = fitSceneToSeries(base, loadSeriesOutline(base.dataset));
+        const Series displayOutline = fittedOutline.series;  // grids without values
+        const DisplayFrame frame = fittedOutline.frame;
+        Renderer readRenderer(ShaderLibrary::embedded());
+        DistributedRendering fromReadBlocks(
+            mpi, readRenderer, std::move(fittedOutline),
+            [&](const Bounds& box) { return readManifestBlock(base.dataset, {}, displayOutline, frame, box); },
+            [&](const Series& block, const WholeSeries& wholeSeries) { readRenderer.setSeries(block, wholeSeries); });
         Renderer blockRenderer(ShaderLibrary::embedded());
         DistributedRendering distributed(mpi, blockRenderer, std::move(fitted),
                                          [&](const Series& block, const WholeSeries& wholeSeries) {
@@ -106,7 +119,16 @@ int run(const std::filesystem::path& sourceDir, const std::filesystem::path& out
         }
         for (const Scene& scene : scenes) {
             const Image image = distributed.render(scene);
+            const Image fromRead = fromReadBlocks.render(scene);
             if (!mpi.isFirst()) continue;
+            // Read blocks are the cut blocks exactly, so the two distributed images are the same.
+            const ImageDifference readDifference = compareImages(fromRead, image, 0);
+            if (readDifference.maxDelta != 0) {
+                ++failures;
+                std::cout << sceneCases.sceneFile << " " << toString(scene.compositor)
+                          << ": the blocks each process read differ from the blocks cut from the whole series: "
+                          << describe(readDifference) << "\n";
+            }
             const Image expected = AnnotatedRendering(*wholeRenderer, *whole).render(scene);
             const ImageDifference difference = compareImages(image, expected, thresholds.pixelThreshold);
             const std::string name = sceneCases.sceneFile + " " + toString(scene.compositor);

@@ -40,6 +40,17 @@ public:
     // annotations.
     DistributedRendering(const MpiSession& mpi, Renderer& renderer, SceneOnSeries fitted, const BlockUpload& upload);
 
+    // Reads this process's block of the series: every time-step cut to `box` (world coordinates of
+    // the scene's display frame) with kBlockGhostNodes around it, values mapped to density by the
+    // whole series' value range.
+    using BlockReader = std::function<Series(const Bounds& box)>;
+
+    // Collective. The same, where `fittedOutline`'s series has no values (the outline of the
+    // series in the scene's display frame, the scene fitted to it) and each process reads only
+    // its own block with `read`: no process holds more than its block and what `read` needs.
+    DistributedRendering(const MpiSession& mpi, Renderer& renderer, SceneOnSeries fittedOutline, const BlockReader& read,
+                         const BlockUpload& upload);
+
     // Collective: the scene's frame, annotated, on process 0; an empty image on the others.
     Image render(const Scene& scene);
 
@@ -51,6 +62,9 @@ public:
     const DistributedFrameTimes& lastTimes() const { return lastTimes_; }
 
 private:
+    // Keeps `block` (this process's) and uploads it; process 0 keeps `outline` for annotations.
+    void keepBlock(const Series& block, Series outline, const BlockUpload& upload);
+
     const MpiSession& mpi_;
     Renderer& renderer_;
     Scene scene_;

@@ -1,0 +1,26 @@
+// Reading one process's block of a manifest series without ever holding the whole series: each
+// time-step is read, taken into the scene's display frame and cut to the block before the next is
+// read, so a process holds its block of every time-step and at most one whole time-step
+// (docs/scaling.md, "What each process reads").
+#pragma once
+
+#include <filesystem>
+
+#include "tstyles/data/display_frame.h"
+#include "tstyles/data/read_options.h"
+#include "tstyles/data/series.h"
+
+namespace tstyles {
+
+// The block of the manifest's series that the world box `box` (display coordinates) needs, with
+// kBlockGhostNodes around it, as cropSeriesToBox cuts it from the whole series in the display
+// frame: the same grids, values, masks and value range (the range comes from whole time-steps, so
+// every process finds the same). `displayOutline`: the series' outline in the display frame
+// (loadSeriesOutline, then applyDisplayFrame), from which the block's size is known before any
+// value is read, and which gives the block its display axes. `options`:
+// --max-memory and --precision (a manifest takes no other reading option); the memory check counts
+// the block's voxels and the largest time-step, which a process holds whole while it cuts it.
+Series readManifestBlock(const std::filesystem::path& manifest, const ReadOptions& options,
+                         const Series& displayOutline, const DisplayFrame& frame, const Bounds& box);
+
+}  // namespace tstyles
