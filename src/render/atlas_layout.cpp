@@ -16,9 +16,88 @@ glm::ivec3 largestDims(const std::vector<glm::ivec3>& brickDims) {
     return largest;
 }
 
-}  // namespace
+// Stacking is tried for at most this many bricks (it tries every column count, each in
+// count log count); longer series have bricks of one size, where it cannot win.
+constexpr std::size_t kMostStackedBricks = 1024;
 
-std::optional<AtlasLayout> tryPlanAtlas(const std::vector<glm::ivec3>& brickDims, int maxTextureSize) {
+long long texelsOf(const glm::i64vec3& size) { return size.x * size.y * size.z; }
+
+// Bricks stacked along z in `columnCount` columns of the largest x and y, filled tallest first
+// into the lowest column; the columns side by side in x, then in rows along y. None where no
+// arrangement of them fits.
+std::optional<AtlasLayout> stackedColumns(const std::vector<glm::ivec3>& brickDims, std::size_t columnCount,
+                                          const std::vector<std::size_t>& tallestFirst, int maxTextureSize) {
+    const glm::ivec3 largest = largestDims(brickDims);
+    std::vector<int> heights(columnCount, 0);
+    std::vector<std::size_t> columnOf(brickDims.size());
+    std::vector<int> zOf(brickDims.size());
+    for (std::size_t brick : tallestFirst) {
+        const std::size_t lowest = std::size_t(std::min_element(heights.begin(), heights.end()) - heights.begin());
+        columnOf[brick] = lowest;
+        zOf[brick] = heights[lowest];
+        heights[lowest] += brickDims[brick].z;
+    }
+    const int height = *std::max_element(heights.begin(), heights.end());
+    if (height > maxTextureSize) return std::nullopt;
+    const long long maxX = maxTextureSize / largest.x;
+    const long long maxY = maxTextureSize / largest.y;
+    const auto columns = static_cast<long long>(columnCount);
+    std::optional<glm::i64vec3> best;
+    for (long long cx = 1; cx <= std::min(columns, maxX); ++cx) {
+        const long long cy = (columns + cx - 1) / cx;
+        if (cy > maxY) continue;
+        const glm::i64vec3 size(cx * largest.x, cy * largest.y, height);
+        if (!best || texelsOf(size) < texelsOf(*best)) best = size;
+    }
+    if (!best) return std::nullopt;
+    AtlasLayout layout;
+    layout.cellSize = glm::ivec3(largest.x, largest.y, height);
+    layout.cells = glm::ivec3(int(best->x / largest.x), int(best->y / largest.y), 1);
+    layout.size = glm::ivec3(*best);
+    for (std::size_t brick = 0; brick < brickDims.size(); ++brick) {
+        const int column = int(columnOf[brick]);
+        layout.brickOrigins.push_back(
+            glm::ivec3(column % layout.cells.x * largest.x, column / layout.cells.x * largest.y, zOf[brick]));
+    }
+    return layout;
+}
+
+// `v` with its axes rotated so that `axis` comes last (z): stacking along z then stacks along `axis`.
+glm::ivec3 axisLast(glm::ivec3 v, int axis) { return glm::ivec3(v[(axis + 1) % 3], v[(axis + 2) % 3], v[axis]); }
+glm::ivec3 axisBack(glm::ivec3 v, int axis) {
+    glm::ivec3 back;
+    back[(axis + 1) % 3] = v.x;
+    back[(axis + 2) % 3] = v.y;
+    back[axis] = v.z;
+    return back;
+}
+
+// The stacked arrangement with the fewest texels over the three stacking axes and every column
+// count; none where none fits. (A block cut along x differs in x: its bricks stack along x.)
+std::optional<AtlasLayout> bestStackedColumns(const std::vector<glm::ivec3>& brickDims, int maxTextureSize) {
+    std::optional<AtlasLayout> best;
+    for (int axis = 0; axis < 3; ++axis) {
+        std::vector<glm::ivec3> turned;
+        for (const glm::ivec3& dims : brickDims) turned.push_back(axisLast(dims, axis));
+        std::vector<std::size_t> tallestFirst(turned.size());
+        for (std::size_t brick = 0; brick < turned.size(); ++brick) tallestFirst[brick] = brick;
+        std::stable_sort(tallestFirst.begin(), tallestFirst.end(),
+                         [&](std::size_t a, std::size_t b) { return turned[a].z > turned[b].z; });
+        for (std::size_t columns = 1; columns <= turned.size(); ++columns) {
+            std::optional<AtlasLayout> layout = stackedColumns(turned, columns, tallestFirst, maxTextureSize);
+            if (!layout || (best && layout->texelCount() >= best->texelCount())) continue;
+            layout->cellSize = axisBack(layout->cellSize, axis);
+            layout->cells = axisBack(layout->cells, axis);
+            layout->size = axisBack(layout->size, axis);
+            for (glm::ivec3& origin : layout->brickOrigins) origin = axisBack(origin, axis);
+            best = std::move(layout);
+        }
+    }
+    return best;
+}
+
+// Equal cells of the largest brick's size in a 3D grid; none where they do not fit.
+std::optional<AtlasLayout> equalCells(const std::vector<glm::ivec3>& brickDims, int maxTextureSize) {
     AtlasLayout layout;
     if (brickDims.empty()) return layout;
     layout.cellSize = largestDims(brickDims);
@@ -51,6 +130,19 @@ std::optional<AtlasLayout> tryPlanAtlas(const std::vector<glm::ivec3>& brickDims
         layout.brickOrigins.push_back(cell * layout.cellSize);
     }
     return layout;
+}
+
+}  // namespace
+
+std::optional<AtlasLayout> tryPlanAtlas(const std::vector<glm::ivec3>& brickDims, int maxTextureSize) {
+    std::optional<AtlasLayout> equal = equalCells(brickDims, maxTextureSize);
+    if (brickDims.size() < 2 || brickDims.size() > kMostStackedBricks) return equal;
+    const glm::ivec3 largest = largestDims(brickDims);
+    const bool allAlike = std::all_of(brickDims.begin(), brickDims.end(), [&](glm::ivec3 dims) { return dims == largest; });
+    if (allAlike) return equal;  // equal cells waste nothing then
+    std::optional<AtlasLayout> stacked = bestStackedColumns(brickDims, maxTextureSize);
+    if (stacked && (!equal || stacked->texelCount() < equal->texelCount())) return stacked;
+    return equal;
 }
 
 AtlasLayout planAtlas(const std::vector<glm::ivec3>& brickDims, int maxTextureSize) {

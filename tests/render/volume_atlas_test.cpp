@@ -16,15 +16,55 @@ TEST(AtlasLayout, SixtyFourTimeStepsOf64CubedFormA256CubedAtlas) {
     EXPECT_EQ(layout.brickOrigins[63], glm::ivec3(192));
 }
 
-TEST(AtlasLayout, BricksOfDifferentSizesShareTheLargestCell) {
-    const AtlasLayout layout = planAtlas({{10, 20, 5}, {30, 4, 5}, {8, 8, 8}}, 64);
-    EXPECT_EQ(layout.cellSize, glm::ivec3(30, 20, 8));
-    for (std::size_t i = 0; i < layout.brickOrigins.size(); ++i)
-        for (std::size_t j = i + 1; j < layout.brickOrigins.size(); ++j)
-            EXPECT_NE(layout.brickOrigins[i], layout.brickOrigins[j]);
-    EXPECT_LE(layout.size.x, 64);
-    EXPECT_LE(layout.size.y, 64);
-    EXPECT_LE(layout.size.z, 64);
+// No two bricks share a texel, and every brick lies inside the atlas.
+void expectDisjointInside(const AtlasLayout& layout, const std::vector<glm::ivec3>& dims) {
+    ASSERT_EQ(layout.brickOrigins.size(), dims.size());
+    for (std::size_t i = 0; i < dims.size(); ++i) {
+        EXPECT_TRUE(glm::all(glm::greaterThanEqual(layout.brickOrigins[i], glm::ivec3(0))));
+        EXPECT_TRUE(glm::all(glm::lessThanEqual(layout.brickOrigins[i] + dims[i], layout.size))) << "brick " << i;
+        for (std::size_t j = i + 1; j < dims.size(); ++j) {
+            const glm::ivec3 lower = glm::max(layout.brickOrigins[i], layout.brickOrigins[j]);
+            const glm::ivec3 upper = glm::min(layout.brickOrigins[i] + dims[i], layout.brickOrigins[j] + dims[j]);
+            EXPECT_FALSE(glm::all(glm::lessThan(lower, upper))) << "bricks " << i << " and " << j << " overlap";
+        }
+    }
+}
+
+// Bricks of different sizes stack in columns where that takes fewer texels than equal cells of
+// the largest brick (three cells of 30 x 20 x 8, 14 400 texels): here one column along x of
+// (10 + 30 + 8) x 20 x 8, 7 680 texels; along z it would be 30 x 20 x 18, 10 800.
+TEST(AtlasLayout, BricksOfDifferentSizesStackInColumns) {
+    const std::vector<glm::ivec3> dims = {{10, 20, 5}, {30, 4, 5}, {8, 8, 8}};
+    const AtlasLayout layout = planAtlas(dims, 64);
+    EXPECT_EQ(layout.size, glm::ivec3(48, 20, 8));
+    expectDisjointInside(layout, dims);
+}
+
+// A distributed block of a partial-overlap series: five time-steps kept whole, five cut to one
+// cell. Equal cells would take ten 64^3 cells; columns take about half.
+TEST(AtlasLayout, ABlockWithCutTimeStepsTakesAboutItsOwnSize) {
+    std::vector<glm::ivec3> dims;
+    for (int step = 0; step < 10; ++step) dims.push_back(step % 2 == 0 ? glm::ivec3(64) : glm::ivec3(2));
+    const AtlasLayout layout = planAtlas(dims, 2048);
+    EXPECT_LE(layout.texelCount(), std::size_t(5 * 64 * 64 * 64 + 5 * 64 * 64 * 2));
+    expectDisjointInside(layout, dims);
+}
+
+// Bricks of one size keep the equal cells (the layout of every series but a block's).
+TEST(AtlasLayout, BricksOfOneSizeKeepEqualCells) {
+    const AtlasLayout layout = planAtlas(std::vector<glm::ivec3>(10, glm::ivec3(64, 32, 16)), 2048);
+    EXPECT_EQ(layout.cellSize, glm::ivec3(64, 32, 16));
+    EXPECT_EQ(layout.texelCount(), std::size_t(10 * 64 * 32 * 16));
+}
+
+// Columns stay within the texture's side, and fit where equal cells do not: 40 bricks of 16 x 16
+// x 4, 16 or 28 in a 64 cube, which holds only 32 cells of 16 x 16 x 28.
+TEST(AtlasLayout, ColumnsFitWhereEqualCellsDoNot) {
+    std::vector<glm::ivec3> dims;
+    for (int brick = 0; brick < 40; ++brick) dims.push_back(glm::ivec3(16, 16, 4 + brick % 3 * 12));
+    const AtlasLayout layout = planAtlas(dims, 64);
+    EXPECT_TRUE(glm::all(glm::lessThanEqual(layout.size, glm::ivec3(64))));
+    expectDisjointInside(layout, dims);
 }
 
 TEST(AtlasLayout, TooManyTimeStepsForOneTextureIsAnInputError) {

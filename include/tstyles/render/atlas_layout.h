@@ -1,5 +1,7 @@
-// Packing of many time-step volumes into one 3D texture: each time-step gets a brick in a grid
-// of equal cells, so that the number of time-steps is bounded by memory, not by texture units.
+// Packing of many time-step volumes into one 3D texture, so that the number of time-steps is
+// bounded by memory, not by texture units: each time-step gets a brick in a grid of equal cells,
+// or, where the bricks differ in size (a distributed block of a partial-overlap series keeps some
+// time-steps whole and cuts others), in columns that stack them along one axis.
 #pragma once
 
 #include <cstddef>
@@ -11,8 +13,11 @@
 namespace tstyles {
 
 struct AtlasLayout {
-    glm::ivec3 cellSize{0};  // every brick fits in one cell (the largest dims along each axis)
-    glm::ivec3 cells{0};     // cells along x, y, z
+    // Equal cells: every brick fits in one cell (the largest dims along each axis). Stacked
+    // columns: a column's footprint (the largest dims across the stacking axis) and the tallest
+    // column's length along it.
+    glm::ivec3 cellSize{0};
+    glm::ivec3 cells{0};     // cells (columns) along x, y, z
     glm::ivec3 size{0};      // texture size in texels: cells * cellSize
     std::vector<glm::ivec3> brickOrigins;  // first texel of each brick
 
@@ -20,7 +25,9 @@ struct AtlasLayout {
 };
 
 // The arrangement with the fewest texels (then the most cube-like) whose sides stay within
-// `maxTextureSize`. Throws InputError when the bricks cannot fit into one 3D texture.
+// `maxTextureSize`: equal cells, or for bricks of different sizes (up to 1024 of them) stacked
+// columns where those take fewer texels. Throws InputError when the bricks cannot fit into one 3D
+// texture.
 AtlasLayout planAtlas(const std::vector<glm::ivec3>& brickDims, int maxTextureSize);
 // The same, with no layout instead of the InputError.
 std::optional<AtlasLayout> tryPlanAtlas(const std::vector<glm::ivec3>& brickDims, int maxTextureSize);
