@@ -2,7 +2,10 @@
 #include "tstyles/render/atlas_layout.h"
 
 #include <algorithm>
+#include <functional>
 #include <limits>
+#include <queue>
+#include <utility>
 #include <string>
 
 #include "tstyles/core/errors.h"
@@ -16,9 +19,8 @@ glm::ivec3 largestDims(const std::vector<glm::ivec3>& brickDims) {
     return largest;
 }
 
-// Stacking is tried for at most this many bricks (it tries every column count, each in
-// count log count); longer series have bricks of one size, where it cannot win.
-constexpr std::size_t kMostStackedBricks = 1024;
+// Stacking is tried for at most this many bricks of different sizes; beyond, equal cells.
+constexpr std::size_t kMostStackedBricks = 4096;
 
 long long texelsOf(const glm::i64vec3& size) { return size.x * size.y * size.z; }
 
@@ -28,16 +30,20 @@ long long texelsOf(const glm::i64vec3& size) { return size.x * size.y * size.z; 
 std::optional<AtlasLayout> stackedColumns(const std::vector<glm::ivec3>& brickDims, std::size_t columnCount,
                                           const std::vector<std::size_t>& tallestFirst, int maxTextureSize) {
     const glm::ivec3 largest = largestDims(brickDims);
-    std::vector<int> heights(columnCount, 0);
+    // The lowest column on top (then the first): (height, column) in a min-heap.
+    std::priority_queue<std::pair<int, std::size_t>, std::vector<std::pair<int, std::size_t>>, std::greater<>> lowest;
+    for (std::size_t column = 0; column < columnCount; ++column) lowest.emplace(0, column);
     std::vector<std::size_t> columnOf(brickDims.size());
     std::vector<int> zOf(brickDims.size());
+    int height = 0;
     for (std::size_t brick : tallestFirst) {
-        const std::size_t lowest = std::size_t(std::min_element(heights.begin(), heights.end()) - heights.begin());
-        columnOf[brick] = lowest;
-        zOf[brick] = heights[lowest];
-        heights[lowest] += brickDims[brick].z;
+        const auto [columnHeight, column] = lowest.top();
+        lowest.pop();
+        columnOf[brick] = column;
+        zOf[brick] = columnHeight;
+        height = std::max(height, columnHeight + brickDims[brick].z);
+        lowest.emplace(columnHeight + brickDims[brick].z, column);
     }
-    const int height = *std::max_element(heights.begin(), heights.end());
     if (height > maxTextureSize) return std::nullopt;
     const long long maxX = maxTextureSize / largest.x;
     const long long maxY = maxTextureSize / largest.y;
@@ -62,10 +68,20 @@ std::optional<AtlasLayout> stackedColumns(const std::vector<glm::ivec3>& brickDi
     return layout;
 }
 
+// The column counts tried: every count up to 16, then about 25 % apart, and one per brick; so a
+// plan costs count log^2 count, not count^2 log count (fitToGpuMemory plans many scales).
+std::vector<std::size_t> columnCounts(std::size_t bricks) {
+    std::vector<std::size_t> counts;
+    for (std::size_t columns = 1; columns <= bricks; columns = columns < 16 ? columns + 1 : columns + columns / 4)
+        counts.push_back(columns);
+    if (counts.back() != bricks) counts.push_back(bricks);
+    return counts;
+}
+
 // `v` with its axes rotated so that `axis` comes last (z): stacking along z then stacks along `axis`.
 glm::ivec3 axisLast(glm::ivec3 v, int axis) { return glm::ivec3(v[(axis + 1) % 3], v[(axis + 2) % 3], v[axis]); }
 glm::ivec3 axisBack(glm::ivec3 v, int axis) {
-    glm::ivec3 back;
+    glm::ivec3 back(0);
     back[(axis + 1) % 3] = v.x;
     back[(axis + 2) % 3] = v.y;
     back[axis] = v.z;
@@ -83,7 +99,7 @@ std::optional<AtlasLayout> bestStackedColumns(const std::vector<glm::ivec3>& bri
         for (std::size_t brick = 0; brick < turned.size(); ++brick) tallestFirst[brick] = brick;
         std::stable_sort(tallestFirst.begin(), tallestFirst.end(),
                          [&](std::size_t a, std::size_t b) { return turned[a].z > turned[b].z; });
-        for (std::size_t columns = 1; columns <= turned.size(); ++columns) {
+        for (std::size_t columns : columnCounts(turned.size())) {
             std::optional<AtlasLayout> layout = stackedColumns(turned, columns, tallestFirst, maxTextureSize);
             if (!layout || (best && layout->texelCount() >= best->texelCount())) continue;
             layout->cellSize = axisBack(layout->cellSize, axis);

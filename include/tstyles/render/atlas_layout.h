@@ -25,7 +25,7 @@ struct AtlasLayout {
 };
 
 // The arrangement with the fewest texels (then the most cube-like) whose sides stay within
-// `maxTextureSize`: equal cells, or for bricks of different sizes (up to 1024 of them) stacked
+// `maxTextureSize`: equal cells, or for bricks of different sizes (up to 4096 of them) stacked
 // columns where those take fewer texels. Throws InputError when the bricks cannot fit into one 3D
 // texture.
 AtlasLayout planAtlas(const std::vector<glm::ivec3>& brickDims, int maxTextureSize);
