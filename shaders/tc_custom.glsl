@@ -36,7 +36,7 @@ void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 po
     state.met += 1;
 }
 
-TemporalCharacteristic compositorFinish(CompositorState state) {
+TemporalCharacteristic compositorFinish(CompositorState state, vec3 position, inout int fetches) {
     if (state.met == 0) return transparentCharacteristic();
     float density[MAX_TIME_STEPS];
     bool hasData[MAX_TIME_STEPS];

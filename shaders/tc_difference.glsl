@@ -22,7 +22,7 @@ void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 po
     if (s.step == compositorSteps.y) state.to = s;
 }
 
-TemporalCharacteristic compositorFinish(CompositorState state) {
+TemporalCharacteristic compositorFinish(CompositorState state, vec3 position, inout int fetches) {
     if (state.from.step < 0 || state.to.step < 0) return transparentCharacteristic();
     TimeStepSample representative = state.to.stf.a >= state.from.stf.a ? state.to : state.from;
     if (representative.stf.a <= 0.0) return transparentCharacteristic();

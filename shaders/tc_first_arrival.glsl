@@ -20,7 +20,7 @@ void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 po
     if (state.first.step < 0 || s.step < state.first.step) state.first = s;
 }
 
-TemporalCharacteristic compositorFinish(CompositorState state) {
+TemporalCharacteristic compositorFinish(CompositorState state, vec3 position, inout int fetches) {
     if (state.first.step < 0 || state.first.stf.a <= 0.0) return transparentCharacteristic();
     return characteristicOf(READS_INDEX_TSTF, float(state.first.step), state.first);
 }

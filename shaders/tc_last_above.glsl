@@ -20,7 +20,7 @@ void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 po
     if (s.step > state.last.step) state.last = s;
 }
 
-TemporalCharacteristic compositorFinish(CompositorState state) {
+TemporalCharacteristic compositorFinish(CompositorState state, vec3 position, inout int fetches) {
     if (state.last.step < 0 || state.last.stf.a <= 0.0) return transparentCharacteristic();
     return characteristicOf(READS_INDEX_TSTF, float(state.last.step), state.last);
 }

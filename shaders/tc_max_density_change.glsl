@@ -25,7 +25,7 @@ void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 po
     noteRepresentative(state.representative, s);
 }
 
-TemporalCharacteristic compositorFinish(CompositorState state) {
+TemporalCharacteristic compositorFinish(CompositorState state, vec3 position, inout int fetches) {
     TimeStepSample representative = representativeSample(state.representative);
     if (!(representative.stf.a > 0.0 && state.withData >= 1)) return transparentCharacteristic();
     if (state.withData < 2) return characteristicOf(READS_STF, 0.0, representative);

@@ -27,7 +27,7 @@ void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 po
     }
 }
 
-TemporalCharacteristic compositorFinish(CompositorState state) {
+TemporalCharacteristic compositorFinish(CompositorState state, vec3 position, inout int fetches) {
     if (state.winner.step < 0) return transparentCharacteristic();
     return characteristicOf(READS_INDEX_TSTF, float(state.winner.step), state.winner);
 }

@@ -20,7 +20,7 @@ void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 po
     if (lower) state.lowest = s;
 }
 
-TemporalCharacteristic compositorFinish(CompositorState state) {
+TemporalCharacteristic compositorFinish(CompositorState state, vec3 position, inout int fetches) {
     if (state.lowest.step < 0 || state.lowest.stf.a <= 0.0) return transparentCharacteristic();
     return characteristicOf(READS_INDEX_TSTF, float(state.lowest.step), state.lowest);
 }

@@ -19,7 +19,7 @@ void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 po
     if (higher) state.highest = s;
 }
 
-TemporalCharacteristic compositorFinish(CompositorState state) {
+TemporalCharacteristic compositorFinish(CompositorState state, vec3 position, inout int fetches) {
     if (state.highest.step < 0 || state.highest.stf.a <= 0.0) return transparentCharacteristic();
     return characteristicOf(READS_INDEX_TSTF, float(state.highest.step), state.highest);
 }

@@ -23,6 +23,7 @@ TemporalSample compositeTemporal(vec3 position, float t) {
     }
     CompositorState state = compositorInit();
     accumulateTimeSteps(state, point, result);
-    result.colorOpacity = styledCharacteristic(compositorFinish(state), position, result.fetches);
+    TemporalCharacteristic characteristic = compositorFinish(state, position, result.fetches);
+    result.colorOpacity = styledCharacteristic(characteristic, position, result.fetches);
     return result;
 }

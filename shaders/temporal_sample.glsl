@@ -10,7 +10,9 @@
 //   struct CompositorState
 //   CompositorState compositorInit()
 //   void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 position, inout int fetches)
-//   TemporalCharacteristic compositorFinish(CompositorState state)
+//   TemporalCharacteristic compositorFinish(CompositorState state, vec3 position, inout int fetches)
+//                                      (`position`, `fetches`: as for compositorAccumulate, for a
+//                                      compositor that styles the time-steps it kept only here)
 // and nothing else that the raycaster calls.
 #include "variant_switches.glsl"
 #include "transfer_functions.glsl"
