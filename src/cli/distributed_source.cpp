@@ -20,8 +20,9 @@ std::string whyNotInBlocks(const Scene& scene, const std::vector<std::filesystem
                                 !options.solutions.empty() || options.block != 0;
     if (readingOptions) return "a reader's options were given";
     if (scene.gradientTstf.automaticRange)
-        return "the scene's gradient TSTF range is \"auto\", which is fitted to the values";
-    if (scene.camera.framing == Framing::Visible) return "the camera frames the visible data, which the values decide";
+        return "the scene's gradient TSTF range is \"auto\", which is fitted to the values (a fixed range reads blocks)";
+    if (scene.camera.framing == Framing::Visible)
+        return "the camera frames the visible data, which the values decide (\"frame\": \"series\" reads blocks)";
     return "";
 }
 
@@ -32,7 +33,7 @@ DistributedSource openDistributedSource(const std::vector<std::filesystem::path>
                                         const DatasetOptions& datasetOptions) {
     if (inputs.size() != 1 || classifyInput(inputs.front()) != InputKind::Scene)
         return {openSceneOrDataset(inputs, datasetFiles, datasetOptions), std::nullopt,
-                "the automatic scene is fitted to the values"};
+                "the automatic scene is fitted to the values (`tstyles scene` writes it to a file to fix)"};
     Scene scene = loadScene(inputs.front());
     const std::vector<std::filesystem::path> dataset =
         datasetFiles.empty() ? std::vector<std::filesystem::path>{scene.dataset} : datasetFiles;

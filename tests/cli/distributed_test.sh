@@ -44,7 +44,7 @@ case_whole_series_where_the_scene_needs_values() {
     expect_exit 0
     run_mpi 2 render "$SCRATCH/visible.json" -o "$SCRATCH/two.png" --width 128 --height 128 --distributed
     expect_exit 0
-    expect_stdout_contains "every process read the whole series: the camera frames the visible data, which the values decide"
+    expect_stdout_contains "every process read the whole series: the camera frames the visible data, which the values decide (\"frame\": \"series\" reads blocks)"
     run_tstyles -- compare "$SCRATCH/one.png" "$SCRATCH/two.png" --max-difference 64 --pixel-threshold 3 \
         --max-failing-share 0.02 --max-mean 0.03 --min-ssim 0.999
     expect_exit 0
