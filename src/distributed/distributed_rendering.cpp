@@ -22,15 +22,20 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-DistributedRendering::DistributedRendering(const MpiSession& mpi, Renderer& renderer, SceneOnSeries fitted,
-                                           const BlockUpload& upload)
+DistributedRendering::DistributedRendering(const MpiSession& mpi, Renderer& renderer, Scene scene,
+                                           const Bounds& wholeBounds, const Bounds& framed, const DisplayFrame& frame)
     : mpi_(mpi),
       renderer_(renderer),
-      scene_(std::move(fitted.scene)),
-      blocks_(fitted.series.worldBounds(), mpi.processCount()),
-      wholeBounds_(fitted.series.worldBounds()),
-      framed_(fitted.framed),
-      frame_(fitted.frame) {
+      scene_(std::move(scene)),
+      blocks_(wholeBounds, mpi.processCount()),
+      wholeBounds_(wholeBounds),
+      framed_(framed),
+      frame_(frame) {}
+
+DistributedRendering::DistributedRendering(const MpiSession& mpi, Renderer& renderer, SceneOnSeries fitted,
+                                           const BlockUpload& upload)
+    : DistributedRendering(mpi, renderer, std::move(fitted.scene), fitted.series.worldBounds(), fitted.framed,
+                           fitted.frame) {
     mpi_.together("keeping this process's block", [&] {
         // Every process needs the whole series' finest spacing; process 0 its outline too.
         Series outline = outlineOf(fitted.series);
@@ -42,13 +47,8 @@ DistributedRendering::DistributedRendering(const MpiSession& mpi, Renderer& rend
 
 DistributedRendering::DistributedRendering(const MpiSession& mpi, Renderer& renderer, SceneOnSeries fittedOutline,
                                            const BlockReader& read, const BlockUpload& upload)
-    : mpi_(mpi),
-      renderer_(renderer),
-      scene_(std::move(fittedOutline.scene)),
-      blocks_(fittedOutline.series.worldBounds(), mpi.processCount()),
-      wholeBounds_(fittedOutline.series.worldBounds()),
-      framed_(fittedOutline.framed),
-      frame_(fittedOutline.frame) {
+    : DistributedRendering(mpi, renderer, std::move(fittedOutline.scene), fittedOutline.series.worldBounds(),
+                           fittedOutline.framed, fittedOutline.frame) {
     mpi_.together("reading this process's block", [&] {
         const Series block = read(blocks_.block(mpi_.rank()));
         // The value range and each time-step's raw range come from the values, which the outline

@@ -62,6 +62,9 @@ public:
     const DistributedFrameTimes& lastTimes() const { return lastTimes_; }
 
 private:
+    // What both public constructors start from: the blocks of the whole series' bounds.
+    DistributedRendering(const MpiSession& mpi, Renderer& renderer, Scene scene, const Bounds& wholeBounds,
+                         const Bounds& framed, const DisplayFrame& frame);
     // Keeps `block` (this process's) and uploads it; process 0 keeps `outline` for annotations.
     void keepBlock(const Series& block, Series outline, const BlockUpload& upload);
 
