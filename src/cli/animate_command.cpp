@@ -101,8 +101,9 @@ int runAnimate(const AnimateOptions& options) {
     Renderer renderer(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
     uploadWithinGpuMemory(renderer, fitted.series, options.gpuMemory, options.dataset);
     AnnotatedRendering rendering(renderer, fitted);
-    std::unique_ptr<FrameSink> sink = openFrameSink(options.output, movie);
+    // From before the output is opened: a Ctrl+C after it is caught and ends with nothing written.
     const InterruptGuard interrupt;
+    std::unique_ptr<FrameSink> sink = openFrameSink(options.output, movie);
     ProgressBar progress("rendering frame", int(scenes.size()));
     std::vector<double> milliseconds;
     for (std::size_t frame = 0; frame < scenes.size(); ++frame) {
@@ -146,11 +147,11 @@ int runDistributedAnimate(const AnimateOptions& options) {
         [&](const Series& block, const WholeSeries& whole) {
             uploadWithinGpuMemory(*renderer, block, options.gpuMemory, options.dataset, whole);
         });
+    const InterruptGuard interrupt;  // before the output is opened, as in runAnimate
     std::unique_ptr<FrameSink> sink;
     mpi.together("opening the output", [&] {
         if (mpi.isFirst()) sink = openFrameSink(options.output, plan->movie);
     });
-    const InterruptGuard interrupt;
     std::optional<ProgressBar> progress;
     if (mpi.isFirst()) progress.emplace("rendering frame", int(plan->scenes.size()));
     std::vector<double> milliseconds;

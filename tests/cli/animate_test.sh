@@ -108,11 +108,19 @@ case_unwritable_output() {
 
 # Ctrl+C in the middle: exit 130, and neither the movie nor its temporary file is left.
 case_interrupt_leaves_nothing() {
-    echo "+ tstyles animate (interrupted after 3 s)" >&2
+    echo "+ tstyles animate (interrupted once it renders)" >&2
     "$TSTYLES" animate "$HURRICANE" -o "$SCRATCH/movie.mp4" --orbit 360 --frames 2000 --width 128 --height 128 \
         >"$OUT_FILE" 2>"$ERR_FILE" &
     local pid=$!
-    sleep 3
+    # A background job of a script starts with SIGINT ignored, so a signal sent before tstyles
+    # catches it would be lost: wait for the first progress line (the handler is in place by then;
+    # a slow start, as under the sanitizers, takes longer than any fixed wait).
+    local waited=0
+    until grep -q "rendering frame" "$ERR_FILE" 2>/dev/null; do
+        sleep 0.2
+        waited=$((waited + 1))
+        [ "$waited" -lt 600 ] || { kill -9 "$pid"; fail "no progress line in 120 s"; }
+    done
     kill -INT "$pid"
     RC=0
     wait "$pid" || RC=$?
