@@ -176,14 +176,15 @@ nlohmann::json toJson(const std::vector<BenchResult>& results, const std::string
 // Every compositor at every size on one series.
 void runSeries(Renderer& renderer, const Series& series, const BenchDataset& dataset, const BenchOptions& options,
                std::vector<BenchResult>& results) {
-    const GpuResidency residency = uploadWithinGpuMemory(renderer, series, options.gpuMemory, DatasetOptions{});
+    const std::vector<std::string> storageChanges =
+        residencyChanges(series, uploadWithinGpuMemory(renderer, series, options.gpuMemory, DatasetOptions{}));
     for (auto compositor : kBenchCompositors)
         for (int size : options.sizes) {
             results.push_back(runCase(renderer, series,
                                       {dataset.folder, benchSceneFor(dataset, compositor, options.styled),
                                        compositor, size},
                                       options));
-            results.back().gpuStorageChanges = residencyChanges(series, residency);
+            results.back().gpuStorageChanges = storageChanges;
             std::cerr << "." << std::flush;
         }
 }
