@@ -14,6 +14,7 @@
 #include "bench_distributed.h"
 #include "bench_scaling.h"
 #include "commands.h"
+#include "image_size_text.h"
 #include "gpu_memory_option.h"
 #include "tstyles/core/atomic_file.h"
 #include "tstyles/core/errors.h"
@@ -32,7 +33,8 @@ std::vector<std::string> defaultDatasets() {
 }
 
 struct BenchOptions {
-    std::vector<int> sizes{512, 1024};
+    std::vector<std::string> sizeTexts{"512", "1024"};
+    std::vector<glm::ivec2> sizes;  // from sizeTexts
     int frames = 7;
     int warmup = 2;
     std::optional<std::filesystem::path> json;
@@ -50,7 +52,7 @@ struct BenchCase {
     std::string dataset;
     std::string scene;  // the bundled scene that supplies camera and transfer functions
     TemporalCompositor compositor;
-    int size;
+    glm::ivec2 size;
 };
 
 struct BenchResult {
@@ -87,12 +89,12 @@ BenchResult runCase(Renderer& renderer, const Series& series, const BenchCase& b
     Scene scene = loadScene(bundledDataDirectory() / "scenes" / (benchCase.scene + ".json"));
     scene.compositor = benchCase.compositor;
     FrameOptions frame;
-    frame.size = {benchCase.size, benchCase.size};
+    frame.size = benchCase.size;
     // Every frame turns the camera a little, as a user orbiting would, so no frame repeats.
     auto viewForFrame = [&](int index) {
         Camera camera = scene.camera;
         if (auto* orbit = std::get_if<OrbitCamera>(&camera.pose)) orbit->azimuthDeg += 2.0 * index;
-        return resolveView(camera, series.worldBounds(), benchCase.size, benchCase.size);
+        return resolveView(camera, series.worldBounds(), benchCase.size.x, benchCase.size.y);
     };
     auto timeFrames = [&](const FrameOptions& timed) {
         for (int i = 0; i < options.warmup; ++i) renderer.draw(scene, viewForFrame(i), timed);
@@ -127,6 +129,8 @@ BenchResult runCase(Renderer& renderer, const Series& series, const BenchCase& b
     return result;
 }
 
+std::string sizeText(glm::ivec2 size) { return std::to_string(size.x) + "x" + std::to_string(size.y); }
+
 std::string mebibytes(std::size_t bytes) {
     std::ostringstream text;
     text << std::fixed << std::setprecision(1) << double(bytes) / (1024.0 * 1024.0);
@@ -138,15 +142,15 @@ void printTable(const std::vector<BenchResult>& results, const std::string& devi
     const bool styled = results.front().benchCase.scene.find("styled") != std::string::npos;
     std::cout << "scenes: data/scenes/<dataset's prefix>" << (styled ? "styled-" : "") << "*.json\n";
     std::cout << std::left << std::setw(28) << "dataset" << std::setw(21) << "compositor" << std::right
-              << std::setw(6) << "n" << std::setw(7) << "size" << std::setw(11) << "median ms" << std::setw(9)
+              << std::setw(6) << "n" << std::setw(11) << "size" << std::setw(11) << "median ms" << std::setw(9)
               << "max ms" << std::setw(9) << "cpu ms" << std::setw(10) << "rays" << std::setw(13) << "samples" << std::setw(13)
               << "fetches" << std::setw(11) << "tex MiB";
     if (results.front().naiveMedianMs) std::cout << std::setw(11) << "naive ms" << std::setw(10) << "speed-up";
     std::cout << "\n";
     for (const auto& r : results) {
         std::cout << std::left << std::setw(28) << r.benchCase.dataset << std::setw(21)
-                  << toString(r.benchCase.compositor) << std::right << std::setw(6) << r.timeSteps << std::setw(7)
-                  << r.benchCase.size << std::setw(11) << std::fixed << std::setprecision(1) << r.medianMs
+                  << toString(r.benchCase.compositor) << std::right << std::setw(6) << r.timeSteps << std::setw(11)
+                  << sizeText(r.benchCase.size) << std::setw(11) << std::fixed << std::setprecision(1) << r.medianMs
                   << std::setw(9) << r.maxMs << std::setw(9) << r.medianCpuMs << std::setw(10) << r.statistics.rays << std::setw(13)
                   << r.statistics.samples << std::setw(13) << r.statistics.fetches << std::setw(11)
                   << mebibytes(r.seriesTextureBytes + r.frameTextureBytes);
@@ -162,7 +166,7 @@ nlohmann::json toJson(const std::vector<BenchResult>& results, const std::string
     for (const auto& r : results)
         cases.push_back({{"dataset", r.benchCase.dataset}, {"scene", r.benchCase.scene},
                          {"compositor", toString(r.benchCase.compositor)}, {"time_steps", r.timeSteps},
-                         {"width", r.benchCase.size}, {"height", r.benchCase.size},
+                         {"width", r.benchCase.size.x}, {"height", r.benchCase.size.y},
                          {"median_ms", r.medianMs}, {"max_ms", r.maxMs}, {"median_cpu_ms", r.medianCpuMs}, {"rays", r.statistics.rays},
                          {"samples", r.statistics.samples}, {"fetches", r.statistics.fetches},
                          {"series_texture_bytes", r.seriesTextureBytes},
@@ -179,7 +183,7 @@ void runSeries(Renderer& renderer, const Series& series, const BenchDataset& dat
     const std::vector<std::string> storageChanges =
         residencyChanges(series, uploadWithinGpuMemory(renderer, series, options.gpuMemory, DatasetOptions{}));
     for (auto compositor : kBenchCompositors)
-        for (int size : options.sizes) {
+        for (glm::ivec2 size : options.sizes) {
             results.push_back(runCase(renderer, series,
                                       {dataset.folder, benchSceneFor(dataset, compositor, options.styled),
                                        compositor, size},
@@ -239,7 +243,8 @@ Command addBenchCommand(CLI::App& app) {
     auto options = std::make_shared<BenchOptions>();
     CLI::App* command = app.add_subcommand(
         "bench", "Benchmark the bundled scenes: every temporal compositor on each dataset; medians of several frames");
-    command->add_option("--sizes", options->sizes, "Square image sizes to render")->check(CLI::Range(16, 8192));
+    command->add_option("--sizes", options->sizeTexts,
+                        "Image sizes to render: WIDTHxHEIGHT (e.g. 1920x1080), or one number for a square (default: 512 1024)");
     command->add_option("--frames", options->frames, "Timed frames per case (the median is reported)")
         ->check(CLI::Range(1, 1000));
     command->add_option("--warmup", options->warmup, "Untimed frames first (shader compilation, caches)")
@@ -261,6 +266,9 @@ Command addBenchCommand(CLI::App& app) {
     addGlOptions(*command, options->gl);
     return {command, [options] {
         parseGpuMemoryOption(options->gpuMemory);  // a bad size fails before anything is read
+        options->sizes.clear();
+        for (const std::string& text : options->sizeTexts)
+            options->sizes.push_back(parseImageSizeOption(text, "--sizes", 16, 8192));
         return runBench(*options);
     }};
 }

@@ -21,7 +21,7 @@ namespace {
 struct DistributedResult {
     std::string dataset;
     TemporalCompositor compositor = TemporalCompositor::MaxIntensityProjection;
-    int size = 0;
+    glm::ivec2 size{0};
     double frameMs = 0.0;      // median of the whole frame on process 0 (render, composite, background)
     double renderMs = 0.0;     // median over frames of the slowest process's block
     double compositeMs = 0.0;  // median over frames of the slowest process's compositing
@@ -50,9 +50,9 @@ void runDataset(const MpiSession& mpi, Renderer& renderer, const std::string& fo
                                    });
     const double blockBytes = mpi.maximum(double(renderer.seriesTextureBytes()));
     for (Scene scene : scenes)
-        for (int size : options.sizes) {
-            scene.width = size;
-            scene.height = size;
+        for (glm::ivec2 size : options.sizes) {
+            scene.width = size.x;
+            scene.height = size.y;
             std::vector<double> frame, render, composite;
             for (int index = -options.warmup; index < options.frames; ++index) {
                 // Every frame turns the camera a little, as `bench` does, so no frame repeats.
@@ -76,12 +76,12 @@ void runDataset(const MpiSession& mpi, Renderer& renderer, const std::string& fo
 
 void printTable(const std::vector<DistributedResult>& results, int processes, const std::string& device) {
     std::cout << "device: " << device << "\n" << processes << " processes, sort-last (radix-k)\n";
-    std::cout << std::left << std::setw(24) << "dataset" << std::setw(21) << "compositor" << std::right << std::setw(7)
+    std::cout << std::left << std::setw(24) << "dataset" << std::setw(21) << "compositor" << std::right << std::setw(11)
               << "size" << std::setw(11) << "frame ms" << std::setw(11) << "render ms" << std::setw(14)
               << "composite ms" << std::setw(15) << "block tex MiB" << "\n";
     for (const auto& r : results)
         std::cout << std::left << std::setw(24) << r.dataset << std::setw(21) << toString(r.compositor) << std::right
-                  << std::setw(7) << r.size << std::fixed << std::setprecision(1) << std::setw(11) << r.frameMs
+                  << std::setw(11) << (std::to_string(r.size.x) + "x" + std::to_string(r.size.y)) << std::fixed << std::setprecision(1) << std::setw(11) << r.frameMs
                   << std::setw(11) << r.renderMs << std::setw(14) << r.compositeMs << std::setw(15)
                   << r.blockBytes / (1024.0 * 1024.0) << "\n";
 }
@@ -89,7 +89,7 @@ void printTable(const std::vector<DistributedResult>& results, int processes, co
 nlohmann::json toJson(const std::vector<DistributedResult>& results, int processes, const std::string& device) {
     nlohmann::json cases = nlohmann::json::array();
     for (const auto& r : results)
-        cases.push_back({{"dataset", r.dataset}, {"compositor", toString(r.compositor)}, {"size", r.size},
+        cases.push_back({{"dataset", r.dataset}, {"compositor", toString(r.compositor)}, {"width", r.size.x}, {"height", r.size.y},
                          {"frame_median_ms", r.frameMs}, {"render_median_ms", r.renderMs},
                          {"composite_median_ms", r.compositeMs}, {"largest_block_texture_bytes", r.blockBytes}});
     return {{"device", device}, {"processes", processes}, {"cases", cases}};

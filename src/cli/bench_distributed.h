@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
+
 #include "commands.h"
 #include "gpu_memory_option.h"
 
@@ -15,7 +17,7 @@ namespace tstyles::cli {
 
 struct DistributedBenchOptions {
     std::vector<std::string> datasets;
-    std::vector<int> sizes;
+    std::vector<glm::ivec2> sizes;
     int frames = 7;
     int warmup = 2;
     std::optional<std::filesystem::path> json;

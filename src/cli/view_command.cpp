@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "commands.h"
+#include "image_size_text.h"
 #include "gpu_memory_option.h"
 #include "tstyles/core/errors.h"
 #include "viewer/viewer.h"
@@ -20,17 +21,11 @@ struct ViewOptions {
 };
 
 glm::ivec2 parseWindowSize(const std::string& text) {
-    // Two numbers of 2 to 5 digits joined by 'x'.
-    const auto x = text.find('x');
-    const auto digits = [](const std::string& part) {
-        return part.size() >= 2 && part.size() <= 5 && part.find_first_not_of("0123456789") == std::string::npos;
-    };
-    if (x == std::string::npos || !digits(text.substr(0, x)) || !digits(text.substr(x + 1)))
-        throwInputError("", "--size", "expected WIDTHxHEIGHT such as 1280x800, got \"" + text + "\"");
-    const glm::ivec2 size{std::stoi(text.substr(0, x)), std::stoi(text.substr(x + 1))};
-    if (size.x < 320 || size.y < 240 || size.x > 16384 || size.y > 16384)
+    const std::optional<glm::ivec2> size = parseWidthByHeight(text);
+    if (!size) throwInputError("", "--size", "expected WIDTHxHEIGHT such as 1280x800, got \"" + text + "\"");
+    if (size->x < 320 || size->y < 240 || size->x > 16384 || size->y > 16384)
         throwInputError("", "--size", "the window must be between 320x240 and 16384x16384, got \"" + text + "\"");
-    return size;
+    return *size;
 }
 
 int runView(const ViewOptions& options) {

@@ -18,7 +18,7 @@ case_matrix_skips_missing_dataset() {
     run_tstyles -- bench --sizes 24 --frames 1 --warmup 0 --datasets superellipsoid no-such-dataset
     expect_exit 0
     expect_stderr_contains "note: skipping dataset no-such-dataset"
-    expect_rows superellipsoid 10 24
+    expect_rows superellipsoid 10 24x24
     grep -q "no-such-dataset" "$OUT_FILE" && fail "the missing dataset has a row"
     return 0
 }
@@ -27,7 +27,7 @@ case_matrix_skips_missing_dataset() {
 case_hurricane_rows() {
     run_tstyles -- bench --sizes 24 --frames 1 --warmup 0 --datasets hurricane --json "$SCRATCH/hurricane.json"
     expect_exit 0
-    expect_rows hurricane 10 24
+    expect_rows hurricane 10 24x24
     grep -q '"scene": "figure5-focus-step5"' "$SCRATCH/hurricane.json" || fail "MIP and average not on Figure 5's scene"
     grep -q '"scene": "figure6-left-max-density-change"' "$SCRATCH/hurricane.json" ||
         fail "max density change not on Figure 6's scene"
@@ -42,8 +42,8 @@ case_no_dataset_there() {
 case_scaling_json() {
     run_tstyles -- bench --scaling 12 --sizes 24 --frames 1 --warmup 0 --json "$SCRATCH/scaling.json"
     expect_exit 0
-    expect_rows superellipsoid-x12 12 24
-    expect_rows superellipsoid-aligned-x12 12 24
+    expect_rows superellipsoid-x12 12 24x24
+    expect_rows superellipsoid-aligned-x12 12 24x24
     [ -s "$SCRATCH/scaling.json" ] || fail "no JSON written"
     local cases
     cases=$(grep -c '"time_steps": 12' "$SCRATCH/scaling.json")
@@ -56,7 +56,7 @@ case_max_gpu_memory() {
     run_tstyles -- bench --sizes 24 --frames 1 --warmup 0 --datasets superellipsoid --max-gpu-memory 2M \
         --json "$SCRATCH/budget.json"
     expect_exit 0
-    expect_rows superellipsoid 10 24
+    expect_rows superellipsoid 10 24x24
     expect_stderr_contains "GPU memory budget 2.0 MiB (--max-gpu-memory)"
     local changed
     changed=$(grep -c '"resolution 1/' "$SCRATCH/budget.json")
@@ -64,6 +64,27 @@ case_max_gpu_memory() {
     run_tstyles -- bench --sizes 24 --frames 1 --warmup 0 --datasets superellipsoid --max-gpu-memory lots
     expect_exit 2
     expect_stderr_contains "--max-gpu-memory"
+}
+
+# A size may be WIDTHxHEIGHT (1920x1080 for the GPU figures) beside a plain number for a square;
+# the JSON gives each case's width and height; a size outside 16..8192 or of another form is refused.
+case_wide_size() {
+    run_tstyles -- bench --sizes 48x24 32 --frames 1 --warmup 0 --datasets superellipsoid --json "$SCRATCH/wide.json"
+    expect_exit 0
+    expect_rows superellipsoid 10 48x24
+    expect_rows superellipsoid 10 32x32
+    local wide high
+    wide=$(grep -cE '"width": 48,?$' "$SCRATCH/wide.json")
+    high=$(grep -cE '"height": 24,?$' "$SCRATCH/wide.json")
+    [ "$wide" -eq 3 ] && [ "$high" -eq 3 ] ||
+        fail "expected 3 cases 48 wide and 24 high in the JSON, found $wide and $high"
+    run_tstyles -- bench --sizes 48x9000 --frames 1 --warmup 0 --datasets superellipsoid
+    expect_exit 2
+    expect_stderr_contains "--sizes"
+    expect_stderr_contains "between 16 and 8192"
+    run_tstyles -- bench --sizes 48by24 --frames 1 --warmup 0 --datasets superellipsoid
+    expect_exit 2
+    expect_stderr_contains "expected WIDTHxHEIGHT"
 }
 
 run_case
