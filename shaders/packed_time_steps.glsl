@@ -36,10 +36,10 @@ struct AlignedSample {
 AlignedSample alignedSampleAt(float t) {
     vec3 gridLocal = gridLocalAtSample(0, t);
 #if ALL_AFFINE
-    vec3 voxel = clamp(gridLocal, vec3(0.0), activeVoxelUpper[0]);
+    vec3 voxel = clamp(gridLocal, vec3(0.0), slotVoxelUpper(0));
     return AlignedSample(voxel, voxel);
 #else
-    vec3 voxel = clamp(applyUnevenAxes(activeSteps[0], gridLocal), vec3(0.0), activeVoxelUpper[0]);
+    vec3 voxel = clamp(applyUnevenAxes(activeSteps[0], gridLocal), vec3(0.0), slotVoxelUpper(0));
     return AlignedSample(gridLocal, voxel);
 #endif
 }
@@ -72,5 +72,5 @@ float packedEmptySpaceUntil(AlignedSample aligned, float t) {
     return -1.0;
 #endif
     if (texelFetch(packedOccupancy, ivec3(brickOf(0, aligned.voxel)), 0).r > 0.5) return -1.0;
-    return brickExit(0, aligned.voxel, aligned.gridLocal, t, activeVoxelDirection[0]);
+    return brickExit(0, aligned.voxel, aligned.gridLocal, t, slotVoxelDirection(0));
 }

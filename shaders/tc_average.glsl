@@ -1,15 +1,17 @@
 // Temporal average (paper 5.3): every time-step with some opacity is styled on its own (its STF and
 // its index TSTF); opacities are averaged, and colours are averaged weighted by opacity, so a faint
 // time-step does not wash out the colour of an opaque one.
-// The time-steps are styled in the finish, not as the walk meets them: llvmpipe (like a GPU's warp)
-// runs a branch's body for all pixels it shades together once any of them takes it, so styling in
-// the walk ran once for every time-step that any of 8 pixels saw, and in the finish it runs as
-// often as the pixel with the most visible time-steps needs (docs/performance.md).
+// With PER_RAY_CACHES (llvmpipe) the time-steps are styled in the finish, not as the walk meets
+// them: llvmpipe runs a branch's body for all pixels it shades together once any of them takes it,
+// so styling in the walk ran once for every time-step that any of 8 pixels saw, and in the finish
+// it runs as often as the pixel with the most visible time-steps needs. On a GPU the arrays that
+// this takes cost more than the styling saves (docs/performance.md, "On a GPU").
 #include "temporal_sample.glsl"
 
 const int COMPOSITOR_READS = READS_COMPOSITED;
 const bool COMPOSITOR_IGNORES_TRANSPARENT = true;
 
+#if PER_RAY_CACHES
 // The visible time-steps of the sample, in the order the walk met them (so the sums add up in the
 // same order as when each was styled at once).
 int averageStep[MAX_TIME_STEPS];
@@ -47,3 +49,29 @@ TemporalCharacteristic compositorFinish(CompositorState state, vec3 position, in
     return compositedCharacteristic(vec4(premultipliedSum.rgb / premultipliedSum.a,
                                          premultipliedSum.a / float(nonTransparent)));
 }
+#else
+// On a GPU each visible time-step is styled as the walk meets it, into running sums: the arrays of
+// the finish would live in slow per-thread memory there.
+struct CompositorState {
+    vec4 premultipliedSum;
+    int nonTransparent;
+};
+
+CompositorState compositorInit() {
+    return CompositorState(vec4(0.0), 0);
+}
+
+void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 position, inout int fetches) {
+    if (s.stf.a <= 0.0) return;
+    vec4 styled = styledTimeStep(s, position, fetches);
+    if (styled.a <= 0.0) return;
+    state.premultipliedSum += vec4(styled.rgb * styled.a, styled.a);
+    state.nonTransparent += 1;
+}
+
+TemporalCharacteristic compositorFinish(CompositorState state, vec3 position, inout int fetches) {
+    if (state.nonTransparent == 0) return transparentCharacteristic();
+    return compositedCharacteristic(vec4(state.premultipliedSum.rgb / state.premultipliedSum.a,
+                                         state.premultipliedSum.a / float(state.nonTransparent)));
+}
+#endif

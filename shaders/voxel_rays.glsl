@@ -6,6 +6,7 @@
 #include "ray.glsl"
 #include "overlap_extraction.glsl"
 #include "volume_sampling.glsl"
+#if PER_RAY_CACHES
 vec3 activeVoxelOrigin[MAX_TIME_STEPS];     // voxel coordinates at t = 0 (affine time-steps)
 vec3 activeVoxelDirection[MAX_TIME_STEPS];  // voxel units per unit of t (affine time-steps)
 vec3 activeVoxelUpper[MAX_TIME_STEPS];      // dims - 1: where the clamp to the grid ends
@@ -16,9 +17,15 @@ bool activeBeam[MAX_TIME_STEPS];
 EvenBeamFan activeBeamFan[MAX_TIME_STEPS];
 #endif
 #endif
+#else
+// Without the caches (a GPU: arrays indexed at run time live in slow per-thread memory there, where
+// a time-step's record in the storage buffer is read by a whole warp at once), only the ray.
+Ray voxelRay;
+#endif
 
-// After extractVolumeOverlap: fills the arrays above for the ray's list of time-steps.
+// After extractVolumeOverlap: fills the caches above for the ray's list of time-steps.
 void prepareVoxelRays(Ray ray) {
+#if PER_RAY_CACHES
     for (int i = 0; i < activeCount; ++i) {
         int step = activeSteps[i];
         mat4 worldToVoxel = timeSteps.steps[step].worldToVoxel;
@@ -33,7 +40,55 @@ void prepareVoxelRays(Ray ray) {
 #endif
 #endif
     }
+#else
+    voxelRay = ray;
+#endif
 }
+
+// What the caches hold for the time-step in a slot of the ray's list, cached or worked out again.
+vec3 slotVoxelDirection(int slot) {
+#if PER_RAY_CACHES
+    return activeVoxelDirection[slot];
+#else
+    return mat3(timeSteps.steps[activeSteps[slot]].worldToVoxel) * voxelRay.direction;
+#endif
+}
+
+vec3 slotVoxelUpper(int slot) {
+#if PER_RAY_CACHES
+    return activeVoxelUpper[slot];
+#else
+    return timeSteps.steps[activeSteps[slot]].dims.xyz - 1.0;
+#endif
+}
+
+bool slotAffine(int slot) {
+#if PER_RAY_CACHES
+    return activeAffine[slot];
+#else
+    return timeSteps.steps[activeSteps[slot]].flags.x != 0;
+#endif
+}
+
+#if BEAM_GRIDS
+bool slotBeam(int slot) {
+#if PER_RAY_CACHES
+    return activeBeam[slot];
+#else
+    return isBeamGrid(activeSteps[slot]);
+#endif
+}
+
+#if EVEN_BEAMS
+EvenBeamFan slotBeamFan(int slot) {
+#if PER_RAY_CACHES
+    return activeBeamFan[slot];
+#else
+    return evenBeamFanOf(activeSteps[slot]);
+#endif
+}
+#endif
+#endif
 
 // voxelCoordinate(step, position) for the sample at ray parameter t, `slot` being the time-step's
 // place in the ray's list.
@@ -42,18 +97,22 @@ void prepareVoxelRays(Ray ray) {
 // The sample in worldToVoxel's space along the ray of an affine or rectilinear time-step (before
 // the node lookup of uneven axes); along even axes, the unclamped voxel position.
 vec3 gridLocalAtSample(int slot, float t) {
+#if PER_RAY_CACHES
     return activeVoxelOrigin[slot] + t * activeVoxelDirection[slot];
+#else
+    return (timeSteps.steps[activeSteps[slot]].worldToVoxel * vec4(voxelRay.origin + t * voxelRay.direction, 1.0)).xyz;
+#endif
 }
 
 vec3 voxelAtSample(int slot, int step, vec3 position, float t) {
     vec3 voxel = gridLocalAtSample(slot, t);
 #if !ALL_AFFINE
-    if (!activeAffine[slot]) {
+    if (!slotAffine(slot)) {
         if (isStructured(step) || isBeamGrid(step)) return voxelCoordinate(step, position);
         voxel = applyUnevenAxes(step, voxel);
     }
 #endif
-    return clamp(voxel, vec3(0.0), activeVoxelUpper[slot]);
+    return clamp(voxel, vec3(0.0), slotVoxelUpper(slot));
 }
 
 // The sample's clamped voxel position in the slot's time-step and, in w, whether the sample lies in
@@ -61,13 +120,13 @@ vec3 voxelAtSample(int slot, int step, vec3 position, float t) {
 // gives both, where insideGridShape and voxelAtSample would each map the world position again.
 vec4 voxelInShapeAtSample(int slot, int step, vec3 position, float t) {
 #if BEAM_GRIDS
-    if (activeBeam[slot]) {
+    if (slotBeam(slot)) {
 #if EVEN_BEAMS
-        vec4 beam = evenBeamVoxel(activeBeamFan[slot], activeVoxelUpper[slot], gridLocalAtSample(slot, t));
+        vec4 beam = evenBeamVoxel(slotBeamFan(slot), slotVoxelUpper(slot), gridLocalAtSample(slot, t));
 #else
         vec4 beam = beamVoxel(step, gridLocalAtSample(slot, t));
 #endif
-        return vec4(clamp(beam.xyz, vec3(0.0), activeVoxelUpper[slot]), beam.w);
+        return vec4(clamp(beam.xyz, vec3(0.0), slotVoxelUpper(slot)), beam.w);
     }
 #endif
     return vec4(voxelAtSample(slot, step, position, t), insideGridShape(step, position) ? 1.0 : 0.0);

@@ -55,10 +55,10 @@ float emptySpaceUntil(SamplePoint point) {
 #if ALL_AFFINE
         vec3 gridLocal = voxel;
 #else
-        vec3 gridLocal = activeAffine[i] ? voxel : gridLocalAtSample(i, point.t);
+        vec3 gridLocal = slotAffine(i) ? voxel : gridLocalAtSample(i, point.t);
 #endif
         emptyUntil = min(emptyUntil,
-                         emptyBrickEnd(step, voxel, gridLocal, point.t, point.position, activeVoxelDirection[i]));
+                         emptyBrickEnd(step, voxel, gridLocal, point.t, point.position, slotVoxelDirection(i)));
     }
     return anyStep ? emptyUntil : -1.0;
 }

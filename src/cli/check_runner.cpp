@@ -13,6 +13,7 @@
 
 #include "check_case.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/gl/cpu_rasterizer.h"
 
 namespace tstyles::cli {
 namespace {
@@ -104,9 +105,9 @@ Parallelism chooseParallelism(std::optional<int> requested, const std::string& g
                                                   : " (--jobs " + std::to_string(jobs) + ")";
         return {jobs, casesAtOnce(jobs) + why};
     }
-    for (const char* software : {"llvmpipe", "softpipe"})
-        if (glRenderer.find(software) != std::string::npos)
-            return {1, casesAtOnce(1) + ": " + software + " already uses every core (--jobs N overrides)"};
+    if (isCpuRasterizer(glRenderer))
+        return {1, casesAtOnce(1) + ": " + glRenderer.substr(0, glRenderer.find(' ')) +
+                       " already uses every core (--jobs N overrides)"};
     const int jobs = std::min({4, int(std::max(hardwareThreads, 1u)), cases});
     return {jobs, casesAtOnce(jobs) + " (auto: at most 4, one per hardware thread" +
                       (jobs == cases && cases < 4 ? ", one per case)" : ")")};

@@ -114,6 +114,7 @@ ShaderDefines RaycastVariant::defines() const {
         {"COLLECT_STATISTICS", flag(collectStatistics)},
         {"SKIP_EMPTY_BRICKS", flag(skipEmptyBricks)},
         {"CUSTOM_READS_INDEX", flag(customReads == CompositorReads::IndexTstf)},
+        {"PER_RAY_CACHES", flag(perRayCaches)},
     };
 }
 
@@ -162,6 +163,7 @@ std::vector<RaycastVariant> requestableRaycastVariants() {
                     // both sides of those switches compile.
                     variant.collectStatistics = !styled;
                     variant.skipEmptyBricks = styled;
+                    variant.perRayCaches = !styled;
                     if (walk == TimeStepWalk::PackedGroups) {
                         // Packed series have no masks; their validities come in three kinds.
                         for (PackedValidity validity :

@@ -5,6 +5,8 @@
 #include <stdexcept>
 
 #include "tstyles/data/coarser_series.h"
+#include "tstyles/gl/cpu_rasterizer.h"
+#include "tstyles/gl/gl_loader.h"
 #include "tstyles/render/covered_pixels.h"
 #include "tstyles/scene/temporal_compositors.h"
 
@@ -26,7 +28,10 @@ double styleFootprint(const View& view, int imageHeight, double finestSpacing) {
 }  // namespace
 
 Renderer::Renderer(ShaderLibrary shaders)
-    : shaders_(std::move(shaders)), entryExitBuffers_(shaders_), raycaster_(shaders_) {}
+    : shaders_(std::move(shaders)),
+      cpuRasterizer_(isCpuRasterizer(currentGlRenderer())),
+      entryExitBuffers_(shaders_),
+      raycaster_(shaders_) {}
 
 void Renderer::setSeries(const Series& series, const std::optional<WholeSeries>& whole) {
     gpuSeries_.reset();  // free the old atlas before allocating the new one
@@ -123,6 +128,7 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
         variant.skipEmptyBricks = skipsEmptyBricks(gpuSeries_->emptyPackedBrickFraction());
     }
     if (options.emptyBrickTest) variant.skipEmptyBricks = *options.emptyBrickTest;
+    variant.perRayCaches = options.perRayCaches.value_or(cpuRasterizer_);
     parameters.styleTracks = styleTextures_.trackRanges();
     parameters.worldToView = glm::mat3(view.viewMatrix);
     parameters.styleFootprint = float(styleFootprint(view, options.size.y, finestSpacing_));

@@ -82,5 +82,35 @@ INSTANTIATE_TEST_SUITE_P(BenchmarkScenes, EmptyBrickTestEquivalence,
                                            BundledScene{"figure6-centre-index-tstf", "sonar"}),
                          [](const auto& parameter) { return testNameOf(parameter.param); });
 
+// The per-ray caches (voxel rays, the temporal average's deferred styling) are on by default on a
+// CPU rasterizer and off on a GPU: both give the same picture, on every kind of walk and grid (ray
+// list on boxes, on the hurricane's uneven levels and on the sonar's beam fans, the packed walk of
+// the aligned series, the curvilinear warped box) and for the average styled both ways. Without
+// the caches a sample's voxel position is one matrix product instead of origin + t * direction:
+// float rounding alone tells them apart.
+class PerRayCachesEquivalence : public ::testing::TestWithParam<BundledScene> {};
+
+TEST_P(PerRayCachesEquivalence, WithAndWithoutTheCachesGiveTheSameImage) {
+    const BundledScene& bundled = GetParam();
+    if (!std::filesystem::exists(manifestOf(bundled))) GTEST_SKIP() << "dataset " << bundled.dataset << " is not there";
+    FrameOptions cached;
+    cached.perRayCaches = true;
+    FrameOptions uncached;
+    uncached.perRayCaches = false;
+    expectSameImage(bundled, kSize, {"per-ray caches", cached}, {"no per-ray caches", uncached},
+                    {kPixelThreshold, kMaxFailingFraction, kMaxMeanDelta});
+}
+
+INSTANTIATE_TEST_SUITE_P(BenchmarkScenes, PerRayCachesEquivalence,
+                         ::testing::Values(BundledScene{"figure4-temporal-average", "superellipsoid"},
+                                           BundledScene{"figure4-styled-temporal-average", "superellipsoid"},
+                                           BundledScene{"figure4-styled-temporal-average", "superellipsoid-aligned"},
+                                           BundledScene{"figure4-max-density-change", "superellipsoid-aligned"},
+                                           BundledScene{"figure5-focus-step5", "hurricane"},
+                                           BundledScene{"figure6-centre-index-tstf", "sonar"},
+                                           BundledScene{"figure6-right-max-density-change", "sonar"},
+                                           BundledScene{"warped-box-styled", "warped-box"}),
+                         [](const auto& parameter) { return testNameOf(parameter.param); });
+
 }  // namespace
 }  // namespace tstyles::testing

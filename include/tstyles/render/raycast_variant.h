@@ -44,6 +44,10 @@ struct RaycastVariant {
     // Test at each sample whether every time-step there is in an empty brick (emptySpaceUntil):
     // worth its cost only where the STF leaves some bricks empty (skipsEmptyBricks).
     bool skipEmptyBricks = true;
+    // Per-ray arrays of the time-steps' voxel rays and the temporal average's deferred styling:
+    // they pay on a CPU rasterizer, and cost on a GPU, where arrays indexed at run time live in slow
+    // per-thread memory (Renderer picks by the driver).
+    bool perRayCaches = true;
 
     auto operator<=>(const RaycastVariant&) const = default;
 

@@ -36,6 +36,9 @@ struct FrameOptions {
     // The per-sample empty-brick test: by default compiled in where the STF leaves enough bricks
     // empty for it to pay (skipsEmptyBricks); true or false forces it, for comparison. Same image.
     std::optional<bool> emptyBrickTest;
+    // Per-ray arrays of time-step data in the raycaster (RaycastVariant::perRayCaches): by default
+    // on a CPU rasterizer and off on a GPU; true or false forces them, for comparison. Same image.
+    std::optional<bool> perRayCaches;
     // Renders only the parts of the rays inside this world box (one process's block of a
     // distributed render, docs/scaling.md); none: whole rays.
     std::optional<Bounds> clipBox;
@@ -95,6 +98,7 @@ private:
     Bounds worldBounds_;  // of every time-step: rays outside its projection meet nothing
     Bounds latticeBounds_;  // of the whole series: where each ray's samples are anchored
     bool occupancyStale_ = true;  // a new series needs its brick visibility computed
+    bool cpuRasterizer_;          // the context renders on the CPU (llvmpipe): see perRayCaches
     TransferTables transferTables_;
     StyleTextures styleTextures_;
     EntryExitBuffers entryExitBuffers_;
