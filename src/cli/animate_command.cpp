@@ -142,6 +142,7 @@ int runDistributedAnimate(const AnimateOptions& options) {
         context = createHeadlessContext(parseBackend(options.gl.backend), glDebugOutputRequested());
         renderer.emplace(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
     });
+    const std::string reading = readingText(*source, plan->fitted.series);
     DistributedRendering rendering = startDistributedRendering(
         mpi, *renderer, std::move(plan->fitted), *source, options.dataset,
         [&](const Series& block, const WholeSeries& whole) {
@@ -179,7 +180,7 @@ int runDistributedAnimate(const AnimateOptions& options) {
     progress->update(int(plan->scenes.size()));
     progress->finish();
     reportWritten(options, *sink, plan->movie, milliseconds,
-                  std::to_string(mpi.processCount()) + " processes, sort-last; " + readingText(*source) + "; " +
+                  std::to_string(mpi.processCount()) + " processes, sort-last; " + reading + "; " +
                       context->description());
     return kExitSuccess;
 }

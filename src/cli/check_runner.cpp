@@ -105,9 +105,8 @@ Parallelism chooseParallelism(std::optional<int> requested, const std::string& g
                                                   : " (--jobs " + std::to_string(jobs) + ")";
         return {jobs, casesAtOnce(jobs) + why};
     }
-    if (isCpuRasterizer(glRenderer))
-        return {1, casesAtOnce(1) + ": " + glRenderer.substr(0, glRenderer.find(' ')) +
-                       " already uses every core (--jobs N overrides)"};
+    if (const auto software = cpuRasterizerName(glRenderer))
+        return {1, casesAtOnce(1) + ": " + std::string(*software) + " already uses every core (--jobs N overrides)"};
     const int jobs = std::min({4, int(std::max(hardwareThreads, 1u)), cases});
     return {jobs, casesAtOnce(jobs) + " (auto: at most 4, one per hardware thread" +
                       (jobs == cases && cases < 4 ? ", one per case)" : ")")};

@@ -1,6 +1,8 @@
 // Block reading or whole reading for the distributed commands (distributed_source.h).
 #include "distributed_source.h"
 
+#include <algorithm>
+
 #include "tstyles/data/manifest.h"
 #include "tstyles/data/series_opener.h"
 #include "tstyles/distributed/block_reading.h"
@@ -57,9 +59,17 @@ DistributedRendering startDistributedRendering(const MpiSession& mpi, Renderer& 
         [&](const Bounds& box) { return readManifestBlock(manifest, options, displayOutline, frame, box); }, upload);
 }
 
-std::string readingText(const DistributedSource& source) {
-    return source.blockManifest ? "each process read only its block"
-                                : "every process read the whole series: " + source.wholeReason;
+std::string readingText(const DistributedSource& source, const Series& series) {
+    std::string text = source.blockManifest ? "each process read only its block"
+                                            : "every process read the whole series: " + source.wholeReason;
+    const auto whole = std::count_if(series.steps.begin(), series.steps.end(), [](const TimeStep& step) {
+        return !std::holds_alternative<RectilinearGrid>(step.grid);
+    });
+    if (whole > 0)
+        text += "; " + std::to_string(whole) + " of its " + std::to_string(series.size()) +
+                " time-steps are beam or structured grids, which every process keeps whole (their samples "
+                "still split)";
+    return text;
 }
 
 }  // namespace tstyles::cli

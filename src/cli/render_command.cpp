@@ -133,6 +133,7 @@ int runDistributedRender(const RenderOptions& options) {
         renderer.emplace(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
     });
     const std::size_t timeSteps = fitted->series.size();
+    const std::string reading = readingText(*source, fitted->series);
     DistributedRendering rendering = startDistributedRendering(
         mpi, *renderer, std::move(*fitted), *source, options.dataset, [&](const Series& block, const WholeSeries& whole) {
             uploadWithinGpuMemory(*renderer, block, options.gpuMemory, options.dataset, whole);
@@ -152,7 +153,7 @@ int runDistributedRender(const RenderOptions& options) {
               << " processes: render " << renderMs << " ms incl. shader compilation, composite " << compositeMs
               << " ms (slowest process); largest block " << blockVoxels << " voxels, " << blockBytes / (1024.0 * 1024.0)
               << " MiB of textures, peak memory " << peakBytes / (1024.0 * 1024.0) << " MiB (largest process); "
-              << readingText(*source) << "; " << context->description() << ")\n";
+              << reading << "; " << context->description() << ")\n";
     return kExitSuccess;
 }
 

@@ -73,14 +73,8 @@ struct KeptNodes {
     RectilinearGrid grid;
 };
 
-KeptNodes keptNodes(const TimeStep& step, std::size_t index, const std::filesystem::path& source, const Bounds& box,
-                    int ghost) {
-    const RectilinearGrid* grid = std::get_if<RectilinearGrid>(&step.grid);
-    if (!grid)
-        throwInputError(source, "time-step " + std::to_string(index),
-                        "is a " + gridTypeName(step.grid) +
-                            " grid; distributed rendering splits rectilinear grids only (render it without "
-                            "--distributed)");
+KeptNodes keptNodes(const TimeStep& step, const Bounds& box, int ghost) {
+    const RectilinearGrid* grid = &step.rectilinear();
     const Bounds local = localBounds(step.placement, box);
     KeptNodes kept;
     kept.grid.spacing = grid->spacing;
@@ -104,14 +98,14 @@ KeptNodes keptNodes(const TimeStep& step, std::size_t index, const std::filesyst
 
 }  // namespace
 
-std::size_t croppedVoxelCount(const TimeStep& step, std::size_t index, const std::filesystem::path& source,
-                              const Bounds& box, int ghostNodes) {
-    return keptNodes(step, index, source, box, ghostNodes).grid.voxelCount();
+std::size_t croppedVoxelCount(const TimeStep& step, const Bounds& box, int ghostNodes) {
+    if (!std::holds_alternative<RectilinearGrid>(step.grid)) return gridVoxelCount(step.grid);
+    return keptNodes(step, box, ghostNodes).grid.voxelCount();
 }
 
-void cropTimeStepToBox(TimeStep& step, std::size_t index, const std::filesystem::path& source, const Bounds& box,
-                       int ghost) {
-    KeptNodes kept = keptNodes(step, index, source, box, ghost);
+void cropTimeStepToBox(TimeStep& step, const Bounds& box, int ghost) {
+    if (!std::holds_alternative<RectilinearGrid>(step.grid)) return;  // kept whole (series_crop.h)
+    KeptNodes kept = keptNodes(step, box, ghost);
     const RectilinearGrid& grid = step.rectilinear();
     const glm::ivec3 first = kept.first;
     const glm::ivec3 count = kept.count;
@@ -125,7 +119,7 @@ void cropTimeStepToBox(TimeStep& step, std::size_t index, const std::filesystem:
 
 Series cropSeriesToBox(Series series, const Bounds& box, int ghostNodes) {
     for (std::size_t index = 0; index < series.steps.size(); ++index)
-        cropTimeStepToBox(series.steps[index], index, series.manifestPath, box, ghostNodes);
+        cropTimeStepToBox(series.steps[index], box, ghostNodes);
     return series;
 }
 

@@ -10,10 +10,8 @@ namespace tstyles {
 Series readManifestBlock(const std::filesystem::path& manifest, const ReadOptions& options,
                          const Series& displayOutline, const DisplayFrame& frame, const Bounds& box) {
     ManifestLimits limits{options.maxMemoryBytes, bytesPerDensity(options.precision), {}, 0};
-    for (std::size_t index = 0; index < displayOutline.steps.size(); ++index)
-        limits.keptVoxels +=
-            croppedVoxelCount(displayOutline.steps[index], index, displayOutline.manifestPath, box, kBlockGhostNodes);
-    limits.afterStepRead = [&](std::size_t index, TimeStep& step) {
+    for (const TimeStep& step : displayOutline.steps) limits.keptVoxels += croppedVoxelCount(step, box, kBlockGhostNodes);
+    limits.afterStepRead = [&](std::size_t, TimeStep& step) {
         // The display frame moves and scales a time-step's grid and leaves its values alone, so a
         // time-step takes it alone as it would with the whole series.
         Series alone;
@@ -21,7 +19,7 @@ Series readManifestBlock(const std::filesystem::path& manifest, const ReadOption
         alone.steps.push_back(std::move(step));
         alone = applyDisplayFrame(std::move(alone), frame);
         step = std::move(alone.steps.front());
-        cropTimeStepToBox(step, index, displayOutline.manifestPath, box, kBlockGhostNodes);
+        cropTimeStepToBox(step, box, kBlockGhostNodes);
     };
     Series block = loadSeries(manifest, limits);
     block.precision = options.precision;

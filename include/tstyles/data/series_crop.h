@@ -14,18 +14,18 @@ namespace tstyles {
 // inside `box` read exactly what they read in the whole series. A time-step that misses the box
 // keeps two nodes per axis at its edge nearest to it (it stays in the series: time-step indices
 // mean something to the index TSTF and the compositors). Values, masks, times and metadata carry
-// over. Rectilinear grids only: a beam or structured time-step is an InputError naming it. Takes
-// the series by value so that a caller who moves it in never holds the whole and the block at once.
+// over. A beam (sonar) or structured time-step is kept whole: its index axes do not run along the
+// world's, so a world box does not cut it; the renderer's clip box still gives each process only
+// its block's samples of it, so the work splits but its memory does not. Takes the series by value
+// so that a caller who moves it in never holds the whole and the block at once.
 Series cropSeriesToBox(Series series, const Bounds& box, int ghostNodes);
 
-// The same for one time-step (`index` of the series read from `source`, for the message), in
-// place: what a reader that cuts each time-step as it reads it calls (loadSeriesBlock).
-void cropTimeStepToBox(TimeStep& step, std::size_t index, const std::filesystem::path& source, const Bounds& box,
-                       int ghostNodes);
+// The same for one time-step, in place: what a reader that cuts each time-step as it reads it
+// calls (loadSeriesBlock).
+void cropTimeStepToBox(TimeStep& step, const Bounds& box, int ghostNodes);
 
 // The voxels cropTimeStepToBox keeps of `step`, from its grid and placement alone (no values
 // needed): what a reader that cuts time-steps as it reads them checks against the memory cap.
-std::size_t croppedVoxelCount(const TimeStep& step, std::size_t index, const std::filesystem::path& source,
-                              const Bounds& box, int ghostNodes);
+std::size_t croppedVoxelCount(const TimeStep& step, const Bounds& box, int ghostNodes);
 
 }  // namespace tstyles

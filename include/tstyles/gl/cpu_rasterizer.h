@@ -3,11 +3,15 @@
 // contexts at once only share the same cores; textures live in host memory).
 #pragma once
 
+#include <optional>
 #include <string_view>
 
 namespace tstyles {
 
-// `glRenderer`: the GL_RENDERER string, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
+// The CPU rasterizer that `glRenderer` (the GL_RENDERER string, or a text that holds it, e.g.
+// "llvmpipe (LLVM 15.0.6, 256 bits)") names: "llvmpipe" or "softpipe"; none for a GPU.
+std::optional<std::string_view> cpuRasterizerName(std::string_view glRenderer);
+
 bool isCpuRasterizer(std::string_view glRenderer);
 
 }  // namespace tstyles
