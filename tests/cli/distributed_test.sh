@@ -20,6 +20,14 @@ run_mpi() {
 
 SCENE="$SOURCE_DIR/data/scenes/figure4-temporal-mip.json"
 
+# expect_same_as_one_process ONE OTHER: the images within the thresholds of
+# tests/distributed/distributed_equivalence.cpp, which says why they are not 0.
+expect_same_as_one_process() {
+    run_tstyles -- compare "$1" "$2" --max-difference 64 --pixel-threshold 3 --max-failing-share 0.02 \
+        --max-mean 0.03 --min-ssim 0.999
+    expect_exit 0
+}
+
 case_four_processes_match_one() {
     run_tstyles -- render "$SCENE" -o "$SCRATCH/one.png" --width 192 --height 192
     expect_exit 0
@@ -28,10 +36,7 @@ case_four_processes_match_one() {
     expect_stdout_contains "4 processes: render"
     expect_stdout_contains "each process read only its block"
     expect_image "$SCRATCH/four.png" 192 192
-    # The thresholds of tests/distributed/distributed_equivalence.cpp, which says why they are not 0.
-    run_tstyles -- compare "$SCRATCH/one.png" "$SCRATCH/four.png" --max-difference 64 --pixel-threshold 3 \
-        --max-failing-share 0.02 --max-mean 0.03 --min-ssim 0.999
-    expect_exit 0
+    expect_same_as_one_process "$SCRATCH/one.png" "$SCRATCH/four.png"
 }
 
 # Framing the visible data needs the values before the blocks are known: every process reads the
@@ -45,9 +50,7 @@ case_whole_series_where_the_scene_needs_values() {
     run_mpi 2 render "$SCRATCH/visible.json" -o "$SCRATCH/two.png" --width 128 --height 128 --distributed
     expect_exit 0
     expect_stdout_contains "every process read the whole series: the camera frames the visible data, which the values decide (\"frame\": \"series\" reads blocks)"
-    run_tstyles -- compare "$SCRATCH/one.png" "$SCRATCH/two.png" --max-difference 64 --pixel-threshold 3 \
-        --max-failing-share 0.02 --max-mean 0.03 --min-ssim 0.999
-    expect_exit 0
+    expect_same_as_one_process "$SCRATCH/one.png" "$SCRATCH/two.png"
 }
 
 # The hurricane takes 23.4 MB under the memory check (4 bytes a voxel in memory, 2 on the GPU), so
@@ -65,9 +68,7 @@ case_blocks_fit_where_the_whole_series_does_not() {
     expect_image "$SCRATCH/four.png" 64 64
     run_tstyles -- render "$hurricane" -o "$SCRATCH/unlimited.png" --width 64 --height 64
     expect_exit 0
-    run_tstyles -- compare "$SCRATCH/unlimited.png" "$SCRATCH/four.png" --max-difference 64 --pixel-threshold 3 \
-        --max-failing-share 0.02 --max-mean 0.03 --min-ssim 0.999
-    expect_exit 0
+    expect_same_as_one_process "$SCRATCH/unlimited.png" "$SCRATCH/four.png"
 }
 
 case_without_mpirun_is_one_process() {
@@ -87,9 +88,7 @@ case_sonar_beam_grids_kept_whole() {
     expect_exit 0
     expect_stdout_contains "2 processes: render"
     expect_stdout_contains "10 of its 10 time-steps are beam or structured grids, which every process keeps whole"
-    run_tstyles -- compare "$SCRATCH/one.png" "$SCRATCH/two.png" --max-difference 64 --pixel-threshold 3 \
-        --max-failing-share 0.02 --max-mean 0.03 --min-ssim 0.999
-    expect_exit 0
+    expect_same_as_one_process "$SCRATCH/one.png" "$SCRATCH/two.png"
 }
 
 case_failure_on_one_process_ends_all() {
@@ -110,9 +109,7 @@ case_animate_frames_match_one() {
     expect_stdout_contains "80 frames as PNG"
     expect_stdout_contains "2 processes, sort-last"
     for frame in 0000 0040 0079; do
-        run_tstyles -- compare "$SCRATCH/one/frame-$frame.png" "$SCRATCH/two/frame-$frame.png" --max-difference 64 \
-            --pixel-threshold 3 --max-failing-share 0.02 --max-mean 0.03 --min-ssim 0.999
-        expect_exit 0
+        expect_same_as_one_process "$SCRATCH/one/frame-$frame.png" "$SCRATCH/two/frame-$frame.png"
     done
 }
 

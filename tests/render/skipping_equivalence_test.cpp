@@ -2,6 +2,8 @@
 // (per-ray time-step lists, gap jumps, empty-space skipping) and by the naive one (every time-step
 // tested at every sample, nothing skipped) gives the same picture.
 #include <filesystem>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -18,6 +20,19 @@ constexpr int kSize = 160;
 constexpr int kPixelThreshold = 8;
 constexpr double kMaxFailingFraction = 0.005;
 constexpr double kMaxMeanDelta = 0.3;
+
+// The picture with a switch of FrameOptions forced on and forced off (`what`: the switch, for
+// messages).
+void expectSameImageEitherWay(const BundledScene& bundled, std::optional<bool> FrameOptions::*option,
+                              const std::string& what) {
+    FrameOptions on;
+    on.*option = true;
+    FrameOptions off;
+    off.*option = false;
+    const std::string without = "no " + what;
+    expectSameImage(bundled, kSize, {what.c_str(), on}, {without.c_str(), off},
+                    {kPixelThreshold, kMaxFailingFraction, kMaxMeanDelta});
+}
 
 class SkippingEquivalence : public ::testing::TestWithParam<BundledScene> {};
 
@@ -67,12 +82,7 @@ class EmptyBrickTestEquivalence : public ::testing::TestWithParam<BundledScene> 
 TEST_P(EmptyBrickTestEquivalence, WithAndWithoutTheTestGiveTheSameImage) {
     const BundledScene& bundled = GetParam();
     if (!std::filesystem::exists(manifestOf(bundled))) GTEST_SKIP() << "dataset " << bundled.dataset << " is not there";
-    FrameOptions withTest;
-    withTest.emptyBrickTest = true;
-    FrameOptions withoutTest;
-    withoutTest.emptyBrickTest = false;
-    expectSameImage(bundled, kSize, {"empty-brick test", withTest}, {"no empty-brick test", withoutTest},
-                    {kPixelThreshold, kMaxFailingFraction, kMaxMeanDelta});
+    expectSameImageEitherWay(bundled, &FrameOptions::emptyBrickTest, "empty-brick test");
 }
 
 INSTANTIATE_TEST_SUITE_P(BenchmarkScenes, EmptyBrickTestEquivalence,
@@ -93,12 +103,7 @@ class PerRayCachesEquivalence : public ::testing::TestWithParam<BundledScene> {}
 TEST_P(PerRayCachesEquivalence, WithAndWithoutTheCachesGiveTheSameImage) {
     const BundledScene& bundled = GetParam();
     if (!std::filesystem::exists(manifestOf(bundled))) GTEST_SKIP() << "dataset " << bundled.dataset << " is not there";
-    FrameOptions cached;
-    cached.perRayCaches = true;
-    FrameOptions uncached;
-    uncached.perRayCaches = false;
-    expectSameImage(bundled, kSize, {"per-ray caches", cached}, {"no per-ray caches", uncached},
-                    {kPixelThreshold, kMaxFailingFraction, kMaxMeanDelta});
+    expectSameImageEitherWay(bundled, &FrameOptions::perRayCaches, "per-ray caches");
 }
 
 INSTANTIATE_TEST_SUITE_P(BenchmarkScenes, PerRayCachesEquivalence,
