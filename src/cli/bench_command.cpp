@@ -129,8 +129,6 @@ BenchResult runCase(Renderer& renderer, const Series& series, const BenchCase& b
     return result;
 }
 
-std::string sizeText(glm::ivec2 size) { return std::to_string(size.x) + "x" + std::to_string(size.y); }
-
 std::string mebibytes(std::size_t bytes) {
     std::ostringstream text;
     text << std::fixed << std::setprecision(1) << double(bytes) / (1024.0 * 1024.0);
@@ -150,7 +148,7 @@ void printTable(const std::vector<BenchResult>& results, const std::string& devi
     for (const auto& r : results) {
         std::cout << std::left << std::setw(28) << r.benchCase.dataset << std::setw(21)
                   << toString(r.benchCase.compositor) << std::right << std::setw(6) << r.timeSteps << std::setw(11)
-                  << sizeText(r.benchCase.size) << std::setw(11) << std::fixed << std::setprecision(1) << r.medianMs
+                  << widthByHeightText(r.benchCase.size) << std::setw(11) << std::fixed << std::setprecision(1) << r.medianMs
                   << std::setw(9) << r.maxMs << std::setw(9) << r.medianCpuMs << std::setw(10) << r.statistics.rays << std::setw(13)
                   << r.statistics.samples << std::setw(13) << r.statistics.fetches << std::setw(11)
                   << mebibytes(r.seriesTextureBytes + r.frameTextureBytes);

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench_datasets.h"
+#include "image_size_text.h"
 #include "tstyles/core/atomic_file.h"
 #include "tstyles/core/bundled_data.h"
 #include "tstyles/data/manifest.h"
@@ -81,7 +82,7 @@ void printTable(const std::vector<DistributedResult>& results, int processes, co
               << "composite ms" << std::setw(15) << "block tex MiB" << "\n";
     for (const auto& r : results)
         std::cout << std::left << std::setw(24) << r.dataset << std::setw(21) << toString(r.compositor) << std::right
-                  << std::setw(11) << (std::to_string(r.size.x) + "x" + std::to_string(r.size.y)) << std::fixed << std::setprecision(1) << std::setw(11) << r.frameMs
+                  << std::setw(11) << widthByHeightText(r.size) << std::fixed << std::setprecision(1) << std::setw(11) << r.frameMs
                   << std::setw(11) << r.renderMs << std::setw(14) << r.compositeMs << std::setw(15)
                   << r.blockBytes / (1024.0 * 1024.0) << "\n";
 }

@@ -18,6 +18,8 @@ std::optional<glm::ivec2> parseWidthByHeight(const std::string& text) {
     return glm::ivec2{std::stoi(text.substr(0, x)), std::stoi(text.substr(x + 1))};
 }
 
+std::string widthByHeightText(glm::ivec2 size) { return std::to_string(size.x) + "x" + std::to_string(size.y); }
+
 glm::ivec2 parseImageSizeOption(const std::string& text, const std::string& option, int minimum, int maximum) {
     std::optional<glm::ivec2> size = parseWidthByHeight(text);
     if (!size && isWholeNumber(text)) size = glm::ivec2{std::stoi(text)};

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 
-#include "tstyles/core/errors.h"
 
 namespace tstyles {
 namespace {
@@ -74,22 +73,22 @@ struct KeptNodes {
 };
 
 KeptNodes keptNodes(const TimeStep& step, const Bounds& box, int ghost) {
-    const RectilinearGrid* grid = &step.rectilinear();
+    const RectilinearGrid& grid = step.rectilinear();
     const Bounds local = localBounds(step.placement, box);
     KeptNodes kept;
-    kept.grid.spacing = grid->spacing;
+    kept.grid.spacing = grid.spacing;
     for (int axis = 0; axis < 3; ++axis) {
-        const glm::ivec2 range = nodeRange(*grid, axis, local.lower[axis], local.upper[axis], ghost);
+        const glm::ivec2 range = nodeRange(grid, axis, local.lower[axis], local.upper[axis], ghost);
         kept.first[axis] = range.x;
         kept.count[axis] = range.y - range.x + 1;
-        if (grid->isUneven(axis)) {
-            const std::vector<double>& nodes = grid->axisPositions[std::size_t(axis)];
+        if (grid.isUneven(axis)) {
+            const std::vector<double>& nodes = grid.axisPositions[std::size_t(axis)];
             kept.offset[axis] = nodes[std::size_t(range.x)];
             std::vector<double>& positions = kept.grid.axisPositions[std::size_t(axis)];
             for (int node = range.x; node <= range.y; ++node)
                 positions.push_back(nodes[std::size_t(node)] - kept.offset[axis]);
         } else {
-            kept.offset[axis] = double(range.x) * grid->spacing[axis];
+            kept.offset[axis] = double(range.x) * grid.spacing[axis];
         }
     }
     kept.grid.dims = kept.count;
