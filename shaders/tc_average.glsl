@@ -11,6 +11,13 @@
 const int COMPOSITOR_READS = READS_COMPOSITED;
 const bool COMPOSITOR_IGNORES_TRANSPARENT = true;
 
+// The average of `count` styled time-steps from the sum of their premultiplied colours and opacities:
+// colour weighted by opacity, opacity averaged.
+TemporalCharacteristic averageOf(vec4 premultipliedSum, int count) {
+    if (count == 0) return transparentCharacteristic();
+    return compositedCharacteristic(vec4(premultipliedSum.rgb / premultipliedSum.a, premultipliedSum.a / float(count)));
+}
+
 #if PER_RAY_CACHES
 // The visible time-steps of the sample, in the order the walk met them (so the sums add up in the
 // same order as when each was styled at once).
@@ -45,9 +52,7 @@ TemporalCharacteristic compositorFinish(CompositorState state, vec3 position, in
         premultipliedSum += vec4(styled.rgb * styled.a, styled.a);
         nonTransparent += 1;
     }
-    if (nonTransparent == 0) return transparentCharacteristic();
-    return compositedCharacteristic(vec4(premultipliedSum.rgb / premultipliedSum.a,
-                                         premultipliedSum.a / float(nonTransparent)));
+    return averageOf(premultipliedSum, nonTransparent);
 }
 #else
 // On a GPU each visible time-step is styled as the walk meets it, into running sums: the arrays of
@@ -70,8 +75,6 @@ void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 po
 }
 
 TemporalCharacteristic compositorFinish(CompositorState state, vec3 position, inout int fetches) {
-    if (state.nonTransparent == 0) return transparentCharacteristic();
-    return compositedCharacteristic(vec4(state.premultipliedSum.rgb / state.premultipliedSum.a,
-                                         state.premultipliedSum.a / float(state.nonTransparent)));
+    return averageOf(state.premultipliedSum, state.nonTransparent);
 }
 #endif
