@@ -5,6 +5,8 @@
 #include <iostream>
 #include <memory>
 
+#include <CLI/CLI.hpp>
+
 #include "animation_options.h"
 #include "annotation_options.h"
 #include "tstyles/render/annotated_rendering.h"

@@ -1,6 +1,8 @@
 // `tstyles animate` presets: a movie from one option, no keyframes written by hand.
 #include "animation_options.h"
 
+#include <CLI/CLI.hpp>
+
 #include "tstyles/core/errors.h"
 #include "tstyles/scene/animation_presets.h"
 

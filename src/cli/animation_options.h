@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include <CLI/CLI.hpp>
+#include "cli11_forward.h"
 
 #include "tstyles/scene/automatic_scene.h"
 #include "tstyles/scene/scene.h"

@@ -1,6 +1,8 @@
 // The annotation options of render and animate.
 #include "annotation_options.h"
 
+#include <CLI/CLI.hpp>
+
 namespace tstyles::cli {
 
 void addAnnotationOptions(CLI::App& command, AnnotationOptions& options) {

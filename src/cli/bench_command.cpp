@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 #include <sys/resource.h>
 
+#include <CLI/CLI.hpp>
+
 #include "bench_datasets.h"
 #include "bench_distributed.h"
 #include "bench_scaling.h"

@@ -10,6 +10,8 @@
 #include <optional>
 #include <set>
 
+#include <CLI/CLI.hpp>
+
 #include "check_distributed.h"
 #include "check_report.h"
 #include "check_runner.h"

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
+#include "cli11_forward.h"
 
 #include "tstyles/core/bundled_data.h"
 #include "tstyles/data/read_options.h"

@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <new>
 
+#include <CLI/CLI.hpp>
+
 #include "commands.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/data/series_opener.h"

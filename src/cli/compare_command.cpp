@@ -7,6 +7,8 @@
 #include <memory>
 #include <sstream>
 
+#include <CLI/CLI.hpp>
+
 #include "commands.h"
 #include "comparison_thresholds.h"
 #include "tstyles/core/errors.h"

@@ -3,6 +3,8 @@
 #include <iostream>
 #include <memory>
 
+#include <CLI/CLI.hpp>
+
 #include "commands.h"
 #include "tstyles/data/series_export.h"
 #include "tstyles/data/series_opener.h"

@@ -3,6 +3,8 @@
 
 #include <iostream>
 
+#include <CLI/CLI.hpp>
+
 #include "tstyles/render/gpu_memory_limits.h"
 
 namespace tstyles::cli {

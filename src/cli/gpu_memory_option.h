@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include <CLI/CLI.hpp>
+#include "cli11_forward.h"
 
 #include "commands.h"
 #include "tstyles/render/renderer.h"

@@ -2,6 +2,8 @@
 #include <iostream>
 #include <memory>
 
+#include <CLI/CLI.hpp>
+
 #include "commands.h"
 #include "gpu_memory_option.h"
 #include "tstyles/scene/automatic_scene.h"

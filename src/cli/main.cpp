@@ -2,6 +2,8 @@
 #include <iostream>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "commands.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/distributed/mpi_session.h"

@@ -3,6 +3,8 @@
 #include <iostream>
 #include <memory>
 
+#include <CLI/CLI.hpp>
+
 #include "annotation_options.h"
 #include "tstyles/render/annotated_rendering.h"
 #include "animation_options.h"

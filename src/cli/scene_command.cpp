@@ -3,6 +3,8 @@
 #include <iostream>
 #include <memory>
 
+#include <CLI/CLI.hpp>
+
 #include "commands.h"
 #include "scene_source.h"
 #include "tstyles/core/errors.h"

@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <CLI/CLI.hpp>
+
 #include "tstyles/core/errors.h"
 #include "tstyles/scene/automatic_scene.h"
 #include "tstyles/scene/input_kind.h"

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
+#include "cli11_forward.h"
 
 #include "commands.h"
 #include "tstyles/scene/scene.h"

@@ -1,6 +1,8 @@
 // `tstyles view [SCENE|DATASET]`: the interactive viewer (a GLFW window with ImGui panels).
 #include <memory>
 
+#include <CLI/CLI.hpp>
+
 #include "commands.h"
 #include "image_size_text.h"
 #include "gpu_memory_option.h"
