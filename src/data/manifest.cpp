@@ -235,15 +235,15 @@ std::optional<double> readMissingValue(const std::optional<ManifestField>& field
 }
 
 void readStepFiles(const std::filesystem::path& manifest, std::size_t index, StepEntry& entry,
-                   std::optional<double> missingMarker) {
+                   std::optional<double> missingMarker, const std::optional<NodeBlock>& kept) {
     TimeStep& step = entry.step;
     // The raw files hold one value per node whatever the grid kind: only the dims matter here.
     RawValues raw = readRawValues({manifest, entry.valuesField, index, step.valuesFile}, step.dims(),
-                                  step.sourceType, missingMarker);
+                                  step.sourceType, missingMarker, kept);
     step.density = std::move(raw.values);  // still raw: normalised once the value range is known
     step.rawRange = raw.range;
     if (!entry.maskField.empty()) {
-        step.mask = readMask({manifest, entry.maskField, index, step.maskFile}, step.dims());
+        step.mask = readMask({manifest, entry.maskField, index, step.maskFile}, step.dims(), kept);
     }
 }
 
@@ -297,31 +297,27 @@ std::array<SpatialAxis, 3> readAxes(const ManifestField& field) {
     return axes;
 }
 
-// Before any value file is read: the whole series under the memory limit; where a hook cuts each
-// time-step as it is read, the voxels it keeps and the largest time-step (held whole while cut).
+// Before any value file is read: the whole series under the memory limit, or where only a block
+// of each time-step is kept, the voxels kept.
 void requireSeriesMemory(const std::filesystem::path& manifest, const std::vector<StepEntry>& entries,
                          const ManifestLimits& limits) {
     const bool masks = std::any_of(entries.begin(), entries.end(), [](const StepEntry& e) { return !e.maskField.empty(); });
-    const double bytesPerVoxel = double(sizeof(float) + limits.gpuBytesPerVoxel + (masks ? 1 : 0));
     double whole = 0.0;
-    double largest = 0.0;
     for (const StepEntry& entry : entries) {
         const glm::ivec3 dims = entry.step.dims();
         const double voxels = double(dims.x) * double(dims.y) * double(dims.z);
         whole += voxels * double(sizeof(float) + limits.gpuBytesPerVoxel + (entry.maskField.empty() ? 0 : 1));
-        largest = std::max(largest, voxels * double(sizeof(float) + (entry.maskField.empty() ? 0 : 1)));
     }
     const std::string perVoxel = " (4 bytes a voxel in memory, " + std::to_string(limits.gpuBytesPerVoxel) +
                                  " on the GPU, 1 per mask)";
-    if (!limits.afterStepRead) {
+    if (!limits.nodesToRead) {
         requireMemory(manifest, "time_steps", whole, memoryCap(limits.maxMemoryBytes),
                       "the series' " + std::to_string(entries.size()) + " time-step(s)" + perVoxel);
         return;
     }
-    requireMemory(manifest, "time_steps", double(limits.keptVoxels) * bytesPerVoxel + largest,
-                  memoryCap(limits.maxMemoryBytes),
-                  "the " + std::to_string(limits.keptVoxels) + " voxels kept of its time-steps" + perVoxel +
-                      " and its largest time-step while it is read");
+    const double bytesPerVoxel = double(sizeof(float) + limits.gpuBytesPerVoxel + (masks ? 1 : 0));
+    requireMemory(manifest, "time_steps", double(limits.keptVoxels) * bytesPerVoxel, memoryCap(limits.maxMemoryBytes),
+                  "the " + std::to_string(limits.keptVoxels) + " voxels kept of its time-steps" + perVoxel);
 }
 
 std::string defaultName(const std::filesystem::path& manifest) {
@@ -383,7 +379,9 @@ Series loadSeries(const std::filesystem::path& manifestPath, const ManifestLimit
 
     requireSeriesMemory(manifest, entries, limits);
     for (std::size_t index = 0; index < entries.size(); ++index) {
-        readStepFiles(manifest, index, entries[index], parsed.missingMarker);
+        const std::optional<NodeBlock> kept =
+            limits.nodesToRead ? limits.nodesToRead(index, entries[index].step) : std::nullopt;
+        readStepFiles(manifest, index, entries[index], parsed.missingMarker, kept);
         if (limits.afterStepRead) limits.afterStepRead(index, entries[index].step);
     }
     series.valueRange = parsed.explicitRange ? *parsed.explicitRange : valueRangeFromData(manifest, entries);

@@ -79,7 +79,7 @@ std::string voxelText(std::size_t index, const glm::ivec3& dims) {
 }  // namespace
 
 RawValues readRawValues(const RawFileSource& source, const glm::ivec3& dims, ValueType type,
-                        std::optional<double> missingMarker) {
+                        std::optional<double> missingMarker, const std::optional<NodeBlock>& kept) {
     const std::size_t stride = bytesPerValue(type);
     const std::size_t count = std::size_t(dims.x) * std::size_t(dims.y) * std::size_t(dims.z);
     std::ifstream in =
@@ -90,7 +90,9 @@ RawValues readRawValues(const RawFileSource& source, const glm::ivec3& dims, Val
     const bool markerIsSet = missingMarker && !nanIsMissing;
 
     RawValues raw;
-    raw.values.resize(count);
+    raw.values.resize(kept ? kept->nodeCount() : count);
+    std::size_t keptIndex = 0;  // where the next kept value goes
+    glm::ivec3 node(0);         // of `index`, x fastest
     std::vector<std::uint8_t> bytes(std::min(count, kValuesPerRead) * stride);
     float lowest = std::numeric_limits<float>::infinity();
     float highest = -std::numeric_limits<float>::infinity();
@@ -99,9 +101,17 @@ RawValues readRawValues(const RawFileSource& source, const glm::ivec3& dims, Val
         readInto(in, source, "value file", bytes.data(), values * stride);
         for (std::size_t offset = 0; offset < values; ++offset) {
             const std::size_t index = first + offset;
+            const bool keep = !kept || kept->contains(node);
+            if (++node.x == dims.x) {
+                node.x = 0;
+                if (++node.y == dims.y) {
+                    node.y = 0;
+                    ++node.z;
+                }
+            }
             const float value = float(decodeValue(bytes.data() + offset * stride, type, ByteOrder::Little));
             if ((markerIsSet && value == marker) || (nanIsMissing && std::isnan(value))) {
-                raw.values[index] = missingDensity();
+                if (keep) raw.values[keptIndex++] = missingDensity();
                 continue;
             }
             if (!std::isfinite(value)) {
@@ -110,7 +120,7 @@ RawValues readRawValues(const RawFileSource& source, const glm::ivec3& dims, Val
                              ") at voxel (x, y, z) = " + voxelText(index, dims) +
                              (std::isnan(value) ? " (declare \"missing_value\": \"NaN\" if NaN marks missing data)" : ""));
             }
-            raw.values[index] = value;
+            if (keep) raw.values[keptIndex++] = value;
             lowest = std::min(lowest, value);
             highest = std::max(highest, value);
         }
@@ -121,9 +131,21 @@ RawValues readRawValues(const RawFileSource& source, const glm::ivec3& dims, Val
     return raw;
 }
 
-std::vector<std::uint8_t> readMask(const RawFileSource& source, const glm::ivec3& dims) {
-    return readExactly(source, "mask file", std::size_t(dims.x) * std::size_t(dims.y) * std::size_t(dims.z),
-                       dimsText(dims) + " uint8 values");
+std::vector<std::uint8_t> readMask(const RawFileSource& source, const glm::ivec3& dims,
+                                   const std::optional<NodeBlock>& kept) {
+    const std::size_t bytes = std::size_t(dims.x) * std::size_t(dims.y) * std::size_t(dims.z);
+    const std::string layout = dimsText(dims) + " uint8 values";
+    if (!kept) return readExactly(source, "mask file", bytes, layout);
+    std::ifstream in = openExactly(source, "mask file", bytes, layout);
+    std::vector<std::uint8_t> mask(kept->nodeCount());
+    std::uint8_t* row = mask.data();
+    for (int z = kept->first.z; z < kept->first.z + kept->count.z; ++z)
+        for (int y = kept->first.y; y < kept->first.y + kept->count.y; ++y, row += kept->count.x) {
+            const std::size_t rowStart = (std::size_t(z) * std::size_t(dims.y) + std::size_t(y)) * std::size_t(dims.x);
+            in.seekg(std::streamoff(rowStart + std::size_t(kept->first.x)));
+            readInto(in, source, "mask file", row, std::size_t(kept->count.x));
+        }
+    return mask;
 }
 
 std::vector<std::uint8_t> readExactBytes(const RawFileSource& source, const std::string& kind,

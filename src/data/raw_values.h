@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "tstyles/data/node_block.h"
 #include "tstyles/data/series.h"
 
 namespace tstyles {
@@ -32,12 +33,15 @@ struct RawValues {
 
 // Reads dims.x * dims.y * dims.z little-endian values of `type`; the file size must match exactly.
 // A value equal to `missingMarker` is missing (a NaN marker makes NaN values missing); any other
-// non-finite float32 value is an error.
+// non-finite float32 value is an error. With `kept`, only that block's values are kept (x fastest
+// within it), while the whole file is still read past in chunks: the range and the checks cover
+// every value, as without it, and memory holds the block alone.
 RawValues readRawValues(const RawFileSource& source, const glm::ivec3& dims, ValueType type,
-                        std::optional<double> missingMarker);
+                        std::optional<double> missingMarker, const std::optional<NodeBlock>& kept = std::nullopt);
 
-// Reads one uint8 per voxel.
-std::vector<std::uint8_t> readMask(const RawFileSource& source, const glm::ivec3& dims);
+// Reads one uint8 per voxel; with `kept`, only that block's rows.
+std::vector<std::uint8_t> readMask(const RawFileSource& source, const glm::ivec3& dims,
+                                   const std::optional<NodeBlock>& kept = std::nullopt);
 
 // Reads a whole file of exactly `expectedBytes` bytes (`kind` and `layout` word the size error:
 // "coordinates file", "17 x 9 x 5 nodes, 3 float32 each").

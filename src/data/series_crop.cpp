@@ -4,7 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
+#include <stdexcept>
+#include <string>
 
 namespace tstyles {
 namespace {
@@ -98,22 +99,35 @@ KeptNodes keptNodes(const TimeStep& step, const Bounds& box, int ghost) {
 }  // namespace
 
 std::size_t croppedVoxelCount(const TimeStep& step, const Bounds& box, int ghostNodes) {
-    if (!std::holds_alternative<RectilinearGrid>(step.grid)) return gridVoxelCount(step.grid);
-    return keptNodes(step, box, ghostNodes).grid.voxelCount();
+    const std::optional<NodeBlock> kept = nodesKeptOf(step, box, ghostNodes);
+    return kept ? kept->nodeCount() : gridVoxelCount(step.grid);
 }
 
-void cropTimeStepToBox(TimeStep& step, const Bounds& box, int ghost) {
+std::optional<NodeBlock> nodesKeptOf(const TimeStep& step, const Bounds& box, int ghostNodes) {
+    if (!std::holds_alternative<RectilinearGrid>(step.grid)) return std::nullopt;  // kept whole
+    const KeptNodes kept = keptNodes(step, box, ghostNodes);
+    return NodeBlock{kept.first, kept.count};
+}
+
+void cropTimeStepGridToBox(TimeStep& step, const Bounds& box, int ghostNodes) {
     if (!std::holds_alternative<RectilinearGrid>(step.grid)) return;  // kept whole (series_crop.h)
-    KeptNodes kept = keptNodes(step, box, ghost);
-    const RectilinearGrid& grid = step.rectilinear();
-    const glm::ivec3 first = kept.first;
-    const glm::ivec3 count = kept.count;
-    const glm::dvec3 offset = kept.offset;
-    RectilinearGrid cropped = std::move(kept.grid);
-    step.density = cropValues(step.density, grid.dims, first, count);
-    if (step.mask) step.mask = cropValues(*step.mask, grid.dims, first, count);
-    step.placement.origin = glm::dvec3(step.placement.gridToWorld() * glm::dvec4(offset, 1.0));
-    step.grid = std::move(cropped);
+    KeptNodes kept = keptNodes(step, box, ghostNodes);
+    const std::size_t keptCount = kept.grid.voxelCount();
+    if (step.density.size() != keptCount || (step.mask && step.mask->size() != keptCount))
+        throw std::logic_error("cropTimeStepGridToBox: the time-step's values are not those of its block (" +
+                               std::to_string(step.density.size()) + " values for " + std::to_string(keptCount) +
+                               " kept nodes)");
+    step.placement.origin = glm::dvec3(step.placement.gridToWorld() * glm::dvec4(kept.offset, 1.0));
+    step.grid = std::move(kept.grid);
+}
+
+void cropTimeStepToBox(TimeStep& step, const Bounds& box, int ghostNodes) {
+    const std::optional<NodeBlock> kept = nodesKeptOf(step, box, ghostNodes);
+    if (!kept) return;  // kept whole (series_crop.h)
+    const glm::ivec3 dims = step.rectilinear().dims;
+    step.density = cropValues(step.density, dims, kept->first, kept->count);
+    if (step.mask) step.mask = cropValues(*step.mask, dims, kept->first, kept->count);
+    cropTimeStepGridToBox(step, box, ghostNodes);
 }
 
 Series cropSeriesToBox(Series series, const Bounds& box, int ghostNodes) {

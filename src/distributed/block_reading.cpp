@@ -7,19 +7,32 @@
 
 namespace tstyles {
 
+namespace {
+
+// `step` in the display frame: the frame moves and scales a time-step's grid and leaves its values
+// alone, so a time-step takes it alone as it would with the whole series.
+TimeStep inDisplayFrame(TimeStep step, const std::filesystem::path& manifestPath, const DisplayFrame& frame) {
+    Series alone;
+    alone.manifestPath = manifestPath;
+    alone.steps.push_back(std::move(step));
+    alone = applyDisplayFrame(std::move(alone), frame);
+    return std::move(alone.steps.front());
+}
+
+}  // namespace
+
 Series readManifestBlock(const std::filesystem::path& manifest, const ReadOptions& options,
                          const Series& displayOutline, const DisplayFrame& frame, const Bounds& box) {
-    ManifestLimits limits{options.maxMemoryBytes, bytesPerDensity(options.precision), {}, 0};
+    ManifestLimits limits{options.maxMemoryBytes, bytesPerDensity(options.precision), {}, {}, 0};
     for (const TimeStep& step : displayOutline.steps) limits.keptVoxels += croppedVoxelCount(step, box, kBlockGhostNodes);
+    // The nodes that the time-step keeps in the display frame; framing moves and scales a grid but
+    // keeps its nodes, so they are the nodes to read of the file's grid.
+    limits.nodesToRead = [&](std::size_t, const TimeStep& outline) {
+        return nodesKeptOf(inDisplayFrame(outline, displayOutline.manifestPath, frame), box, kBlockGhostNodes);
+    };
     limits.afterStepRead = [&](std::size_t, TimeStep& step) {
-        // The display frame moves and scales a time-step's grid and leaves its values alone, so a
-        // time-step takes it alone as it would with the whole series.
-        Series alone;
-        alone.manifestPath = displayOutline.manifestPath;
-        alone.steps.push_back(std::move(step));
-        alone = applyDisplayFrame(std::move(alone), frame);
-        step = std::move(alone.steps.front());
-        cropTimeStepToBox(step, box, kBlockGhostNodes);
+        step = inDisplayFrame(std::move(step), displayOutline.manifestPath, frame);
+        cropTimeStepGridToBox(step, box, kBlockGhostNodes);
     };
     Series block = loadSeries(manifest, limits);
     block.precision = options.precision;

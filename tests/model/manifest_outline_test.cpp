@@ -1,6 +1,9 @@
 // Reading a manifest without its values (loadSeriesOutline), and the hook that sees each time-step
-// as it is read (ManifestLimits::afterStepRead), which distributed rendering cuts blocks with.
+// as it is read (ManifestLimits::nodesToRead and afterStepRead), which distributed rendering reads
+// blocks with.
 #include <cmath>
+#include <cstring>
+#include <optional>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -53,44 +56,87 @@ TEST(ManifestOutline, ChecksTheManifestAsLoadSeriesDoes) {
     }
 }
 
-// The hook sees every time-step in order, raw (before the value range maps it to density), and
-// what it leaves is what the series holds; the range still comes from the whole time-steps.
-TEST(ManifestStepHook, SeesEachTimeStepRawAndKeepsWhatItCuts) {
+// Where only a block of each time-step is kept, the reader asks for the nodes before it opens the
+// files, keeps those values and mask bytes alone (x fastest) and hands the time-step raw to the
+// hook; the range still comes from every value of the whole files.
+TEST(ManifestBlockReading, KeepsTheBlocksNodesAndTheWholeFilesRange) {
     json manifest = baseManifest();
     manifest.erase("value_range");
-    const auto folder = writeBaseDataset("hook", manifest);
+    const auto folder = writeBaseDataset("block_reading", manifest);
+    tstyles_test::writeBytes(folder / "t00_mask.raw", tstyles_test::rampBytes(tstyles_test::kBaseVoxels));
+    // Nodes x = 1, y = 1..2, z = 2..3 of the 2 x 3 x 4 ramp (value = x + 2 y + 6 z).
+    const tstyles::NodeBlock block{{1, 1, 2}, {1, 2, 2}};
+    const std::vector<float> blockValues{15.0f, 17.0f, 21.0f, 23.0f};
+    std::vector<std::size_t> asked;
     std::vector<std::size_t> seen;
     tstyles::ManifestLimits limits;
+    limits.nodesToRead = [&](std::size_t index, const tstyles::TimeStep& outline) {
+        asked.push_back(index);
+        EXPECT_TRUE(outline.density.empty());  // asked before the values are read
+        EXPECT_EQ(outline.dims(), glm::ivec3(2, 3, 4));
+        return std::optional<tstyles::NodeBlock>(block);
+    };
     limits.afterStepRead = [&](std::size_t index, tstyles::TimeStep& step) {
         seen.push_back(index);
-        EXPECT_EQ(step.density[23], 23.0f);  // raw: the ramp's last value
-        step.density.resize(1);               // keep the first voxel only
-        if (step.mask) step.mask->resize(1);
+        EXPECT_EQ(step.density, blockValues);  // raw, before the range maps it to density
+        if (index == 0) {
+            EXPECT_EQ(*step.mask, (std::vector<std::uint8_t>{15, 17, 21, 23}));
+        }
     };
-    limits.keptVoxels = 2;
+    limits.keptVoxels = 8;
     const tstyles::Series series = tstyles::loadSeries(folder / "series.json", limits);
+    EXPECT_EQ(asked, (std::vector<std::size_t>{0, 1}));
     EXPECT_EQ(seen, (std::vector<std::size_t>{0, 1}));
-    EXPECT_EQ(series.valueRange[1], 23.0);  // from the whole time-steps, before the cut
-    ASSERT_EQ(series.steps[1].density.size(), 1u);
-    EXPECT_EQ(series.steps[1].density[0], 0.0f);
+    // From the whole files: 0 and 23 are outside the block but for 23.
+    EXPECT_EQ(series.valueRange[0], 0.0);
+    EXPECT_EQ(series.valueRange[1], 23.0);
+    ASSERT_EQ(series.steps[1].density.size(), 4u);
+    EXPECT_FLOAT_EQ(series.steps[1].density[0], 15.0f / 23.0f);
 }
 
-// With a hook the memory check counts what it keeps and the largest time-step, not the series.
-TEST(ManifestStepHook, TheMemoryCheckCountsTheKeptVoxels) {
-    const auto folder = writeBaseDataset("hook_memory", baseManifest());
+// A bad value outside the block is still found: the whole file is read through.
+TEST(ManifestBlockReading, ABadValueOutsideTheBlockIsStillAnError) {
+    json manifest = baseManifest();
+    manifest["time_steps"][1]["values"]["type"] = "float32";
+    const auto folder = writeBaseDataset("block_reading_nan", manifest);
+    std::vector<float> values(tstyles_test::kBaseVoxels, 1.0f);
+    values[0] = std::nanf("");  // node (0, 0, 0), outside the block
+    std::vector<std::uint8_t> bytes(values.size() * sizeof(float));
+    std::memcpy(bytes.data(), values.data(), bytes.size());
+    tstyles_test::writeBytes(folder / "t01.raw", bytes);
+    tstyles::ManifestLimits limits;
+    limits.nodesToRead = [](std::size_t, const tstyles::TimeStep&) {
+        return std::optional<tstyles::NodeBlock>(tstyles::NodeBlock{{1, 1, 2}, {1, 2, 2}});
+    };
+    limits.afterStepRead = [](std::size_t, tstyles::TimeStep&) {};
+    limits.keptVoxels = 8;
+    try {
+        tstyles::loadSeries(folder / "series.json", limits);
+        FAIL() << "a NaN outside the block was accepted";
+    } catch (const tstyles::InputError& error) {
+        expectMentions(error.what(), {"t01.raw", "NaN", "(0, 0, 0)"});
+    }
+}
+
+// Reading a block, the memory check counts the voxels kept, not the series.
+TEST(ManifestBlockReading, TheMemoryCheckCountsTheKeptVoxels) {
+    const auto folder = writeBaseDataset("block_reading_memory", baseManifest());
     tstyles::ManifestLimits limits;
     // The whole series: 2 x 24 voxels at 4 + 2 bytes and 24 mask bytes, 312 bytes.
     limits.maxMemoryBytes = 200;
     EXPECT_THROW(tstyles::loadSeries(folder / "series.json", limits), tstyles::InputError);
+    limits.nodesToRead = [](std::size_t, const tstyles::TimeStep&) {
+        return std::optional<tstyles::NodeBlock>(tstyles::NodeBlock{{0, 0, 0}, {2, 3, 2}});
+    };
     limits.afterStepRead = [](std::size_t, tstyles::TimeStep&) {};
-    limits.keptVoxels = 10;  // 10 x 7 bytes and the largest time-step's 24 x 5: 190 bytes
+    limits.keptVoxels = 24;  // 24 x 7 bytes: 168 bytes
     EXPECT_NO_THROW(tstyles::loadSeries(folder / "series.json", limits));
-    limits.keptVoxels = 20;  // 260 bytes
+    limits.keptVoxels = 30;  // 210 bytes
     try {
         tstyles::loadSeries(folder / "series.json", limits);
         FAIL() << "over the cap";
     } catch (const tstyles::InputError& error) {
-        expectMentions(error.what(), {"time_steps", "the 20 voxels kept", "largest time-step"});
+        expectMentions(error.what(), {"time_steps", "the 30 voxels kept"});
     }
 }
 

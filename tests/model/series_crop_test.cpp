@@ -2,9 +2,14 @@
 // gradients read, at the same world positions with the same values.
 #include "tstyles/data/series_crop.h"
 
+#include <cstring>
+#include <filesystem>
+
 #include <gtest/gtest.h>
 
+#include "test_dataset.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/data/manifest.h"
 
 namespace tstyles {
 namespace {
@@ -125,6 +130,56 @@ TEST(SeriesCrop, TheVoxelCountKnownBeforeReadingIsWhatTheCutKeeps) {
             EXPECT_EQ(expected, cut.density.size()) << "time-step " << index;
             EXPECT_EQ(expected, gridVoxelCount(cut.grid));
             expectValuesFollowTheirNodes(cut);
+        }
+    }
+}
+
+// Reading only a block of each time-step (loadSeries with nodesToRead, as readManifestBlock does)
+// gives what reading the whole series and cutting it gives: the same values, masks, grids and
+// placements, to the bit.
+TEST(SeriesCrop, ReadingOnlyTheBlockIsCuttingTheWholeSeries) {
+    Placement turned;
+    turned.origin = {0.3, -0.2, 0.1};
+    turned.rotation = fromAxisAngle({{1.0, 1.0, 0.0}, 35.0});
+    const std::vector<TimeStep> steps = {
+        linearStep({11, 6, 5}, glm::dvec3(0.1), Placement{}),
+        linearStep({9, 7, 6}, glm::dvec3(0.2, 0.1, 0.3), turned,
+                   {std::vector<double>{}, std::vector<double>{}, std::vector<double>{0.0, 0.1, 0.3, 0.7, 1.2, 2.0}})};
+    RawSeries raw;
+    raw.name = "blocks";
+    raw.valueRange = {-1.0, 1.0};
+    for (std::size_t index = 0; index < steps.size(); ++index) {
+        RawTimeStep step;
+        step.time = double(index);
+        step.grid = steps[index].rectilinear();
+        step.placement = steps[index].placement;
+        step.type = ValueType::Float32;
+        step.bytes.resize(steps[index].density.size() * sizeof(float));
+        std::memcpy(step.bytes.data(), steps[index].density.data(), step.bytes.size());
+        step.mask = std::vector<std::uint8_t>(steps[index].density.size());
+        for (std::size_t voxel = 0; voxel < step.mask->size(); ++voxel) (*step.mask)[voxel] = std::uint8_t(voxel);
+        raw.steps.push_back(std::move(step));
+    }
+    const std::filesystem::path folder = tstyles_test::freshFolder("series_crop_block_reading");
+    writeSeries(raw, folder);
+    const Series whole = loadSeries(folder / "series.json");
+    for (const Bounds& box : {Bounds{{0.25, -1.0, -1.0}, {0.45, 1.0, 1.0}}, Bounds{{0.0, 0.0, 0.0}, {0.2, 0.2, 0.2}},
+                              Bounds{{5.0, 5.0, 5.0}, {6.0, 6.0, 6.0}}}) {
+        ManifestLimits limits;
+        limits.nodesToRead = [&](std::size_t, const TimeStep& outline) { return nodesKeptOf(outline, box, 2); };
+        limits.afterStepRead = [&](std::size_t, TimeStep& step) { cropTimeStepGridToBox(step, box, 2); };
+        for (const TimeStep& step : whole.steps) limits.keptVoxels += croppedVoxelCount(step, box, 2);
+        const Series block = loadSeries(folder / "series.json", limits);
+        const Series cut = cropSeriesToBox(whole, box, 2);
+        ASSERT_EQ(block.size(), cut.size());
+        for (std::size_t index = 0; index < cut.size(); ++index) {
+            const TimeStep& read = block.steps[index];
+            const TimeStep& expected = cut.steps[index];
+            EXPECT_EQ(read.density, expected.density) << "time-step " << index;
+            EXPECT_EQ(*read.mask, *expected.mask) << "time-step " << index;
+            EXPECT_EQ(read.rectilinear().dims, expected.rectilinear().dims);
+            EXPECT_EQ(read.rectilinear().axisPositions, expected.rectilinear().axisPositions);
+            EXPECT_EQ(read.placement.origin, expected.placement.origin);
         }
     }
 }

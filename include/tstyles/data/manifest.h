@@ -7,23 +7,28 @@
 #include <functional>
 #include <optional>
 
+#include "tstyles/data/node_block.h"
 #include "tstyles/data/series.h"
 
 namespace tstyles {
 
 // What a series may take: memory (none given: half of the machine's, defaultMemoryCap()) for 4
 // bytes a voxel in memory, a mask byte where there is a mask, and the GPU's copy.
-// Called for each time-step as soon as its files are read (raw values, missing ones NaN, and
-// rawRange over the whole file), before the values are mapped to density: where a process keeps
-// one block of every time-step (distributed rendering), it cuts each one there, so that it never
-// holds more than its block and one whole time-step.
+// Where a process keeps one block of every time-step (distributed rendering): `nodesToRead` says,
+// before a time-step's files are opened, which of its nodes to keep (none: all). Its files are
+// still read through in chunks, so rawRange and the checks of every value cover the whole file and
+// every process finds the whole series' range, but memory holds the block alone. Then
+// `afterStepRead` is called with the time-step as read (values cut, grid still whole; missing
+// values NaN), before the values are mapped to density, to cut its grid alike.
+using StepNodesToRead = std::function<std::optional<NodeBlock>(std::size_t index, const TimeStep& outline)>;
 using StepReadHook = std::function<void(std::size_t index, TimeStep& step)>;
 
 struct ManifestLimits {
     std::optional<std::uint64_t> maxMemoryBytes;  // --max-memory
     std::size_t gpuBytesPerVoxel = 2;             // --precision 16
-    // With a hook, the memory check counts the largest time-step (held whole while it is cut) and
-    // `keptVoxels`, the voxels the hook keeps of all time-steps, rather than the whole series.
+    // With them, the memory check counts `keptVoxels`, the voxels kept of all time-steps, rather
+    // than the whole series.
+    StepNodesToRead nodesToRead;
     StepReadHook afterStepRead;
     std::size_t keptVoxels = 0;
 };

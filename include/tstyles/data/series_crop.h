@@ -3,7 +3,9 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 
+#include "tstyles/data/node_block.h"
 #include "tstyles/data/series.h"
 
 namespace tstyles {
@@ -19,12 +21,20 @@ namespace tstyles {
 // so that a caller who moves it in never holds the whole and the block at once.
 Series cropSeriesToBox(Series series, const Bounds& box, int ghostNodes);
 
-// The same for one time-step, in place: what a reader that cuts each time-step as it reads it
-// calls (loadSeriesBlock).
+// The same for one time-step, in place.
 void cropTimeStepToBox(TimeStep& step, const Bounds& box, int ghostNodes);
 
-// The voxels cropTimeStepToBox keeps of `step`, from its grid and placement alone (no values
-// needed): what a reader that cuts time-steps as it reads them checks against the memory cap.
+// The nodes cropTimeStepToBox keeps of `step`, from its grid and placement alone (no values
+// needed); none for a time-step kept whole. What a reader that reads only a block's values asks
+// before it opens the files (readManifestBlock).
+std::optional<NodeBlock> nodesKeptOf(const TimeStep& step, const Bounds& box, int ghostNodes);
+
+// The grid and placement part of cropTimeStepToBox, for a time-step whose values (and mask) were
+// read as nodesKeptOf's block already; std::logic_error if they were not.
+void cropTimeStepGridToBox(TimeStep& step, const Bounds& box, int ghostNodes);
+
+// The voxels cropTimeStepToBox keeps of `step` (nodesKeptOf's, or the whole grid's): what a
+// reader that reads only a block checks against the memory cap.
 std::size_t croppedVoxelCount(const TimeStep& step, const Bounds& box, int ghostNodes);
 
 }  // namespace tstyles

@@ -1,7 +1,7 @@
-// Reading one process's block of a manifest series without ever holding the whole series: each
-// time-step is read, taken into the scene's display frame and cut to the block before the next is
-// read, so a process holds its block of every time-step and at most one whole time-step
-// (docs/scaling.md, "What each process reads").
+// Reading one process's block of a manifest series without ever holding the whole series: of each
+// time-step only the block's values are kept as its file is read through, and its grid is taken
+// into the scene's display frame and cut alike, so a process holds its block of every time-step
+// and never a whole time-step (docs/scaling.md, "What each process reads").
 #pragma once
 
 #include <filesystem>
@@ -19,7 +19,7 @@ namespace tstyles {
 // (loadSeriesOutline, then applyDisplayFrame), from which the block's size is known before any
 // value is read, and which gives the block its display axes. `options`:
 // --max-memory and --precision (a manifest takes no other reading option); the memory check counts
-// the block's voxels and the largest time-step, which a process holds whole while it cuts it.
+// the block's voxels.
 Series readManifestBlock(const std::filesystem::path& manifest, const ReadOptions& options,
                          const Series& displayOutline, const DisplayFrame& frame, const Bounds& box);
 
