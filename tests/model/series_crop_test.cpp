@@ -110,18 +110,26 @@ TEST(SeriesCrop, ATimeStepOutsideTheBoxKeepsItsNearestCell) {
     expectValuesFollowTheirNodes(block.steps[1]);
 }
 
-// What a reader checks against the memory cap before it reads (croppedVoxelCount, from the grid
-// and placement alone) is what cutting the read time-step keeps.
-TEST(SeriesCrop, TheVoxelCountKnownBeforeReadingIsWhatTheCutKeeps) {
+// A plain time-step and a turned one with an uneven z axis.
+std::vector<TimeStep> plainAndTurnedUnevenSteps() {
     Placement turned;
     turned.origin = {0.3, -0.2, 0.1};
     turned.rotation = fromAxisAngle({{1.0, 1.0, 0.0}, 35.0});
-    const std::vector<TimeStep> steps = {
-        linearStep({11, 6, 5}, glm::dvec3(0.1), Placement{}),
-        linearStep({9, 7, 6}, glm::dvec3(0.2, 0.1, 0.3), turned,
-                   {std::vector<double>{}, std::vector<double>{}, std::vector<double>{0.0, 0.1, 0.3, 0.7, 1.2, 2.0}})};
-    for (const Bounds& box : {Bounds{{0.25, -1.0, -1.0}, {0.45, 1.0, 1.0}}, Bounds{{0.0, 0.0, 0.0}, {0.2, 0.2, 0.2}},
-                              Bounds{{5.0, 5.0, 5.0}, {6.0, 6.0, 6.0}}}) {
+    return {linearStep({11, 6, 5}, glm::dvec3(0.1), Placement{}),
+            linearStep({9, 7, 6}, glm::dvec3(0.2, 0.1, 0.3), turned,
+                       {std::vector<double>{}, std::vector<double>{}, std::vector<double>{0.0, 0.1, 0.3, 0.7, 1.2, 2.0}})};
+}
+
+// Blocks through both time-steps, in the corner of both, and outside both.
+const std::vector<Bounds> kBlockBoxes = {Bounds{{0.25, -1.0, -1.0}, {0.45, 1.0, 1.0}},
+                                         Bounds{{0.0, 0.0, 0.0}, {0.2, 0.2, 0.2}},
+                                         Bounds{{5.0, 5.0, 5.0}, {6.0, 6.0, 6.0}}};
+
+// What a reader checks against the memory cap before it reads (croppedVoxelCount, from the grid
+// and placement alone) is what cutting the read time-step keeps.
+TEST(SeriesCrop, TheVoxelCountKnownBeforeReadingIsWhatTheCutKeeps) {
+    const std::vector<TimeStep> steps = plainAndTurnedUnevenSteps();
+    for (const Bounds& box : kBlockBoxes) {
         for (std::size_t index = 0; index < steps.size(); ++index) {
             TimeStep outline = withoutValues(steps[index]);
             TimeStep cut = steps[index];
@@ -138,13 +146,7 @@ TEST(SeriesCrop, TheVoxelCountKnownBeforeReadingIsWhatTheCutKeeps) {
 // gives what reading the whole series and cutting it gives: the same values, masks, grids and
 // placements, to the bit.
 TEST(SeriesCrop, ReadingOnlyTheBlockIsCuttingTheWholeSeries) {
-    Placement turned;
-    turned.origin = {0.3, -0.2, 0.1};
-    turned.rotation = fromAxisAngle({{1.0, 1.0, 0.0}, 35.0});
-    const std::vector<TimeStep> steps = {
-        linearStep({11, 6, 5}, glm::dvec3(0.1), Placement{}),
-        linearStep({9, 7, 6}, glm::dvec3(0.2, 0.1, 0.3), turned,
-                   {std::vector<double>{}, std::vector<double>{}, std::vector<double>{0.0, 0.1, 0.3, 0.7, 1.2, 2.0}})};
+    const std::vector<TimeStep> steps = plainAndTurnedUnevenSteps();
     RawSeries raw;
     raw.name = "blocks";
     raw.valueRange = {-1.0, 1.0};
@@ -163,8 +165,7 @@ TEST(SeriesCrop, ReadingOnlyTheBlockIsCuttingTheWholeSeries) {
     const std::filesystem::path folder = tstyles_test::freshFolder("series_crop_block_reading");
     writeSeries(raw, folder);
     const Series whole = loadSeries(folder / "series.json");
-    for (const Bounds& box : {Bounds{{0.25, -1.0, -1.0}, {0.45, 1.0, 1.0}}, Bounds{{0.0, 0.0, 0.0}, {0.2, 0.2, 0.2}},
-                              Bounds{{5.0, 5.0, 5.0}, {6.0, 6.0, 6.0}}}) {
+    for (const Bounds& box : kBlockBoxes) {
         ManifestLimits limits;
         limits.nodesToRead = [&](std::size_t, const TimeStep& outline) { return nodesKeptOf(outline, box, 2); };
         limits.afterStepRead = [&](std::size_t, TimeStep& step) { cropTimeStepGridToBox(step, box, 2); };
