@@ -306,7 +306,7 @@ TEST(Plot3D, TruncatedFunctionFileIsReported) {
     Plot3DOptions options = writeDataset("function_truncated", Flavour{}, {0.0});
     options.solutionFiles = {options.gridFile.parent_path() / "a.f"};
     std::vector<std::uint8_t> bytes = functionBytes(Flavour{}, testBlocks(false), 2);
-    bytes.resize(bytes.size() - 8);
+    bytes.erase(bytes.end() - 8, bytes.end());
     tstyles_test::writeBytes(options.solutionFiles[0], bytes);
     options.variable = "function-0";
     EXPECT_NE(readError(options).find("a.f: Plot3D function file is truncated: its header announces 1 block(s) of "
