@@ -109,9 +109,10 @@ std::optional<NodeBlock> nodesKeptOf(const TimeStep& step, const Bounds& box, in
     return NodeBlock{kept.first, kept.count};
 }
 
-void cropTimeStepGridToBox(TimeStep& step, const Bounds& box, int ghostNodes) {
-    if (!std::holds_alternative<RectilinearGrid>(step.grid)) return;  // kept whole (series_crop.h)
-    KeptNodes kept = keptNodes(step, box, ghostNodes);
+namespace {
+
+// Moves `step`'s grid and placement to the kept nodes; its values must be theirs already.
+void cutGridTo(TimeStep& step, KeptNodes kept) {
     const std::size_t keptCount = kept.grid.voxelCount();
     if (step.density.size() != keptCount || (step.mask && step.mask->size() != keptCount))
         throw std::logic_error("cropTimeStepGridToBox: the time-step's values are not those of its block (" +
@@ -121,13 +122,20 @@ void cropTimeStepGridToBox(TimeStep& step, const Bounds& box, int ghostNodes) {
     step.grid = std::move(kept.grid);
 }
 
+}  // namespace
+
+void cropTimeStepGridToBox(TimeStep& step, const Bounds& box, int ghostNodes) {
+    if (!std::holds_alternative<RectilinearGrid>(step.grid)) return;  // kept whole (series_crop.h)
+    cutGridTo(step, keptNodes(step, box, ghostNodes));
+}
+
 void cropTimeStepToBox(TimeStep& step, const Bounds& box, int ghostNodes) {
-    const std::optional<NodeBlock> kept = nodesKeptOf(step, box, ghostNodes);
-    if (!kept) return;  // kept whole (series_crop.h)
+    if (!std::holds_alternative<RectilinearGrid>(step.grid)) return;  // kept whole (series_crop.h)
+    KeptNodes kept = keptNodes(step, box, ghostNodes);
     const glm::ivec3 dims = step.rectilinear().dims;
-    step.density = cropValues(step.density, dims, kept->first, kept->count);
-    if (step.mask) step.mask = cropValues(*step.mask, dims, kept->first, kept->count);
-    cropTimeStepGridToBox(step, box, ghostNodes);
+    step.density = cropValues(step.density, dims, kept.first, kept.count);
+    if (step.mask) step.mask = cropValues(*step.mask, dims, kept.first, kept.count);
+    cutGridTo(step, std::move(kept));
 }
 
 Series cropSeriesToBox(Series series, const Bounds& box, int ghostNodes) {
