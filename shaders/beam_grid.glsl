@@ -44,8 +44,9 @@ float fractionalBeamIndex(int first, int count, float angle) {
 }
 
 // A fan whose beams are evenly spaced on both axes (EVEN_BEAMS): a beam index is then linear in its
-// angle, so a sample's place needs no angle list, only these numbers, which a ray reads once per
-// time-step (voxel_rays.glsl) instead of at every sample.
+// angle, so a sample's place needs no angle list, only these numbers from the time-step's record
+// (TimeStepInfo.evenBeamFan), which a ray reads once per time-step (voxel_rays.glsl) with per-ray
+// caches, and a GPU at every sample.
 struct EvenBeamFan {
     vec4 angles;      // x, z: the first azimuth and elevation (radians); y, w: beams per radian
     vec4 ranges;      // x, y: minimum and maximum range; z: range samples per unit of range
@@ -53,14 +54,7 @@ struct EvenBeamFan {
 
 EvenBeamFan evenBeamFanOf(int step) {
     TimeStepInfo info = timeSteps.steps[step];
-    vec3 lastSample = info.dims.xyz - 1.0;
-    float firstAzimuth = beamAngles.angles[info.grid.y];
-    float lastAzimuth = beamAngles.angles[info.grid.y + int(lastSample.x)];
-    float firstElevation = beamAngles.angles[info.grid.z];
-    float lastElevation = beamAngles.angles[info.grid.z + int(lastSample.y)];
-    return EvenBeamFan(vec4(firstAzimuth, lastSample.x / (lastAzimuth - firstAzimuth), firstElevation,
-                            lastSample.y / (lastElevation - firstElevation)),
-                       vec4(info.beamRange.xy, lastSample.z / (info.beamRange.y - info.beamRange.x), 0.0));
+    return EvenBeamFan(info.evenBeamFan, vec4(info.beamRange.xy, info.beamRange.w, 0.0));
 }
 
 // beamVoxel() for an evenly spaced fan with samples 0 .. lastSample (dims - 1); outside the fan xyz

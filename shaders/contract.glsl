@@ -69,8 +69,13 @@ struct TimeStepInfo {
     // x: GRID_RECTILINEAR or GRID_BEAM. Beam grids: y, z: where the azimuth and the elevation
     // angles start in the beam angle buffer.
     ivec4 grid;
-    // Beam grids: x, y: minimum and maximum range; z: world distance of the gradient's differences.
+    // Beam grids: x, y: minimum and maximum range; z: world distance of the gradient's differences;
+    // w: range samples per unit of range.
     vec4 beamRange;
+    // Beam grids with evenly spaced beams (EVEN_BEAMS, beam_grid.glsl): x, z: the first azimuth and
+    // elevation (radians); y, w: beams per radian across and along. Worked out once here, so that a
+    // sample reads them with the rest of the record instead of from the beam angle buffer.
+    vec4 evenBeamFan;
     // x: the time-step's time stamp minus the series' first one, in the series' time units.
     vec4 time;
 };

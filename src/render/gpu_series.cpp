@@ -124,6 +124,18 @@ std::string beamAngleField(std::size_t index, const std::vector<double>& anglesD
            (areEvenBeamAngles(anglesDeg) ? "_deg" : "_angles_deg");
 }
 
+// TimeStepInfo.evenBeamFan of an evenly spaced fan: the first angles and the beams per radian, in
+// float from the radians the beam angle buffer holds (from `azimuths` and `elevations` on), as the
+// shader once worked them out at every sample.
+glm::vec4 evenBeamFan(const std::vector<float>& beamAngles, int azimuths, int elevations, const glm::ivec3& dims) {
+    const float firstAzimuth = beamAngles[std::size_t(azimuths)];
+    const float lastAzimuth = beamAngles[std::size_t(azimuths + dims.x - 1)];
+    const float firstElevation = beamAngles[std::size_t(elevations)];
+    const float lastElevation = beamAngles[std::size_t(elevations + dims.y - 1)];
+    return {firstAzimuth, float(dims.x - 1) / (lastAzimuth - firstAzimuth), firstElevation,
+            float(dims.y - 1) / (lastElevation - firstElevation)};
+}
+
 // A time-step's row in the time-step table; beam grids also append their angles (radians) and the
 // angles' lookup (render/beam_angle_table.h).
 TimeStepInfo timeStepInfo(const Series& series, std::size_t index, const glm::ivec3& brickOrigin, int layer,
@@ -146,7 +158,11 @@ TimeStepInfo timeStepInfo(const Series& series, std::size_t index, const glm::iv
         const int elevations = appendBeamAngleRun(grid.elevationDeg, beamAngles, series.manifestPath,
                                                   beamAngleField(index, grid.elevationDeg, "elevation"));
         info.grid = glm::ivec4(contract::GRID_BEAM, azimuths, elevations, 0);
-        info.beamRange = glm::vec4(float(grid.minRange), float(grid.maxRange), float(grid.rangeSpacing()), 0.0f);
+        const float minRange = float(grid.minRange);
+        const float maxRange = float(grid.maxRange);
+        info.beamRange = glm::vec4(minRange, maxRange, float(grid.rangeSpacing()), float(dims.z - 1) / (maxRange - minRange));
+        if (areEvenBeamAngles(grid.azimuthDeg) && areEvenBeamAngles(grid.elevationDeg))
+            info.evenBeamFan = evenBeamFan(beamAngles, azimuths, elevations, dims);
         return info;
     }
     const StructuredGrid* structured = step.structured();

@@ -18,7 +18,7 @@ using mat4 = glm::mat4;
 
 // std430 gives these structs of 16-byte members the size C++ gives them; a member of another type
 // added to contract.glsl would break that, and these stop the build.
-static_assert(sizeof(TimeStepInfo) == 64 + 8 * 16);
+static_assert(sizeof(TimeStepInfo) == 64 + 9 * 16);
 static_assert(sizeof(ProxyBox) == 64 + 16);
 static_assert(sizeof(ProxyVertex) == 2 * 16);
 static_assert(sizeof(StructuredGridInfo) == 2 * 16);
