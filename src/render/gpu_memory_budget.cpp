@@ -34,7 +34,7 @@ std::optional<std::size_t> totalBytesIfPlanned(const SeriesShape& shape, const S
     return plan ? std::optional<std::size_t>(totalBytes(plan->textures())) : std::nullopt;
 }
 
-glm::ivec3 largestDims(const std::vector<glm::ivec3>& dims) {
+glm::ivec3 dimsWithMostVoxels(const std::vector<glm::ivec3>& dims) {
     return *std::max_element(dims.begin(), dims.end(), [](glm::ivec3 a, glm::ivec3 b) {
         return double(a.x) * a.y * a.z < double(b.x) * b.y * b.z;
     });
@@ -72,7 +72,7 @@ GpuResidency fitToGpuMemory(const Series& series, const GpuMemoryLimits& limits)
     const SeriesShape shape = shapeOf(series);
     GpuResidency residency;
     residency.requested = {series.precision, true};
-    residency.fullDims = residency.chosenDims = largestDims(shape.dims);
+    residency.fullDims = residency.chosenDims = dimsWithMostVoxels(shape.dims);
     residency.fullBytes = totalBytesIfPlanned(shape, residency.requested, limits.maxTextureSize);
 
     // At full resolution: every storage that shows the same values, fewest changes first.
@@ -104,7 +104,7 @@ GpuResidency fitToGpuMemory(const Series& series, const GpuMemoryLimits& limits)
             residency.storage = storage;
             residency.chosenBytes = *bytes;
             residency.scale = scale;
-            residency.chosenDims = largestDims(coarse.dims);
+            residency.chosenDims = dimsWithMostVoxels(coarse.dims);
             return true;
         };
         if (chooseCoarse(residency.requested) || chooseCoarse({series.precision, false})) return residency;

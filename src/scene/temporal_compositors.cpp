@@ -7,36 +7,40 @@
 namespace tstyles {
 namespace {
 
-using enum TemporalCompositor;
-using enum CompositorReads;
-using enum AutomaticRange;
-
-constexpr std::array kCompositors{
-    TemporalCompositorInfo{MaxIntensityProjection, "temporal-mip", "tc_max_intensity_projection.glsl", IndexTstf,
-                           Change, false, false, "the time-step with the highest STF opacity, by the index TSTF"},
-    TemporalCompositorInfo{Average, "temporal-average", "tc_average.glsl", Composited, Change, false, false,
-                           "colours and opacities averaged over the visible time-steps"},
-    TemporalCompositorInfo{MaxDensityChange, "temporal-max-change", "tc_max_density_change.glsl", GradientTstf,
-                           Change, false, false, "largest minus smallest density, by the gradient TSTF"},
-    TemporalCompositorInfo{Minimum, "temporal-min", "tc_minimum.glsl", IndexTstf, Change, false, false,
-                           "the time-step with the lowest density, by the index TSTF"},
-    TemporalCompositorInfo{StandardDeviation, "temporal-std-dev", "tc_standard_deviation.glsl", GradientTstf,
-                           HalfChange, false, false, "standard deviation of the densities, by the gradient TSTF"},
-    TemporalCompositorInfo{TimeOfMaximum, "time-of-max", "tc_time_of_maximum.glsl", IndexTstf, Change, false,
-                           false, "the time-step of the highest density (time to peak), by the index TSTF"},
-    TemporalCompositorInfo{FirstArrival, "first-arrival", "tc_first_arrival.glsl", IndexTstf, Change, true, false,
-                           "the first time-step at or above the threshold, by the index TSTF"},
-    TemporalCompositorInfo{LastAbove, "last-above", "tc_last_above.glsl", IndexTstf, Change, true, false,
-                           "the last time-step at or above the threshold, by the index TSTF"},
-    TemporalCompositorInfo{LinearTrend, "linear-trend", "tc_linear_trend.glsl", GradientTstf, SignedPerTime, false,
-                           false, "least-squares slope of density over time, by the gradient TSTF"},
-    TemporalCompositorInfo{Chronovolume, "chronovolume", "tc_chronovolume.glsl", Composited, Change, false, false,
-                           "the time-steps composited front to back in time order"},
-    TemporalCompositorInfo{Difference, "difference", "tc_difference.glsl", GradientTstf, SignedChange, false, true,
-                           "density of one time-step minus another's, by the gradient TSTF"},
-    TemporalCompositorInfo{Custom, "custom", "", IndexTstf, Change, false, false,
-                           "the scene's own GLSL over the time-steps at the sample"},
-};
+// The enumerators are brought in inside the initialiser only: CompositorReads shares names with
+// the TSTF types, and the file is compiled in one unity file with others.
+constexpr std::array kCompositors = [] {
+    using enum TemporalCompositor;
+    using enum CompositorReads;
+    using enum AutomaticRange;
+    using Info = TemporalCompositorInfo;
+    return std::array{
+        Info{MaxIntensityProjection, "temporal-mip", "tc_max_intensity_projection.glsl", IndexTstf, Change, false,
+             false, "the time-step with the highest STF opacity, by the index TSTF"},
+        Info{Average, "temporal-average", "tc_average.glsl", Composited, Change, false, false,
+             "colours and opacities averaged over the visible time-steps"},
+        Info{MaxDensityChange, "temporal-max-change", "tc_max_density_change.glsl", GradientTstf, Change, false,
+             false, "largest minus smallest density, by the gradient TSTF"},
+        Info{Minimum, "temporal-min", "tc_minimum.glsl", IndexTstf, Change, false, false,
+             "the time-step with the lowest density, by the index TSTF"},
+        Info{StandardDeviation, "temporal-std-dev", "tc_standard_deviation.glsl", GradientTstf, HalfChange, false,
+             false, "standard deviation of the densities, by the gradient TSTF"},
+        Info{TimeOfMaximum, "time-of-max", "tc_time_of_maximum.glsl", IndexTstf, Change, false, false,
+             "the time-step of the highest density (time to peak), by the index TSTF"},
+        Info{FirstArrival, "first-arrival", "tc_first_arrival.glsl", IndexTstf, Change, true, false,
+             "the first time-step at or above the threshold, by the index TSTF"},
+        Info{LastAbove, "last-above", "tc_last_above.glsl", IndexTstf, Change, true, false,
+             "the last time-step at or above the threshold, by the index TSTF"},
+        Info{LinearTrend, "linear-trend", "tc_linear_trend.glsl", GradientTstf, SignedPerTime, false, false,
+             "least-squares slope of density over time, by the gradient TSTF"},
+        Info{Chronovolume, "chronovolume", "tc_chronovolume.glsl", Composited, Change, false, false,
+             "the time-steps composited front to back in time order"},
+        Info{Difference, "difference", "tc_difference.glsl", GradientTstf, SignedChange, false, true,
+             "density of one time-step minus another's, by the gradient TSTF"},
+        Info{Custom, "custom", "", IndexTstf, Change, false, false,
+             "the scene's own GLSL over the time-steps at the sample"},
+    };
+}();
 
 }  // namespace
 
@@ -49,7 +53,7 @@ const TemporalCompositorInfo& compositorInfo(TemporalCompositor compositor) {
 }
 
 CompositorReads compositorReads(const Scene& scene) {
-    if (scene.compositor == Custom && scene.compositorOptions.custom) return scene.compositorOptions.custom->reads;
+    if (scene.compositor == TemporalCompositor::Custom && scene.compositorOptions.custom) return scene.compositorOptions.custom->reads;
     return compositorInfo(scene.compositor).reads;
 }
 
