@@ -160,7 +160,8 @@ TimeStepInfo timeStepInfo(const Series& series, std::size_t index, const glm::iv
         info.grid = glm::ivec4(contract::GRID_BEAM, azimuths, elevations, 0);
         const float minRange = float(grid.minRange);
         const float maxRange = float(grid.maxRange);
-        info.beamRange = glm::vec4(minRange, maxRange, float(grid.rangeSpacing()), float(dims.z - 1) / (maxRange - minRange));
+        const float rangeSamplesPerUnit = float(dims.z - 1) / (maxRange - minRange);
+        info.beamRange = glm::vec4(minRange, maxRange, float(grid.rangeSpacing()), rangeSamplesPerUnit);
         if (areEvenBeamAngles(grid.azimuthDeg) && areEvenBeamAngles(grid.elevationDeg))
             info.evenBeamFan = evenBeamFan(beamAngles, azimuths, elevations, dims);
         return info;

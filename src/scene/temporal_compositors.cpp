@@ -53,7 +53,8 @@ const TemporalCompositorInfo& compositorInfo(TemporalCompositor compositor) {
 }
 
 CompositorReads compositorReads(const Scene& scene) {
-    if (scene.compositor == TemporalCompositor::Custom && scene.compositorOptions.custom) return scene.compositorOptions.custom->reads;
+    if (scene.compositor == TemporalCompositor::Custom && scene.compositorOptions.custom)
+        return scene.compositorOptions.custom->reads;
     return compositorInfo(scene.compositor).reads;
 }
 
