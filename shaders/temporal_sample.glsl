@@ -82,10 +82,11 @@ TemporalCharacteristic compositedCharacteristic(vec4 colorOpacity) {
     return TemporalCharacteristic(READS_COMPOSITED, 0.0, noTimeStep(), colorOpacity);
 }
 
-// Where the time-step's style is read at this sample (6 fetches when styled).
+// Where the time-step's style is read at this sample (6 fetches when styled, 1 with precomputed
+// gradients).
 SphereCoordinate styleCoordinate(int step, vec3 position, inout int fetches) {
 #if STYLED
-    fetches += 6;
+    fetches += PRECOMPUTED_GRADIENTS != 0 ? 1 : 6;
     return sphereCoordinate(worldGradient(step, position));
 #else
     return SphereCoordinate(vec2(0.5));

@@ -19,12 +19,18 @@
 //   CUSTOM_READS_INDEX  the scene's own compositor (tc_custom.glsl) returns a time-step index
 //   PER_RAY_CACHES      1 for per-ray arrays of time-step data (voxel rays, the average's deferred
 //                       styling): they pay on a CPU rasterizer and cost on a GPU (Renderer decides)
+//   PRECOMPUTED_GRADIENTS 1 when styles read gradients from the gradient atlas (one fetch, computed
+//                       once per series by gradient_atlas.comp) instead of six density fetches
 // Each is a switch and not a run-time test because llvmpipe runs both sides of a branch that the 8
 // pixels it shades together disagree on, masked (docs/performance.md, "llvmpipe and branches").
 #if !defined(STYLED) || !defined(HAS_MASKS) || !defined(ALL_AFFINE) || !defined(STRUCTURED_GRIDS) || \
     !defined(UNEVEN_AXES) || !defined(BEAM_GRIDS) || !defined(EVEN_BEAMS) || !defined(PACKED_ALIGNED) ||   \
     !defined(PACKED_VALIDITY) || !defined(MAX_TIME_STEPS) || !defined(COLLECT_STATISTICS) ||             \
     !defined(CUSTOM_READS_INDEX) || !defined(STYLED_TRACKS) || !defined(SKIP_EMPTY_BRICKS) || \
-    !defined(MISSING_VALUES) || !defined(UNEVEN_AXIS_WALK) || !defined(PER_RAY_CACHES)
+    !defined(MISSING_VALUES) || !defined(UNEVEN_AXIS_WALK) || !defined(PER_RAY_CACHES) ||              \
+    !defined(PRECOMPUTED_GRADIENTS)
 #error "a raycasting switch is not defined: build the program through RaycastVariant"
+#endif
+#if PRECOMPUTED_GRADIENTS && (!ALL_AFFINE || MISSING_VALUES)
+#error "precomputed gradients are for even rectilinear grids without missing values"
 #endif

@@ -115,6 +115,7 @@ ShaderDefines RaycastVariant::defines() const {
         {"SKIP_EMPTY_BRICKS", flag(skipEmptyBricks)},
         {"CUSTOM_READS_INDEX", flag(customReads == CompositorReads::IndexTstf)},
         {"PER_RAY_CACHES", flag(perRayCaches)},
+        {"PRECOMPUTED_GRADIENTS", flag(precomputedGradients)},
     };
 }
 
@@ -172,12 +173,19 @@ std::vector<RaycastVariant> requestableRaycastVariants() {
                             variant.missingValues = validity != PackedValidity::None;
                             variants.push_back(variant);
                         }
-                        continue;
+                        variant.packedValidity = PackedValidity::None;
+                    } else {
+                        for (bool masks : {false, true}) {
+                            variant.masks = masks;
+                            // Both sides of the missing-value switch compile, in half of the set each.
+                            variant.missingValues = masks;
+                            variants.push_back(variant);
+                        }
                     }
-                    for (bool masks : {false, true}) {
-                        variant.masks = masks;
-                        // Both sides of the missing-value switch compile, in half of the set each.
-                        variant.missingValues = masks;
+                    // Precomputed gradients: styled even rectilinear series without missing values.
+                    if (styled && kind.allAffine) {
+                        variant.missingValues = false;
+                        variant.precomputedGradients = true;
                         variants.push_back(variant);
                     }
                 }

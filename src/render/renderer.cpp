@@ -1,6 +1,7 @@
 // The renderer façade: series upload, transfer-table updates and the two passes of a frame.
 #include "tstyles/render/renderer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -34,27 +35,50 @@ Renderer::Renderer(ShaderLibrary shaders)
       raycaster_(shaders_) {}
 
 void Renderer::setSeries(const Series& series, const std::optional<WholeSeries>& whole) {
+    gradientAtlas_.reset();
     gpuSeries_.reset();  // free the old atlas before allocating the new one
     gpuSeries_.emplace(series);
+    gradientMemory_.reset();
     follow(series, whole);
 }
 
 GpuResidency Renderer::setSeries(const Series& series, const GpuMemoryLimits& limits,
                                  const std::optional<WholeSeries>& whole) {
     GpuResidency residency = fitToGpuMemory(series, limits);
+    gradientAtlas_.reset();
     gpuSeries_.reset();
     if (residency.scale != 1.0) gpuSeries_.emplace(coarserSeries(series, residency.scale), residency.storage);
     else gpuSeries_.emplace(series, residency.storage);
     residency.chosenBytes = gpuSeries_->textureBytes();
+    // The gradient atlas takes what the budget leaves, and no more than the driver's largest texture.
+    std::uint64_t left = limits.budgetBytes > residency.chosenBytes ? limits.budgetBytes - residency.chosenBytes : 0;
+    if (limits.largestTextureBytes) left = std::min(left, *limits.largestTextureBytes);
+    gradientMemory_ = left;
     follow(series, whole);
     return residency;
 }
 
 void Renderer::follow(const Series& series, const std::optional<WholeSeries>& whole) {
     occupancyStale_ = true;
+    gradientAtlasTried_ = false;
     worldBounds_ = series.worldBounds();
     finestSpacing_ = whole ? whole->finestSpacing : series.finestSpacing();
     latticeBounds_ = whole ? whole->bounds : worldBounds_;
+}
+
+bool Renderer::usePrecomputedGradients(const RaycastVariant& variant, const FrameOptions& options) {
+    if (!variant.styled() || !options.precomputedGradients.value_or(true) || !GradientAtlas::suits(*gpuSeries_))
+        return false;
+    if (!gradientAtlasTried_) {
+        gradientAtlasTried_ = true;
+        if (!gradientMemory_ || GradientAtlas::bytesFor(gpuSeries_->layout()) <= *gradientMemory_) {
+            if (!gradientProgram_) gradientProgram_ = GradientAtlas::buildProgram(shaders_);
+            gradientAtlas_ = GradientAtlas::compute(*gradientProgram_, *gpuSeries_);
+        }
+    }
+    if (!gradientAtlas_) return false;
+    gradientAtlas_->bind();
+    return true;
 }
 
 double Renderer::stepLengthFor(const Scene& scene) const {
@@ -129,6 +153,7 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     }
     if (options.emptyBrickTest) variant.skipEmptyBricks = *options.emptyBrickTest;
     variant.perRayCaches = options.perRayCaches.value_or(cpuRasterizer_);
+    variant.precomputedGradients = usePrecomputedGradients(variant, options);
     parameters.styleTracks = styleTextures_.trackRanges();
     parameters.worldToView = glm::mat3(view.viewMatrix);
     parameters.styleFootprint = float(styleFootprint(view, options.size.y, finestSpacing_));
@@ -156,7 +181,10 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     glDisable(GL_SCISSOR_TEST);
 }
 
-std::size_t Renderer::seriesTextureBytes() const { return gpuSeries_ ? gpuSeries_->textureBytes() : 0; }
+std::size_t Renderer::seriesTextureBytes() const {
+    if (!gpuSeries_) return 0;
+    return gpuSeries_->textureBytes() + (gradientAtlas_ ? gradientAtlas_->textureBytes() : 0);
+}
 
 std::size_t Renderer::frameTextureBytes() const {
     return entryExitBuffers_.textureBytes() + std::size_t(target_.size().x) * std::size_t(target_.size().y) * 16;

@@ -7,8 +7,11 @@
 #include <memory>
 #include <stdexcept>
 
+#include <unistd.h>
+
 #include "tstyles/data/manifest.h"
 #include "tstyles/gl/headless_context.h"
+#include "tstyles/image/image_io.h"
 
 namespace tstyles::testing {
 namespace {
@@ -121,6 +124,30 @@ TransferFunction1D constantFunction(glm::dvec3 color, double opacity) {
     function.opacity = {{0.0, opacity}};
     function.color = {{0.0, color}};
     return function;
+}
+
+std::filesystem::path styleImageFolder() {
+    static const auto folder = [] {
+        auto path = std::filesystem::temp_directory_path() / ("tstyles_style_tests_" + std::to_string(::getpid()));
+        std::filesystem::remove_all(path);
+        std::filesystem::create_directories(path);
+        return path;
+    }();
+    return folder;
+}
+
+std::string writeStyle(const std::string& name, int width, int height,
+                       const std::function<glm::vec4(glm::vec2)>& colorAt) {
+    Image image(width, height);
+    for (int row = 0; row < height; ++row)
+        for (int column = 0; column < width; ++column) {
+            const glm::vec2 normal((column + 0.5f) / width * 2.0f - 1.0f, 1.0f - (row + 0.5f) / height * 2.0f);
+            const glm::vec4 color = colorAt(normal);
+            image.set(column, row, glm::vec4(glm::vec3(color) * color.a, color.a));  // associated alpha
+        }
+    const auto file = styleImageFolder() / (name + ".png");
+    writeImage(image, file);
+    return file.string();
 }
 
 }  // namespace tstyles::testing

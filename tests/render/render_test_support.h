@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -64,5 +65,12 @@ glm::ivec2 pixelOf(glm::dvec2 world, glm::dvec2 centre, double viewHeight, int s
 
 // A transfer function with one constant colour and opacity.
 TransferFunction1D constantFunction(glm::dvec3 color, double opacity);
+
+// A folder of this test process for style images (ctest runs the EGL and OSMesa variants at once).
+std::filesystem::path styleImageFolder();
+// A lit-sphere style image <name>.png in styleImageFolder(), drawn from a function of the sphere
+// normal's (x, y), y up; returns its path.
+std::string writeStyle(const std::string& name, int width, int height,
+                       const std::function<glm::vec4(glm::vec2)>& colorAt);
 
 }  // namespace tstyles::testing

@@ -5,8 +5,6 @@
 #include <fstream>
 #include <string>
 
-#include <unistd.h>
-
 #include <gtest/gtest.h>
 
 #include "render_test_support.h"
@@ -22,32 +20,6 @@ constexpr double kRadius = 0.35;
 const glm::dvec2 kCentre(0.5, 0.5);
 // 8-bit style texels and mipmap filtering on top of the render tolerance.
 constexpr float kTolerance = 6e-3f;
-
-std::filesystem::path styleFolder() {
-    static const auto folder = [] {
-        // One folder per test process: ctest runs the EGL and OSMesa variants at the same time.
-        auto path = std::filesystem::temp_directory_path() / ("tstyles_style_tests_" + std::to_string(::getpid()));
-        std::filesystem::remove_all(path);
-        std::filesystem::create_directories(path);
-        return path;
-    }();
-    return folder;
-}
-
-// A style image drawn from a function of the sphere normal's (x, y), y up.
-std::string writeStyle(const std::string& name, int width, int height,
-                       const std::function<glm::vec4(glm::vec2)>& colorAt) {
-    Image image(width, height);
-    for (int row = 0; row < height; ++row)
-        for (int column = 0; column < width; ++column) {
-            const glm::vec2 normal((column + 0.5f) / width * 2.0f - 1.0f, 1.0f - (row + 0.5f) / height * 2.0f);
-            const glm::vec4 color = colorAt(normal);
-            image.set(column, row, glm::vec4(glm::vec3(color) * color.a, color.a));  // associated alpha
-        }
-    const auto file = styleFolder() / (name + ".png");
-    writeImage(image, file);
-    return file.string();
-}
 
 // A ball of density 1 with a two-voxel ramp to 0 at radius kRadius, centred in a unit box.
 Series sphereSeries() {
@@ -175,13 +147,13 @@ void expectStyleError(const std::string& style, const std::string& fragment) {
 }
 
 TEST(StyleRender, BadStyleFilesAreErrorsNamingTheFileAndTheProblem) {
-    const auto missing = (styleFolder() / "missing.png").string();
+    const auto missing = (styleImageFolder() / "missing.png").string();
     expectStyleError(missing, "missing.png");
     expectStyleError(missing, "no such file");
     const auto wide = writeStyle("wide", 32, 16, [](glm::vec2) { return glm::vec4(1); });
     expectStyleError(wide, "must be square");
     expectStyleError(wide, "32x16");
-    const auto garbage = styleFolder() / "garbage.png";
+    const auto garbage = styleImageFolder() / "garbage.png";
     std::ofstream(garbage) << "this is not an image";
     expectStyleError(garbage.string(), "garbage.png");
     expectStyleError("no-such-built-in-style", "no built-in style");

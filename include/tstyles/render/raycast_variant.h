@@ -48,6 +48,9 @@ struct RaycastVariant {
     // they pay on a CPU rasterizer, and cost on a GPU, where arrays indexed at run time live in slow
     // per-thread memory (Renderer picks by the driver).
     bool perRayCaches = true;
+    // Styles read gradients from the gradient atlas (render/gradient_atlas.h), one fetch where six
+    // were: for even rectilinear series without missing values (Renderer decides).
+    bool precomputedGradients = false;
 
     auto operator<=>(const RaycastVariant&) const = default;
 

@@ -3,6 +3,7 @@
 // work (transfer-function baking) only when the scene's functions change, per-frame work in draw.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 
@@ -12,6 +13,7 @@
 #include "tstyles/render/entry_exit_buffers.h"
 #include "tstyles/render/gpu_memory_budget.h"
 #include "tstyles/render/gpu_series.h"
+#include "tstyles/render/gradient_atlas.h"
 #include "tstyles/render/raycaster.h"
 #include "tstyles/render/render_target.h"
 #include "tstyles/render/style_textures.h"
@@ -39,6 +41,11 @@ struct FrameOptions {
     // Per-ray arrays of time-step data in the raycaster (RaycastVariant::perRayCaches): by default
     // on a CPU rasterizer and off on a GPU; true or false forces them, for comparison. Same image.
     std::optional<bool> perRayCaches;
+    // Lit-sphere styles read their gradients precomputed once per series (gradient_atlas.h), one
+    // fetch where they took six: by default where the series suits (even rectilinear grids, no
+    // missing values) and the memory budget holds the gradient atlas; false forces the six
+    // fetches, for comparison. The same image but within a voxel of a grid's face, to rounding.
+    std::optional<bool> precomputedGradients;
     // Renders only the parts of the rays inside this world box (one process's block of a
     // distributed render, docs/scaling.md); none: whole rays.
     std::optional<Bounds> clipBox;
@@ -91,9 +98,17 @@ private:
     // After an upload: the step, the opacity reference, the bounds and the sample lattice of
     // `series`, or of the whole it was cut from.
     void follow(const Series& series, const std::optional<WholeSeries>& whole);
+    // Whether this frame's styles read the gradient atlas; computes it the first time one does.
+    bool usePrecomputedGradients(const RaycastVariant& variant, const FrameOptions& options);
 
     ShaderLibrary shaders_;
     std::optional<GpuSeries> gpuSeries_;
+    // The gradient atlas of gpuSeries_, computed when a styled frame first needs it; none before,
+    // or where it does not fit. gradientMemory_: the memory it may take (none: no budget).
+    std::optional<Program> gradientProgram_;
+    std::optional<GradientAtlas> gradientAtlas_;
+    bool gradientAtlasTried_ = false;
+    std::optional<std::uint64_t> gradientMemory_;
     double finestSpacing_ = 1.0;
     Bounds worldBounds_;  // of every time-step: rays outside its projection meet nothing
     Bounds latticeBounds_;  // of the whole series: where each ray's samples are anchored
