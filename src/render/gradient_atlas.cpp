@@ -8,8 +8,8 @@
 namespace tstyles {
 namespace {
 
-// shaders/gradient_atlas.comp's local size.
-constexpr glm::ivec3 kWorkGroupSize{8, 8, 4};
+// Nodes per work group of shaders/gradient_atlas.comp: its local size, one node per invocation.
+constexpr glm::ivec3 kNodesPerWorkGroup{8, 8, 4};
 constexpr GLenum kTexelFormat = GL_RGBA16F;
 constexpr std::size_t kBytesPerTexel = 8;
 
@@ -41,8 +41,8 @@ std::optional<GradientAtlas> GradientAtlas::compute(const Program& program, cons
     const glm::ivec3 cell = layout.cellSize;
     for (std::size_t step = 0; step < series.timeStepCount(); ++step) {
         program.set("step", int(step));
-        glDispatchCompute(groupsFor(cell.x, kWorkGroupSize.x), groupsFor(cell.y, kWorkGroupSize.y),
-                          groupsFor(cell.z, kWorkGroupSize.z));
+        glDispatchCompute(groupsFor(cell.x, kNodesPerWorkGroup.x), groupsFor(cell.y, kNodesPerWorkGroup.y),
+                          groupsFor(cell.z, kNodesPerWorkGroup.z));
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     glBindImageTexture(GLuint(contract::GRADIENT_IMAGE_UNIT), 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, kTexelFormat);

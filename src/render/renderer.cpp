@@ -26,6 +26,12 @@ double styleFootprint(const View& view, int imageHeight, double finestSpacing) {
     return pixelFootprint / (2.0 * featureRadius);
 }
 
+// On a CPU rasterizer the gradient atlas takes about 30 ns a texel to make (llvmpipe, 2 cores: 2.8 s
+// for 87 M texels, 0.14 s for the bundled super-ellipsoid's 2.6 M), so a series of 16 M texels
+// costs about 0.5 s once, a few styled 512² frames' worth; larger series keep the six fetches
+// there (docs/performance.md). A GPU makes it in milliseconds.
+constexpr std::size_t kCpuRasterizerGradientTexels = std::size_t(16) << 20;
+
 }  // namespace
 
 Renderer::Renderer(ShaderLibrary shaders)
@@ -61,6 +67,7 @@ GpuResidency Renderer::setSeries(const Series& series, const GpuMemoryLimits& li
 void Renderer::follow(const Series& series, const std::optional<WholeSeries>& whole) {
     occupancyStale_ = true;
     gradientAtlasTried_ = false;
+    seriesDrawnStyled_ = false;
     worldBounds_ = series.worldBounds();
     finestSpacing_ = whole ? whole->finestSpacing : series.finestSpacing();
     latticeBounds_ = whole ? whole->bounds : worldBounds_;
@@ -69,9 +76,17 @@ void Renderer::follow(const Series& series, const std::optional<WholeSeries>& wh
 bool Renderer::usePrecomputedGradients(const RaycastVariant& variant, const FrameOptions& options) {
     if (!variant.styled() || !options.precomputedGradients.value_or(true) || !GradientAtlas::suits(*gpuSeries_))
         return false;
+    // By default from the series' second styled frame on: one frame (`render`) would spend more on
+    // the atlas than it saves (docs/performance.md).
+    if (!options.precomputedGradients && !seriesDrawnStyled_) {
+        seriesDrawnStyled_ = true;
+        return false;
+    }
     if (!gradientAtlasTried_) {
         gradientAtlasTried_ = true;
-        if (!gradientMemory_ || GradientAtlas::bytesFor(gpuSeries_->layout()) <= *gradientMemory_) {
+        const bool affordable = !cpuRasterizer_ || gpuSeries_->layout().texelCount() <= kCpuRasterizerGradientTexels;
+        const bool fits = !gradientMemory_ || GradientAtlas::bytesFor(gpuSeries_->layout()) <= *gradientMemory_;
+        if (affordable && fits) {
             if (!gradientProgram_) gradientProgram_ = GradientAtlas::buildProgram(shaders_);
             gradientAtlas_ = GradientAtlas::compute(*gradientProgram_, *gpuSeries_);
         }

@@ -42,9 +42,10 @@ struct FrameOptions {
     // on a CPU rasterizer and off on a GPU; true or false forces them, for comparison. Same image.
     std::optional<bool> perRayCaches;
     // Lit-sphere styles read their gradients precomputed once per series (gradient_atlas.h), one
-    // fetch where they took six: by default where the series suits (even rectilinear grids, no
-    // missing values) and the memory budget holds the gradient atlas; false forces the six
-    // fetches, for comparison. The same image but within a voxel of a grid's face, to rounding.
+    // fetch where they took six: by default from the series' second styled frame on, where the
+    // series suits (even rectilinear grids, no missing values) and the memory budget holds the
+    // gradient atlas; true from the first such frame, false never (for comparison). The same
+    // image but within a voxel of a grid's face, to rounding.
     std::optional<bool> precomputedGradients;
     // Renders only the parts of the rays inside this world box (one process's block of a
     // distributed render, docs/scaling.md); none: whole rays.
@@ -103,11 +104,12 @@ private:
 
     ShaderLibrary shaders_;
     std::optional<GpuSeries> gpuSeries_;
-    // The gradient atlas of gpuSeries_, computed when a styled frame first needs it; none before,
-    // or where it does not fit. gradientMemory_: the memory it may take (none: no budget).
+    // The gradient atlas of gpuSeries_, computed at its second styled frame (FrameOptions::
+    // precomputedGradients); none before, or where it does not fit. gradientMemory_: the memory it may take (none: no budget).
     std::optional<Program> gradientProgram_;
     std::optional<GradientAtlas> gradientAtlas_;
     bool gradientAtlasTried_ = false;
+    bool seriesDrawnStyled_ = false;  // a styled frame of gpuSeries_ was drawn (with six-fetch gradients)
     std::optional<std::uint64_t> gradientMemory_;
     double finestSpacing_ = 1.0;
     Bounds worldBounds_;  // of every time-step: rays outside its projection meet nothing
