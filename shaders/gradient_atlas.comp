@@ -2,12 +2,12 @@
 // Precomputed gradients for lit-sphere styles (gradient.glsl, PRECOMPUTED_GRADIENTS): for every
 // node of one time-step's brick, the density's central differences one voxel apart in its own grid
 // (one-sided at the brick's faces), written into the gradient atlas, which has the density atlas'
-// layout. Trilinear filtering of these node differences is, in exact
-// arithmetic, the on-the-fly gradient of worldGradient() at every position at least one voxel
-// inside the grid: there both are differences of trilinear interpolation with the same weights.
-// Within a voxel of a face the on-the-fly difference narrows its span; the filtered one blends the
-// face's one-sided difference with the next node's central one. Only for series whose grids are
-// all even rectilinear (voxel coordinates affine in world position) and have no missing values.
+// layout. Trilinear filtering of these node differences is, in exact arithmetic, the on-the-fly
+// gradient of worldGradient() at every position at least one voxel inside the grid: there both are
+// differences of trilinear interpolation with the same weights. Within a voxel of a face the
+// on-the-fly difference narrows its span; the filtered one blends the face's one-sided difference
+// with the next node's central one. Only for series whose grids are all even rectilinear (voxel
+// coordinates affine in world position) and have no missing values.
 #include "contract.glsl"
 #include "time_steps.glsl"
 

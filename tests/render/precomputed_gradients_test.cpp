@@ -86,13 +86,14 @@ TEST(PrecomputedGradients, ALinearFieldShadesWithItsClosedFormNormalBothWays) {
         for (const bool precomputed : {true, false}) {
             const Image image = renderSeries(series, scene, withGradients(precomputed));
             // The middle pixel and its neighbours a quarter of the box away, all inside it.
+            const glm::dvec2 middle(centre);
             for (const glm::dvec2 offset : {glm::dvec2(0.0), glm::dvec2(0.1, 0.05), glm::dvec2(-0.1, -0.05)}) {
-                const glm::ivec2 pixel = pixelOf(glm::dvec2(centre) + offset, glm::dvec2(centre), kViewSpan, kImageSize);
+                const glm::ivec2 pixel = pixelOf(middle + offset, middle, kViewSpan, kImageSize);
                 const glm::vec4 actual = image.at(pixel.x, pixel.y);
                 for (int channel = 0; channel < 4; ++channel)
                     EXPECT_NEAR(actual[channel], expected[channel], kColourTolerance)
-                        << (precomputed ? "precomputed" : "six fetches") << ", turned " << angleDeg << " degrees, channel "
-                        << channel << ", offset " << offset.x << "," << offset.y;
+                        << (precomputed ? "precomputed" : "six fetches") << ", turned " << angleDeg
+                        << " degrees, channel " << channel << ", offset " << offset.x << "," << offset.y;
             }
         }
     }

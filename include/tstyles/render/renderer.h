@@ -99,13 +99,14 @@ private:
     // After an upload: the step, the opacity reference, the bounds and the sample lattice of
     // `series`, or of the whole it was cut from.
     void follow(const Series& series, const std::optional<WholeSeries>& whole);
-    // Whether this frame's styles read the gradient atlas; computes it the first time one does.
+    // Whether this frame's styles read the gradient atlas; makes it when one first should.
     bool usePrecomputedGradients(const RaycastVariant& variant, const FrameOptions& options);
 
     ShaderLibrary shaders_;
     std::optional<GpuSeries> gpuSeries_;
-    // The gradient atlas of gpuSeries_, computed at its second styled frame (FrameOptions::
-    // precomputedGradients); none before, or where it does not fit. gradientMemory_: the memory it may take (none: no budget).
+    // The gradient atlas of gpuSeries_, made at its second styled frame (FrameOptions::
+    // precomputedGradients); none before, or where it does not fit. gradientMemory_: the memory it
+    // may take (none: no budget).
     std::optional<Program> gradientProgram_;
     std::optional<GradientAtlas> gradientAtlas_;
     bool gradientAtlasTried_ = false;
