@@ -197,8 +197,7 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
 }
 
 std::size_t Renderer::seriesTextureBytes() const {
-    if (!gpuSeries_) return 0;
-    return gpuSeries_->textureBytes() + (gradientAtlas_ ? gradientAtlas_->textureBytes() : 0);
+    return gpuSeries_ ? gpuSeries_->textureBytes() + gradientTextureBytes() : 0;
 }
 
 std::size_t Renderer::frameTextureBytes() const {

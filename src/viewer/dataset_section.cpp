@@ -91,9 +91,16 @@ void drawDatasetSection(SidePanelState& state, UiAnchors&) {
     ImGui::Text("values %.4g .. %.4g = density 0 .. 1", series.valueRange[0], series.valueRange[1]);
     ImGui::Text("disk %s, GPU %s", bytesText(diskBytes(series)).c_str(),
                 bytesText(state.memory.seriesBytes).c_str());
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("GPU textures: series atlas %s, per-frame buffers %s",
-                          bytesText(state.memory.seriesBytes).c_str(), bytesText(state.memory.frameBytes).c_str());
+    if (ImGui::IsItemHovered()) {
+        const std::size_t atlasBytes = state.memory.seriesBytes - state.memory.gradientBytes;
+        if (state.memory.gradientBytes > 0)
+            ImGui::SetTooltip("GPU textures: series atlas %s, gradients for styles %s, per-frame buffers %s",
+                              bytesText(atlasBytes).c_str(), bytesText(state.memory.gradientBytes).c_str(),
+                              bytesText(state.memory.frameBytes).c_str());
+        else
+            ImGui::SetTooltip("GPU textures: series atlas %s, per-frame buffers %s", bytesText(atlasBytes).c_str(),
+                              bytesText(state.memory.frameBytes).c_str());
+    }
     // A series stored smaller or coarser than read says so where its memory is shown (--max-gpu-memory).
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.3f, 1.0f));
     for (const std::string& change : state.memory.storageChanges) ImGui::TextWrapped("GPU: %s", change.c_str());

@@ -21,6 +21,7 @@ namespace tstyles::viewer {
 
 struct GpuMemory {
     std::size_t seriesBytes = 0;
+    std::size_t gradientBytes = 0;  // of seriesBytes, the precomputed gradients for styles
     std::size_t frameBytes = 0;
     // What the GPU memory limits changed in how the series is stored (residencyChanges); empty: as read.
     std::vector<std::string> storageChanges;

@@ -117,7 +117,8 @@ void ViewerApp::buildUi(double seconds) {
                         time_,
                         pick_,
                         std::exchange(pickIsNew_, false),
-                        {renderer_.seriesTextureBytes(), renderer_.frameTextureBytes(), gpuStorageChanges_},
+                        {renderer_.seriesTextureBytes(), renderer_.gradientTextureBytes(),
+                         renderer_.frameTextureBytes(), gpuStorageChanges_},
                         0.5 * document_.series->finestSpacing(),
                         animation_};
     drawSidePanel(layout_.sidePanel, side, commands_, anchors_);

@@ -88,9 +88,11 @@ public:
     // Rays of the last frame cut short by the driver (Raycaster::lastCutShortRays).
     std::uint32_t lastCutShortRays() const { return raycaster_.lastCutShortRays(); }
     const RenderTarget& target() const { return target_; }
-    // Texture memory of the series (atlases) and of the per-frame buffers.
+    // Texture memory of the series (atlases, the gradient atlas included) and of the per-frame buffers.
     std::size_t seriesTextureBytes() const;
     std::size_t frameTextureBytes() const;
+    // Of the series' texture memory, the gradient atlas' (0 while there is none).
+    std::size_t gradientTextureBytes() const { return gradientAtlas_ ? gradientAtlas_->textureBytes() : 0; }
 
     // The world-space step a scene asks for: its own, or half the finest voxel spacing.
     double stepLengthFor(const Scene& scene) const;
