@@ -1,7 +1,6 @@
 // The renderer façade: series upload, transfer-table updates and the two passes of a frame.
 #include "tstyles/render/renderer.h"
 
-#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -26,74 +25,39 @@ double styleFootprint(const View& view, int imageHeight, double finestSpacing) {
     return pixelFootprint / (2.0 * featureRadius);
 }
 
-// On a CPU rasterizer the gradient atlas takes about 30 ns a texel to make (llvmpipe, 2 cores: 2.8 s
-// for 87 M texels, 0.14 s for the bundled super-ellipsoid's 2.6 M), so a series of 16 M texels
-// costs about 0.5 s once, a few styled 512² frames' worth; larger series keep the six fetches
-// there (docs/performance.md). A GPU makes it in milliseconds.
-constexpr std::size_t kCpuRasterizerGradientTexels = std::size_t(16) << 20;
-
 }  // namespace
 
 Renderer::Renderer(ShaderLibrary shaders)
     : shaders_(std::move(shaders)),
       cpuRasterizer_(isCpuRasterizer(currentGlRenderer())),
+      gradients_(shaders_, cpuRasterizer_),
       entryExitBuffers_(shaders_),
       raycaster_(shaders_) {}
 
 void Renderer::setSeries(const Series& series, const std::optional<WholeSeries>& whole) {
-    gradientAtlas_.reset();
+    gradients_.startSeries(std::nullopt);
     gpuSeries_.reset();  // free the old atlas before allocating the new one
     gpuSeries_.emplace(series);
-    gradientMemory_.reset();
     follow(series, whole);
 }
 
 GpuResidency Renderer::setSeries(const Series& series, const GpuMemoryLimits& limits,
                                  const std::optional<WholeSeries>& whole) {
     GpuResidency residency = fitToGpuMemory(series, limits);
-    gradientAtlas_.reset();
+    gradients_.startSeries(limits);
     gpuSeries_.reset();
     if (residency.scale != 1.0) gpuSeries_.emplace(coarserSeries(series, residency.scale), residency.storage);
     else gpuSeries_.emplace(series, residency.storage);
     residency.chosenBytes = gpuSeries_->textureBytes();
-    // The gradient atlas takes what the budget leaves, and no more than the driver's largest texture.
-    std::uint64_t left = limits.budgetBytes > residency.chosenBytes ? limits.budgetBytes - residency.chosenBytes : 0;
-    if (limits.largestTextureBytes) left = std::min(left, *limits.largestTextureBytes);
-    gradientMemory_ = left;
     follow(series, whole);
     return residency;
 }
 
 void Renderer::follow(const Series& series, const std::optional<WholeSeries>& whole) {
     occupancyStale_ = true;
-    gradientAtlasTried_ = false;
-    seriesDrawnStyled_ = false;
     worldBounds_ = series.worldBounds();
     finestSpacing_ = whole ? whole->finestSpacing : series.finestSpacing();
     latticeBounds_ = whole ? whole->bounds : worldBounds_;
-}
-
-bool Renderer::usePrecomputedGradients(const RaycastVariant& variant, const FrameOptions& options) {
-    if (!variant.styled() || !options.precomputedGradients.value_or(true) || !GradientAtlas::suits(*gpuSeries_))
-        return false;
-    // By default from the series' second styled frame on: one frame (`render`) would spend more on
-    // the atlas than it saves (docs/performance.md).
-    if (!options.precomputedGradients && !seriesDrawnStyled_) {
-        seriesDrawnStyled_ = true;
-        return false;
-    }
-    if (!gradientAtlasTried_) {
-        gradientAtlasTried_ = true;
-        const bool affordable = !cpuRasterizer_ || gpuSeries_->layout().texelCount() <= kCpuRasterizerGradientTexels;
-        const bool fits = !gradientMemory_ || GradientAtlas::bytesFor(gpuSeries_->layout()) <= *gradientMemory_;
-        if (affordable && fits) {
-            if (!gradientProgram_) gradientProgram_ = GradientAtlas::buildProgram(shaders_);
-            gradientAtlas_ = GradientAtlas::compute(*gradientProgram_, *gpuSeries_);
-        }
-    }
-    if (!gradientAtlas_) return false;
-    gradientAtlas_->bind();
-    return true;
 }
 
 double Renderer::stepLengthFor(const Scene& scene) const {
@@ -168,7 +132,8 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     }
     if (options.emptyBrickTest) variant.skipEmptyBricks = *options.emptyBrickTest;
     variant.perRayCaches = options.perRayCaches.value_or(cpuRasterizer_);
-    variant.precomputedGradients = usePrecomputedGradients(variant, options);
+    variant.precomputedGradients =
+        gradients_.useFor(*gpuSeries_, variant.styled(), options.precomputedGradients);
     parameters.styleTracks = styleTextures_.trackRanges();
     parameters.worldToView = glm::mat3(view.viewMatrix);
     parameters.styleFootprint = float(styleFootprint(view, options.size.y, finestSpacing_));

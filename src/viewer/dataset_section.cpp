@@ -92,14 +92,12 @@ void drawDatasetSection(SidePanelState& state, UiAnchors&) {
     ImGui::Text("disk %s, GPU %s", bytesText(diskBytes(series)).c_str(),
                 bytesText(state.memory.seriesBytes).c_str());
     if (ImGui::IsItemHovered()) {
-        const std::size_t atlasBytes = state.memory.seriesBytes - state.memory.gradientBytes;
-        if (state.memory.gradientBytes > 0)
-            ImGui::SetTooltip("GPU textures: series atlas %s, gradients for styles %s, per-frame buffers %s",
-                              bytesText(atlasBytes).c_str(), bytesText(state.memory.gradientBytes).c_str(),
-                              bytesText(state.memory.frameBytes).c_str());
-        else
-            ImGui::SetTooltip("GPU textures: series atlas %s, per-frame buffers %s", bytesText(atlasBytes).c_str(),
-                              bytesText(state.memory.frameBytes).c_str());
+        const std::size_t gradientBytes = state.memory.gradientBytes;
+        const std::string gradients =
+            gradientBytes > 0 ? ", gradients for styles " + bytesText(gradientBytes) : std::string();
+        ImGui::SetTooltip("GPU textures: series atlas %s%s, per-frame buffers %s",
+                          bytesText(state.memory.seriesBytes - gradientBytes).c_str(), gradients.c_str(),
+                          bytesText(state.memory.frameBytes).c_str());
     }
     // A series stored smaller or coarser than read says so where its memory is shown (--max-gpu-memory).
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.3f, 1.0f));

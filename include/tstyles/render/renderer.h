@@ -3,7 +3,6 @@
 // work (transfer-function baking) only when the scene's functions change, per-frame work in draw.
 #pragma once
 
-#include <cstdint>
 #include <memory>
 #include <optional>
 
@@ -13,7 +12,7 @@
 #include "tstyles/render/entry_exit_buffers.h"
 #include "tstyles/render/gpu_memory_budget.h"
 #include "tstyles/render/gpu_series.h"
-#include "tstyles/render/gradient_atlas.h"
+#include "tstyles/render/precomputed_gradients.h"
 #include "tstyles/render/raycaster.h"
 #include "tstyles/render/render_target.h"
 #include "tstyles/render/style_textures.h"
@@ -92,7 +91,7 @@ public:
     std::size_t seriesTextureBytes() const;
     std::size_t frameTextureBytes() const;
     // Of the series' texture memory, the gradient atlas' (0 while there is none).
-    std::size_t gradientTextureBytes() const { return gradientAtlas_ ? gradientAtlas_->textureBytes() : 0; }
+    std::size_t gradientTextureBytes() const { return gradients_.textureBytes(); }
 
     // The world-space step a scene asks for: its own, or half the finest voxel spacing.
     double stepLengthFor(const Scene& scene) const;
@@ -101,24 +100,15 @@ private:
     // After an upload: the step, the opacity reference, the bounds and the sample lattice of
     // `series`, or of the whole it was cut from.
     void follow(const Series& series, const std::optional<WholeSeries>& whole);
-    // Whether this frame's styles read the gradient atlas; makes it when one first should.
-    bool usePrecomputedGradients(const RaycastVariant& variant, const FrameOptions& options);
 
     ShaderLibrary shaders_;
     std::optional<GpuSeries> gpuSeries_;
-    // The gradient atlas of gpuSeries_, made at its second styled frame (FrameOptions::
-    // precomputedGradients); none before, or where it does not fit. gradientMemory_: the memory it
-    // may take (none: no budget).
-    std::optional<Program> gradientProgram_;
-    std::optional<GradientAtlas> gradientAtlas_;
-    bool gradientAtlasTried_ = false;
-    bool seriesDrawnStyled_ = false;  // a styled frame of gpuSeries_ was drawn (with six-fetch gradients)
-    std::optional<std::uint64_t> gradientMemory_;
     double finestSpacing_ = 1.0;
     Bounds worldBounds_;  // of every time-step: rays outside its projection meet nothing
     Bounds latticeBounds_;  // of the whole series: where each ray's samples are anchored
     bool occupancyStale_ = true;  // a new series needs its brick visibility computed
     bool cpuRasterizer_;          // the context renders on the CPU (llvmpipe): see perRayCaches
+    PrecomputedGradients gradients_;  // the gradient atlas of gpuSeries_ (FrameOptions::precomputedGradients)
     TransferTables transferTables_;
     StyleTextures styleTextures_;
     EntryExitBuffers entryExitBuffers_;
