@@ -135,7 +135,7 @@ int runDistributedAnimate(const AnimateOptions& options) {
     std::optional<DistributedSource> source;
     mpi.together("reading the scene and the series", [&] {
         parseGpuMemoryOption(options.gpuMemory);
-        source = openDistributedSource(options.inputs, {}, options.dataset);
+        source = openDistributedSource(options.inputs, {}, options.dataset, ValueFitting::BeforeReading);
         plan = planAnimation(options, std::move(source->opened), mpi.isFirst());
     });
     std::unique_ptr<HeadlessContext> context;

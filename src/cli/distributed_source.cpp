@@ -6,44 +6,73 @@
 #include "tstyles/data/manifest.h"
 #include "tstyles/data/series_opener.h"
 #include "tstyles/distributed/block_reading.h"
+#include "tstyles/scene/automatic_scene.h"
 #include "tstyles/scene/input_kind.h"
 #include "tstyles/scene/scene_file.h"
 
 namespace tstyles::cli {
 namespace {
 
-// Why the scene file's dataset cannot be read in blocks; empty where it can.
-std::string whyNotInBlocks(const Scene& scene, const std::vector<std::filesystem::path>& dataset,
-                           const DatasetOptions& options) {
+// Why the dataset cannot be read in blocks; empty where it can.
+std::string whyNotInBlocks(const std::vector<std::filesystem::path>& dataset, const DatasetOptions& options) {
     if (dataset.size() != 1 || !isManifestInput(dataset.front()))
         return "only a tstyles manifest is read in blocks (`tstyles convert` makes one)";
     const bool readingOptions = !options.variable.empty() || !options.timeDimension.empty() || options.indexAxes ||
                                 options.steps || options.range || options.resample || options.rawDims || options.fit ||
                                 !options.solutions.empty() || options.block != 0;
     if (readingOptions) return "a reader's options were given";
-    if (scene.gradientTstf.automaticRange)
-        return "the scene's gradient TSTF range is \"auto\", which is fitted to the values (a fixed range reads blocks)";
-    if (scene.camera.framing == Framing::Visible)
-        return "the camera frames the visible data, which the values decide (\"frame\": \"series\" reads blocks)";
     return "";
+}
+
+// Why a scene file's values must be known before any frame is planned; empty where they need not.
+std::string whyNotFittedAfterReading(const Scene& scene) {
+    if (scene.gradientTstf.automaticRange)
+        return "the scene's gradient TSTF range is \"auto\", which is fitted to the values before the frames are "
+               "planned (a fixed range reads blocks)";
+    if (scene.camera.framing == Framing::Visible)
+        return "the camera frames the visible data, which the values decide before the frames are planned "
+               "(\"frame\": \"series\" reads blocks)";
+    return "";
+}
+
+Series outlineFor(const std::filesystem::path& manifest, const DatasetOptions& datasetOptions) {
+    Series outline = loadSeriesOutline(manifest);
+    outline.precision = toReadOptions(datasetOptions).precision;
+    return outline;
 }
 
 }  // namespace
 
 DistributedSource openDistributedSource(const std::vector<std::filesystem::path>& inputs,
                                         const std::vector<std::filesystem::path>& datasetFiles,
-                                        const DatasetOptions& datasetOptions) {
-    if (inputs.size() != 1 || classifyInput(inputs.front()) != InputKind::Scene)
-        return {openSceneOrDataset(inputs, datasetFiles, datasetOptions), std::nullopt,
-                "the automatic scene is fitted to the values (`tstyles scene` writes it to a file to fix)"};
+                                        const DatasetOptions& datasetOptions, ValueFitting fitting) {
+    const auto wholeSeries = [&](std::string reason) {
+        return DistributedSource{openSceneOrDataset(inputs, datasetFiles, datasetOptions), std::nullopt,
+                                 std::move(reason)};
+    };
+    if (inputs.size() != 1 || classifyInput(inputs.front()) != InputKind::Scene) {
+        if (fitting == ValueFitting::BeforeReading)
+            return wholeSeries("the automatic scene is fitted to the values before the frames are planned "
+                               "(`tstyles scene` writes it to a file to fix)");
+        if (std::string reason = whyNotInBlocks(inputs, datasetOptions); !reason.empty())
+            return wholeSeries(std::move(reason));
+        for (const auto& input : inputs)
+            if (!std::filesystem::exists(input)) throwInputError(input, "", "no such file or folder");
+        Series outline = outlineFor(inputs.front(), datasetOptions);
+        // The opacity window comes from the blocks' histogram (fitting_over_blocks.h).
+        AutomaticScene automatic =
+            automaticScene(outline, std::filesystem::absolute(inputs.front()).lexically_normal(), OpacityWindow{});
+        return {SceneAndSeries{std::move(automatic.scene), std::move(outline), std::move(automatic.explanation)},
+                inputs.front(), "", true};
+    }
     Scene scene = loadScene(inputs.front());
     const std::vector<std::filesystem::path> dataset =
         datasetFiles.empty() ? std::vector<std::filesystem::path>{scene.dataset} : datasetFiles;
-    std::string reason = whyNotInBlocks(scene, dataset, datasetOptions);
-    if (!reason.empty()) return {openSceneOrDataset(inputs, datasetFiles, datasetOptions), std::nullopt, reason};
-    Series outline = loadSeriesOutline(dataset.front());
-    outline.precision = toReadOptions(datasetOptions).precision;
-    return {SceneAndSeries{std::move(scene), std::move(outline), {}}, dataset.front(), ""};
+    std::string reason = whyNotInBlocks(dataset, datasetOptions);
+    if (reason.empty() && fitting == ValueFitting::BeforeReading) reason = whyNotFittedAfterReading(scene);
+    if (!reason.empty()) return wholeSeries(std::move(reason));
+    Series outline = outlineFor(dataset.front(), datasetOptions);
+    return {SceneAndSeries{std::move(scene), std::move(outline), {}}, dataset.front(), "", false};
 }
 
 DistributedRendering startDistributedRendering(const MpiSession& mpi, Renderer& renderer, SceneOnSeries fitted,
@@ -56,7 +85,8 @@ DistributedRendering startDistributedRendering(const MpiSession& mpi, Renderer& 
     const std::filesystem::path manifest = *source.blockManifest;
     return DistributedRendering(
         mpi, renderer, std::move(fitted),
-        [&](const Bounds& box) { return readManifestBlock(manifest, options, displayOutline, frame, box); }, upload);
+        [&](const Bounds& box) { return readManifestBlock(manifest, options, displayOutline, frame, box); }, upload,
+        source.automaticOpacity);
 }
 
 std::string readingText(const DistributedSource& source, const Series& series) {

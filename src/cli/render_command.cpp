@@ -125,7 +125,10 @@ int runDistributedRender(const RenderOptions& options) {
     mpi.together("reading the scene and the series", [&] {
         if (mpi.isFirst()) requireWritableImagePath(options.output);
         parseGpuMemoryOption(options.gpuMemory);
-        source = openDistributedSource(options.inputs, options.datasetFiles, options.dataset);
+        // One frame: the scene's value-dependent parts can wait for the blocks; --frame K plans the
+        // animation from the fitted scene first.
+        source = openDistributedSource(options.inputs, options.datasetFiles, options.dataset,
+                                       options.frame ? ValueFitting::BeforeReading : ValueFitting::AfterReading);
         fitted = fittedSceneFor(options, std::move(source->opened));
     });
     std::unique_ptr<HeadlessContext> context;

@@ -25,7 +25,7 @@ int longestAxis(const Bounds& bounds) {
 }  // namespace
 
 BlockDecomposition::BlockDecomposition(const Bounds& bounds, int processCount)
-    : factors_(processCount > 1 ? primeFactors(processCount) : std::vector<int>{}) {
+    : bounds_(bounds), factors_(processCount > 1 ? primeFactors(processCount) : std::vector<int>{}) {
     if (processCount < 1) throw std::invalid_argument("BlockDecomposition: no processes");
     blocks_.assign(std::size_t(processCount), bounds);
     splitAxes_.assign(std::size_t(processCount), std::vector<int>(factors_.size(), 0));
@@ -43,6 +43,19 @@ BlockDecomposition::BlockDecomposition(const Bounds& bounds, int processCount)
             if (slab + 1 < slabs) block.upper[axis] = lower + width * (slab + 1);
             splitAxes_[std::size_t(rank)][std::size_t(level)] = axis;
         }
+}
+
+int BlockDecomposition::ownerOf(const glm::dvec3& point) const {
+    const glm::dvec3 inside = glm::clamp(point, bounds_.lower, bounds_.upper);
+    for (std::size_t rank = 0; rank < blocks_.size(); ++rank) {
+        const Bounds& block = blocks_[rank];
+        bool holds = true;
+        for (int axis = 0; axis < 3 && holds; ++axis)
+            holds = inside[axis] >= block.lower[axis] &&
+                    (inside[axis] < block.upper[axis] || block.upper[axis] == bounds_.upper[axis]);
+        if (holds) return int(rank);
+    }
+    throw std::logic_error("BlockDecomposition::ownerOf: no block holds the point");
 }
 
 int BlockDecomposition::digit(int rank, int level) const {

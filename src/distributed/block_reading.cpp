@@ -21,14 +21,16 @@ TimeStep inDisplayFrame(TimeStep step, const std::filesystem::path& manifestPath
 
 }  // namespace
 
-Series readManifestBlock(const std::filesystem::path& manifest, const ReadOptions& options,
+BlockOfSeries readManifestBlock(const std::filesystem::path& manifest, const ReadOptions& options,
                          const Series& displayOutline, const DisplayFrame& frame, const Bounds& box) {
     ManifestLimits limits{options.maxMemoryBytes, bytesPerDensity(options.precision), {}, {}, 0};
     for (const TimeStep& step : displayOutline.steps) limits.keptVoxels += croppedVoxelCount(step, box, kBlockGhostNodes);
     // The nodes that the time-step keeps in the display frame; framing moves and scales a grid but
     // keeps its nodes, so they are the nodes to read of the file's grid.
-    limits.nodesToRead = [&](std::size_t, const TimeStep& outline) {
-        return nodesKeptOf(inDisplayFrame(outline, displayOutline.manifestPath, frame), box, kBlockGhostNodes);
+    std::vector<std::optional<NodeBlock>> nodes(displayOutline.steps.size());
+    limits.nodesToRead = [&](std::size_t index, const TimeStep& outline) {
+        nodes.at(index) = nodesKeptOf(inDisplayFrame(outline, displayOutline.manifestPath, frame), box, kBlockGhostNodes);
+        return nodes[index];
     };
     limits.afterStepRead = [&](std::size_t, TimeStep& step) {
         step = inDisplayFrame(std::move(step), displayOutline.manifestPath, frame);
@@ -37,7 +39,7 @@ Series readManifestBlock(const std::filesystem::path& manifest, const ReadOption
     Series block = loadSeries(manifest, limits);
     block.precision = options.precision;
     block.axes = displayOutline.axes;
-    return block;
+    return {std::move(block), std::move(nodes)};
 }
 
 }  // namespace tstyles

@@ -2,8 +2,10 @@
 #include "tstyles/distributed/distributed_rendering.h"
 
 #include <chrono>
+#include <optional>
 
 #include "tstyles/data/series_crop.h"
+#include "tstyles/distributed/fitting_over_blocks.h"
 #include "tstyles/distributed/sort_last_compositing.h"
 
 namespace tstyles {
@@ -46,18 +48,25 @@ DistributedRendering::DistributedRendering(const MpiSession& mpi, Renderer& rend
 }
 
 DistributedRendering::DistributedRendering(const MpiSession& mpi, Renderer& renderer, SceneOnSeries fittedOutline,
-                                           const BlockReader& read, const BlockUpload& upload)
+                                           const BlockReader& read, const BlockUpload& upload, bool automaticOpacity)
     : DistributedRendering(mpi, renderer, std::move(fittedOutline.scene), fittedOutline.series.worldBounds(),
                            fittedOutline.framed, fittedOutline.frame) {
-    mpi_.together("reading this process's block", [&] {
-        const Series block = read(blocks_.block(mpi_.rank()));
+    std::optional<BlockOfSeries> block;
+    mpi_.together("reading this process's block", [&] { block = read(blocks_.block(mpi_.rank())); });
+    if (fittingReadsValues(scene_, automaticOpacity)) {
+        SceneFittedOverBlocks fitted =
+            fitOverBlocks(mpi_, blocks_, scene_, automaticOpacity, fittedOutline.series, *block, framed_);
+        scene_ = std::move(fitted.scene);
+        framed_ = fitted.framed;
+    }
+    mpi_.together("keeping this process's block", [&] {
         // The value range and each time-step's raw range come from the values, which the outline
         // has not read; every block has them of the whole series.
         Series& outline = fittedOutline.series;
-        outline.valueRange = block.valueRange;
+        outline.valueRange = block->series.valueRange;
         for (std::size_t index = 0; index < outline.steps.size(); ++index)
-            outline.steps[index].rawRange = block.steps[index].rawRange;
-        keepBlock(block, std::move(outline), upload);
+            outline.steps[index].rawRange = block->series.steps[index].rawRange;
+        keepBlock(block->series, std::move(outline), upload);
     });
     if (mpi_.isFirst()) annotator_.emplace(outline_, framed_, frame_);
 }

@@ -96,6 +96,32 @@ double MpiSession::maximum(double value) const {
     return value;
 }
 
+std::vector<double> MpiSession::sum(std::vector<double> values) const {
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), int(values.size()), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    return values;
+}
+
+std::vector<double> MpiSession::maximum(std::vector<double> values) const {
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), int(values.size()), MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    return values;
+}
+
+std::vector<double> MpiSession::gathered(const std::vector<double>& values) const {
+    const int count = int(values.size());
+    std::vector<int> counts(std::size_t(processCount_), 0);
+    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+    std::vector<int> offsets(std::size_t(processCount_), 0);
+    int total = 0;
+    for (std::size_t process = 0; process < counts.size(); ++process) {
+        offsets[process] = total;
+        total += counts[process];
+    }
+    std::vector<double> all(static_cast<std::size_t>(total));
+    MPI_Allgatherv(values.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE,
+                   MPI_COMM_WORLD);
+    return all;
+}
+
 void MpiSession::send(int process, const std::vector<std::uint8_t>& bytes) const {
     std::uint64_t length = bytes.size();
     MPI_Send(&length, 1, MPI_UINT64_T, process, kBytesTag, MPI_COMM_WORLD);

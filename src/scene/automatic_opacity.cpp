@@ -1,5 +1,5 @@
 // Background peak and percentile window of the density histogram (automatic_opacity.h).
-#include "automatic_opacity.h"
+#include "tstyles/scene/automatic_opacity.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 namespace tstyles {
 namespace {
 
-constexpr int kBins = 1024;
+constexpr int kBins = kOpacityHistogramBins;
 // At most this many values are counted; larger series are subsampled with a regular stride.
 constexpr std::size_t kMostCountedValues = std::size_t(1) << 23;
 // A peak that holds this share of all values within kPeakHalfWidth bins of its top is a background
@@ -24,19 +24,10 @@ constexpr double kTargetRayOpacity = 0.95;
 
 double binCentre(int bin) { return (double(bin) + 0.5) / kBins; }
 
-std::vector<double> densityHistogram(const Series& series, std::size_t& voxelsPerStep) {
+std::size_t totalVoxels(const Series& series) {
     std::size_t total = 0;
-    for (const TimeStep& step : series.steps) total += step.density.size();
-    voxelsPerStep = series.steps.empty() ? 0 : total / series.steps.size();
-    const std::size_t stride = std::max<std::size_t>(1, total / kMostCountedValues);
-    std::vector<double> counts(kBins, 0.0);
-    for (const TimeStep& step : series.steps)
-        for (std::size_t index = 0; index < step.density.size(); index += stride) {
-            const float density = step.density[index];
-            if (isMissing(density)) continue;
-            counts[std::size_t(std::clamp(int(density * kBins), 0, kBins - 1))] += 1.0;
-        }
-    return counts;
+    for (const TimeStep& step : series.steps) total += gridVoxelCount(step.grid);
+    return total;
 }
 
 // The density below which `fraction` of the counted values lie.
@@ -51,10 +42,29 @@ double percentile(const std::vector<double>& counts, double total, double fracti
 
 }  // namespace
 
+int opacityHistogramBin(float density) { return std::clamp(int(density * kBins), 0, kBins - 1); }
+
+std::size_t opacityHistogramStride(const Series& series) {
+    return std::max<std::size_t>(1, totalVoxels(series) / kMostCountedValues);
+}
+
+std::size_t averageVoxelsPerStep(const Series& series) {
+    return series.steps.empty() ? 0 : totalVoxels(series) / series.steps.size();
+}
+
 OpacityWindow automaticOpacityWindow(const Series& series) {
+    const std::size_t stride = opacityHistogramStride(series);
+    std::vector<double> counts(kBins, 0.0);
+    for (const TimeStep& step : series.steps)
+        for (std::size_t index = 0; index < step.density.size(); index += stride) {
+            const float density = step.density[index];
+            if (!isMissing(density)) counts[std::size_t(opacityHistogramBin(density))] += 1.0;
+        }
+    return opacityWindowOf(std::move(counts), averageVoxelsPerStep(series));
+}
+
+OpacityWindow opacityWindowOf(std::vector<double> counts, std::size_t voxelsPerStep) {
     OpacityWindow window;
-    std::size_t voxelsPerStep = 0;
-    std::vector<double> counts = densityHistogram(series, voxelsPerStep);
     const double total = std::accumulate(counts.begin(), counts.end(), 0.0);
     if (total == 0.0) return window;
 

@@ -6,8 +6,8 @@
 #include <iomanip>
 #include <sstream>
 
-#include "automatic_opacity.h"
-#include "tstyles/data/density_sampling.h"
+#include "tstyles/scene/automatic_opacity.h"
+#include "tstyles/scene/temporal_change.h"
 #include "tstyles/scene/temporal_compositors.h"
 #include "tstyles/scene/visible_bounds.h"
 #include "time_colours.h"
@@ -15,11 +15,6 @@
 namespace tstyles {
 namespace {
 
-// The percentile of the visible voxels' temporal change that the gradient TSTF's range reaches.
-constexpr double kChangePercentile = 0.99;
-// A lattice of this many points per axis samples the change of series whose time-steps do not share
-// one grid.
-constexpr int kChangeLattice = 32;
 // The neutral lit-sphere style that gives the first picture its shading.
 constexpr const char* kNeutralStyle = "matte-white";
 
@@ -75,57 +70,6 @@ std::string kindText(DataKind kind) {
     return "";
 }
 
-bool sharesOneGrid(const Series& series) {
-    const TimeStep& first = series.steps.front();
-    if (!std::holds_alternative<RectilinearGrid>(first.grid)) return false;
-    return std::all_of(series.steps.begin(), series.steps.end(), [&](const TimeStep& step) {
-        return std::holds_alternative<RectilinearGrid>(step.grid) && step.dims() == first.dims() &&
-               step.placement == first.placement;
-    });
-}
-
-// One change per place, where the STF shows at least one time-step and two have data.
-void addChange(const std::vector<double>& densities, const Stf& stf, std::vector<double>& changes) {
-    double lowest = 2.0;
-    double highest = -1.0;
-    bool visible = false;
-    int valid = 0;
-    for (double density : densities) {
-        if (isMissing(float(density))) continue;
-        ++valid;
-        lowest = std::min(lowest, density);
-        highest = std::max(highest, density);
-        visible = visible || stf.curve.evaluate(density).opacity > 0.0;
-    }
-    if (visible && valid >= 2) changes.push_back(highest - lowest);
-}
-
-std::vector<double> temporalChanges(const Series& series, const Stf& stf) {
-    std::vector<double> changes;
-    std::vector<double> densities(series.size());
-    if (sharesOneGrid(series)) {
-        const std::size_t voxels = series.steps.front().density.size();
-        const std::size_t stride = std::max<std::size_t>(1, voxels / (std::size_t(1) << 20));
-        for (std::size_t voxel = 0; voxel < voxels; voxel += stride) {
-            for (std::size_t step = 0; step < series.size(); ++step)
-                densities[step] = series.steps[step].density[voxel];
-            addChange(densities, stf, changes);
-        }
-        return changes;
-    }
-    const Bounds bounds = visibleBounds(series, stf);
-    for (int k = 0; k < kChangeLattice; ++k)
-        for (int j = 0; j < kChangeLattice; ++j)
-            for (int i = 0; i < kChangeLattice; ++i) {
-                const glm::dvec3 at = bounds.lower + (glm::dvec3(i, j, k) + 0.5) / double(kChangeLattice) * bounds.size();
-                densities.clear();
-                for (const auto& density : temporalProfile(series, at))
-                    if (density) densities.push_back(*density);
-                addChange(densities, stf, changes);
-            }
-    return changes;
-}
-
 }  // namespace
 
 DataKind dataKindOf(const Series& series) {
@@ -138,16 +82,13 @@ DataKind dataKindOf(const Series& series) {
     return geographic ? DataKind::Geographic : anatomical ? DataKind::Anatomical : DataKind::Other;
 }
 
-double typicalLargestChange(const Series& series, const Stf& stf) {
-    if (series.size() < 2) return 1.0;
-    std::vector<double> changes = temporalChanges(series, stf);
-    if (changes.empty()) return 1.0;
-    const auto at = changes.begin() + std::ptrdiff_t(kChangePercentile * double(changes.size() - 1));
-    std::nth_element(changes.begin(), at, changes.end());
-    return std::clamp(*at, 1e-3, 1.0);
-}
+double typicalLargestChange(const Series& series, const Stf& stf) { return typicalOf(temporalChanges(series, stf)); }
 
 AutomaticScene automaticScene(const Series& series, const std::filesystem::path& dataset) {
+    return automaticScene(series, dataset, automaticOpacityWindow(series));
+}
+
+AutomaticScene automaticScene(const Series& series, const std::filesystem::path& dataset, const OpacityWindow& window) {
     AutomaticScene result;
     Scene& scene = result.scene;
     scene.dataset = dataset;
@@ -162,7 +103,6 @@ AutomaticScene automaticScene(const Series& series, const std::filesystem::path&
     scene.camera.framing = Framing::Visible;
     result.explanation.push_back("camera: " + kindText(kind) + ", framed on the visible data");
 
-    const OpacityWindow window = automaticOpacityWindow(series);
     scene.stf.curve.opacity = opacityNodes(window);
     scene.stf.curve.color = {ColorNode{0.0, glm::dvec3(1.0), kNeutralStyle}};
     result.explanation.push_back(windowText(series, window));
@@ -183,7 +123,10 @@ Bounds framedBounds(const Scene& scene, const Series& series) {
 }
 
 std::pair<double, double> automaticGradientRange(const Scene& scene, const Series& series) {
-    const double change = typicalLargestChange(series, scene.stf);
+    return gradientRangeForChange(scene, series, typicalLargestChange(series, scene.stf));
+}
+
+std::pair<double, double> gradientRangeForChange(const Scene& scene, const Series& series, double change) {
     const AutomaticRange range = scene.compositor == TemporalCompositor::Custom
                                      ? AutomaticRange::Change
                                      : compositorInfo(scene.compositor).range;

@@ -20,14 +20,9 @@ std::array<bool, kOpacityTableSize> visibleDensities(const Stf& stf) {
     return visible;
 }
 
-struct IndexBox {
-    glm::ivec3 lower{std::numeric_limits<int>::max()};
-    glm::ivec3 upper{std::numeric_limits<int>::min()};
-    bool empty() const { return lower.x > upper.x; }
-};
-
-IndexBox visibleVoxels(const TimeStep& step, const std::array<bool, kOpacityTableSize>& visible) {
-    IndexBox box;
+NodeIndexBox visibleNodes(const TimeStep& step, const std::array<bool, kOpacityTableSize>& visible) {
+    NodeIndexBox box;
+    if (step.density.size() != gridVoxelCount(step.grid)) return box;  // an outline's time-step
     const glm::ivec3 dims = step.dims();
     std::size_t index = 0;
     for (int z = 0; z < dims.z; ++z)
@@ -49,7 +44,7 @@ void include(Bounds& bounds, const Bounds& more) {
 }
 
 // The world box of a rectilinear time-step's voxels lower..upper (their nodes' positions).
-Bounds worldBoxOf(const TimeStep& step, const IndexBox& box) {
+Bounds worldBoxOf(const TimeStep& step, const NodeIndexBox& box) {
     const RectilinearGrid& grid = step.rectilinear();
     const glm::dmat4 toWorld = step.placement.gridToWorld();
     Bounds bounds{glm::dvec3(std::numeric_limits<double>::infinity()),
@@ -66,20 +61,31 @@ Bounds worldBoxOf(const TimeStep& step, const IndexBox& box) {
 
 }  // namespace
 
-Bounds visibleBounds(const Series& series, const Stf& stf) {
+std::vector<NodeIndexBox> visibleNodeBoxes(const Series& series, const Stf& stf) {
     const auto visible = visibleDensities(stf);
+    std::vector<NodeIndexBox> boxes;
+    boxes.reserve(series.steps.size());
+    for (const TimeStep& step : series.steps) boxes.push_back(visibleNodes(step, visible));
+    return boxes;
+}
+
+Bounds boundsOfVisibleNodes(const Series& series, const std::vector<NodeIndexBox>& boxes) {
     Bounds bounds{glm::dvec3(std::numeric_limits<double>::infinity()),
                   glm::dvec3(-std::numeric_limits<double>::infinity())};
     bool any = false;
     for (std::size_t index = 0; index < series.steps.size(); ++index) {
         const TimeStep& step = series.steps[index];
-        const IndexBox box = visibleVoxels(step, visible);
+        const NodeIndexBox& box = boxes.at(index);
         if (box.empty()) continue;
         any = true;
         include(bounds, std::holds_alternative<RectilinearGrid>(step.grid) ? worldBoxOf(step, box)
                                                                             : series.worldBounds(index));
     }
     return any ? bounds : series.worldBounds();
+}
+
+Bounds visibleBounds(const Series& series, const Stf& stf) {
+    return boundsOfVisibleNodes(series, visibleNodeBoxes(series, stf));
 }
 
 }  // namespace tstyles

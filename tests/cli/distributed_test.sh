@@ -40,9 +40,11 @@ case_four_processes_match_one() {
     expect_same_as_one_process "$SCRATCH/one.png" "$SCRATCH/four.png"
 }
 
-# Framing the visible data needs the values before the blocks are known: every process reads the
-# whole series and keeps its block, says so, and the image is the one process's.
-case_whole_series_where_the_scene_needs_values() {
+# Framing the visible data needs the values: each process reads only its block, the visible bounds
+# are taken over the blocks, and the image is the one process's. `render --frame K` plans the
+# animation from the framed scene before anything is read, so there every process reads the whole
+# series and says why.
+case_blocks_where_the_scene_needs_values() {
     sed 's#"fov_deg": 30}#"fov_deg": 30, "frame": "visible"}#; s#"\.\./superellipsoid/#"'"$SOURCE_DIR"'/data/superellipsoid/#' \
         "$SCENE" >"$SCRATCH/visible.json"
     grep -q '"frame": "visible"' "$SCRATCH/visible.json" || fail "the scene was not rewritten"
@@ -50,7 +52,24 @@ case_whole_series_where_the_scene_needs_values() {
     expect_exit 0
     run_mpi 2 render "$SCRATCH/visible.json" -o "$SCRATCH/two.png" --width 128 --height 128 --distributed
     expect_exit 0
-    expect_stdout_contains "every process read the whole series: the camera frames the visible data, which the values decide (\"frame\": \"series\" reads blocks)"
+    expect_stdout_contains "each process read only its block"
+    expect_same_as_one_process "$SCRATCH/one.png" "$SCRATCH/two.png"
+    run_mpi 2 render "$SCRATCH/visible.json" -o "$SCRATCH/frame.png" --width 64 --height 64 --distributed \
+        --orbit 90 --frames 4 --frame 0
+    expect_exit 0
+    expect_stdout_contains "every process read the whole series: the camera frames the visible data, which the values decide before the frames are planned (\"frame\": \"series\" reads blocks)"
+}
+
+# A manifest given alone takes the automatic scene, whose opacity comes from the histogram, its
+# gradient range from the changes over time and its camera from the visible bounds: all taken over
+# the blocks, so the processes read only their blocks and the picture is the one process's.
+case_automatic_scene_in_blocks() {
+    local hurricane="$SOURCE_DIR/data/hurricane/series.json"
+    run_tstyles -- render "$hurricane" -o "$SCRATCH/one.png" --width 128 --height 128 --tc temporal-max-change
+    expect_exit 0
+    run_mpi 2 render "$hurricane" -o "$SCRATCH/two.png" --width 128 --height 128 --tc temporal-max-change --distributed
+    expect_exit 0
+    expect_stdout_contains "each process read only its block"
     expect_same_as_one_process "$SCRATCH/one.png" "$SCRATCH/two.png"
 }
 

@@ -2,6 +2,8 @@
 // the groups of each compositing round.
 #include "tstyles/distributed/block_decomposition.h"
 
+#include <vector>
+
 #include <gtest/gtest.h>
 
 namespace tstyles {
@@ -24,6 +26,52 @@ TEST(BlockDecomposition, OneProcessKeepsTheWholeWorld) {
     EXPECT_TRUE(blocks.factors().empty());
     EXPECT_EQ(blocks.block(0).lower, kWorld.lower);
     EXPECT_EQ(blocks.block(0).upper, kWorld.upper);
+}
+
+// Statistics taken over the blocks count each node once: every point has one owner, a block that
+// holds it, the same on every process (on a shared face, the block above it; below).
+TEST(BlockDecomposition, EveryPointHasOneOwnerWhoseBlockHoldsIt) {
+    for (int count : {1, 2, 3, 4, 6, 8}) {
+        SCOPED_TRACE("processes: " + std::to_string(count));
+        const BlockDecomposition blocks(kWorld, count);
+        // The blocks' own corners and face centres (on shared faces), and a lattice through them.
+        std::vector<glm::dvec3> points;
+        for (int rank = 0; rank < count; ++rank) {
+            const Bounds& block = blocks.block(rank);
+            points.push_back(block.lower);
+            points.push_back(block.upper);
+            points.push_back(0.5 * (block.lower + block.upper));
+            for (int axis = 0; axis < 3; ++axis) {
+                glm::dvec3 onFace = 0.5 * (block.lower + block.upper);
+                onFace[axis] = block.lower[axis];
+                points.push_back(onFace);
+                onFace[axis] = block.upper[axis];
+                points.push_back(onFace);
+            }
+        }
+        for (int i = 0; i <= 8; ++i)
+            for (int j = 0; j <= 8; ++j)
+                for (int k = 0; k <= 8; ++k)
+                    points.push_back(kWorld.lower + glm::dvec3(i, j, k) / 8.0 * kWorld.size());
+        for (const glm::dvec3& point : points) {
+            const int owner = blocks.ownerOf(point);
+            ASSERT_GE(owner, 0);
+            ASSERT_LT(owner, count);
+            const Bounds& block = blocks.block(owner);
+            EXPECT_TRUE(glm::all(glm::greaterThanEqual(point, block.lower)) &&
+                        glm::all(glm::lessThanEqual(point, block.upper)))
+                << "point " << point.x << " " << point.y << " " << point.z << " is not in its owner's block " << owner;
+        }
+    }
+}
+
+TEST(BlockDecomposition, APointOutsideTheWorldBelongsToTheBlockAtItsNearestFace) {
+    const BlockDecomposition blocks(kWorld, 2);  // cut along x at 1.0
+    EXPECT_EQ(blocks.ownerOf({-5.0, 0.5, 3.0}), 0);
+    EXPECT_EQ(blocks.ownerOf({9.0, 0.5, 3.0}), 1);
+    EXPECT_EQ(blocks.ownerOf({3.0 + 1e-12, 1.0 + 1e-12, 4.0 + 1e-12}), 1);
+    EXPECT_EQ(blocks.ownerOf({1.0, 0.5, 3.0}), 1);  // on the shared face: the block above it
+    EXPECT_EQ(blocks.ownerOf({1.0 - 1e-12, 0.5, 3.0}), 0);
 }
 
 TEST(BlockDecomposition, BlocksTileTheWorldForEveryProcessCount) {

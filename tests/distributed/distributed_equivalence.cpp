@@ -6,7 +6,14 @@
 // thresholds below, 1 otherwise (the table says which). Each case is rendered twice distributed:
 // with each process's block cut from the whole series, and with each process reading only its
 // block (readManifestBlock); those two must be the same image to the bit.
+// Then the automatic scene of each bundled dataset, read in blocks by every process, with its
+// value-dependent parts (the STF opacity from the histogram, the gradient TSTF's "auto" range, the
+// visible bounds the camera frames) fitted over the blocks: they must be the whole series' to the
+// bit (the range within 1e-12, as the lattice's interpolation runs on cut grids), and the image
+// within the thresholds below.
 //   distributed_equivalence SOURCE_DIR OUTPUT_DIR
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -22,6 +29,7 @@
 #include "tstyles/gl/headless_context.h"
 #include "tstyles/image/image_comparison.h"
 #include "tstyles/image/image_io.h"
+#include "tstyles/scene/automatic_scene.h"
 #include "tstyles/scene/scene_file.h"
 #include "tstyles/scene/temporal_compositors.h"
 
@@ -69,6 +77,85 @@ GlBackend backendFromEnvironment() {
     return glBackendFromString(name ? name : "auto").value_or(GlBackend::Auto);
 }
 
+// Prints one case's line on process 0 and keeps its images where it is beyond the thresholds;
+// returns 1 for a failure, else 0.
+int reportComparison(const MpiSession& mpi, const std::string& name, const Image& image, const Image& expected,
+                     const std::filesystem::path& outputDir) {
+    const ComparisonThresholds thresholds = distributedThresholds();
+    const ImageDifference difference = compareImages(image, expected, thresholds.pixelThreshold);
+    const bool passed = within(difference, thresholds);
+    char line[200];
+    std::snprintf(line, sizeof line, "%-52s %4d  %10.4f %%  %8.5f  %s\n", name.c_str(), difference.maxDelta,
+                  100.0 * difference.failingFraction, difference.meanDelta, passed ? "ok" : "BEYOND");
+    std::cout << line;
+    if (passed) return 0;
+    std::string stem = std::to_string(mpi.processCount()) + "-" + name;
+    std::replace(stem.begin(), stem.end(), ' ', '-');
+    std::filesystem::create_directories(outputDir);
+    writeImage(image, outputDir / (stem + ".distributed.png"));
+    writeImage(expected, outputDir / (stem + ".one-process.png"));
+    return 1;
+}
+
+// The automatic scene of `dataset` with `compositor`, as `tstyles render DATASET --tc ...` makes
+// it: fitted to the whole series by one process, and over the blocks each process read.
+Scene automaticSceneFor(const Series& seriesOrOutline, const std::filesystem::path& dataset,
+                        TemporalCompositor compositor, const OpacityWindow& window) {
+    Scene scene = automaticScene(seriesOrOutline, dataset, window).scene;
+    scene.compositor = compositor;
+    applyAutomaticGradientColours(scene);
+    scene.width = 256;
+    scene.height = 256;
+    return scene;
+}
+
+// Returns 1 where the scene fitted over the blocks or its image differs from one process's, else 0.
+int compareAutomaticScene(const MpiSession& mpi, const std::filesystem::path& dataset, TemporalCompositor compositor,
+                          const std::filesystem::path& outputDir) {
+    const Series outline = loadSeriesOutline(dataset);
+    const SceneOnSeries fittedOutline =
+        fitSceneToSeries(automaticSceneFor(outline, dataset, compositor, OpacityWindow{}), outline);
+    const Series displayOutline = fittedOutline.series;
+    const DisplayFrame frame = fittedOutline.frame;
+    Renderer renderer(ShaderLibrary::embedded());
+    DistributedRendering distributed(
+        mpi, renderer, fittedOutline,
+        [&](const Bounds& box) { return readManifestBlock(dataset, {}, displayOutline, frame, box); },
+        [&](const Series& block, const WholeSeries& wholeSeries) { renderer.setSeries(block, wholeSeries); }, true);
+    const Image image = distributed.render(distributed.scene());
+    if (!mpi.isFirst()) return 0;
+
+    Series series = loadSeries(dataset);
+    const OpacityWindow window = automaticOpacityWindow(series);
+    const SceneOnSeries whole = fitSceneToSeries(automaticSceneFor(series, dataset, compositor, window), series);
+    const std::string name = dataset.parent_path().filename().string() + " automatic " + toString(compositor);
+    const Scene& fitted = distributed.scene();
+    std::vector<std::string> differences;
+    if (!(fitted.stf.curve.opacity == whole.scene.stf.curve.opacity)) differences.push_back("the STF opacity");
+    const auto near = [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b)); };
+    if (!near(fitted.gradientTstf.rangeLow, whole.scene.gradientTstf.rangeLow) ||
+        !near(fitted.gradientTstf.rangeHigh, whole.scene.gradientTstf.rangeHigh))
+        differences.push_back("the gradient TSTF range (" + std::to_string(fitted.gradientTstf.rangeLow) + ".." +
+                              std::to_string(fitted.gradientTstf.rangeHigh) + " against " +
+                              std::to_string(whole.scene.gradientTstf.rangeLow) + ".." +
+                              std::to_string(whole.scene.gradientTstf.rangeHigh) + ")");
+    if (distributed.framed().lower != whole.framed.lower || distributed.framed().upper != whole.framed.upper)
+        differences.push_back("the framed bounds");
+    for (const std::string& difference : differences)
+        std::cout << name << ": " << difference << " fitted over the blocks differs from one process's\n";
+    const glm::dvec3 framedSize = distributed.framed().size();
+    std::cout << name << ": " << fitted.stf.curve.opacity.size() << " opacity nodes, peak at "
+              << fitted.stf.curve.opacity[1].at << "; gradient range " << fitted.gradientTstf.rangeLow << ".."
+              << fitted.gradientTstf.rangeHigh << "; framed " << framedSize.x << " x " << framedSize.y << " x "
+              << framedSize.z << " of " << whole.series.worldBounds().size().x << " x "
+              << whole.series.worldBounds().size().y << " x " << whole.series.worldBounds().size().z << "\n";
+
+    Renderer wholeRenderer(ShaderLibrary::embedded());
+    wholeRenderer.setSeries(whole.series);
+    const Image expected = AnnotatedRendering(wholeRenderer, whole).render(whole.scene);
+    return reportComparison(mpi, name, image, expected, outputDir) + (differences.empty() ? 0 : 1);
+}
+
 int run(const std::filesystem::path& sourceDir, const std::filesystem::path& outputDir) {
     const MpiSession mpi;
     const std::vector<SceneCases> cases = {
@@ -83,7 +170,6 @@ int run(const std::filesystem::path& sourceDir, const std::filesystem::path& out
         {"warped-box-styled.json", {TemporalCompositor::MaxIntensityProjection}},
     };
     const auto context = createHeadlessContext(backendFromEnvironment(), false);
-    const ComparisonThresholds thresholds = distributedThresholds();
     int failures = 0;
     if (mpi.isFirst())
         std::cout << mpi.processCount() << " processes, " << context->description() << "\n"
@@ -136,23 +222,14 @@ int run(const std::filesystem::path& sourceDir, const std::filesystem::path& out
                           << describe(readDifference) << "\n";
             }
             const Image expected = AnnotatedRendering(*wholeRenderer, *whole).render(scene);
-            const ImageDifference difference = compareImages(image, expected, thresholds.pixelThreshold);
-            const std::string name = sceneCases.sceneFile + " " + toString(scene.compositor);
-            const bool passed = within(difference, thresholds);
-            char line[200];
-            std::snprintf(line, sizeof line, "%-52s %4d  %10.4f %%  %8.5f  %s\n", name.c_str(), difference.maxDelta,
-                          100.0 * difference.failingFraction, difference.meanDelta, passed ? "ok" : "BEYOND");
-            std::cout << line;
-            if (!passed) {
-                ++failures;
-                const std::string stem = std::to_string(mpi.processCount()) + "-" + sceneCases.sceneFile + "-" +
-                                         toString(scene.compositor);
-                std::filesystem::create_directories(outputDir);
-                writeImage(image, outputDir / (stem + ".distributed.png"));
-                writeImage(expected, outputDir / (stem + ".one-process.png"));
-            }
+            failures += reportComparison(mpi, sceneCases.sceneFile + " " + toString(scene.compositor), image, expected,
+                                         outputDir);
         }
     }
+    for (const char* dataset : {"superellipsoid", "hurricane", "sonar", "warped-box"})
+        for (TemporalCompositor compositor :
+             {TemporalCompositor::MaxIntensityProjection, TemporalCompositor::MaxDensityChange})
+            failures += compareAutomaticScene(mpi, sourceDir / "data" / dataset / "series.json", compositor, outputDir);
     if (mpi.isFirst()) std::cout << (failures == 0 ? "all within the thresholds\n" : "some cases are beyond the thresholds\n");
     return failures == 0 ? 0 : 1;
 }

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "../data/realistic_datasets.h"
+#include "tstyles/data/manifest.h"
 #include "tstyles/data/series_opener.h"
 #include "tstyles/scene/automatic_scene.h"
 #include "tstyles/scene/scene_file.h"
@@ -104,6 +105,31 @@ TEST(AutomaticScene, NrrdSpaceGivesTheAnatomicalOrientation) {
     EXPECT_EQ(frame.rotation * glm::dvec3(1, 0, 0), glm::dvec3(1, 0, 0));   // left -> the image's right
     EXPECT_EQ(frame.rotation * glm::dvec3(0, 1, 0), glm::dvec3(0, 0, -1));  // posterior -> away from the viewer
     EXPECT_EQ(frame.rotation * glm::dvec3(0, 0, 1), glm::dvec3(0, 1, 0));   // superior -> up
+}
+
+
+// What a distributed render starts from where each process reads only its block: the automatic
+// scene of a manifest's outline (no values) with the opacity window given is the whole series'
+// scene, and fitting it to the outline reads no value (the parts that need them are fitted over
+// the blocks, src/distributed): visible framing frames the whole series, the change is 1.
+TEST(AutomaticScene, AnOutlineWithTheWindowGivesTheSceneAndReadsNoValue) {
+    const std::filesystem::path manifest = std::filesystem::path(TSTYLES_SOURCE_DIR) / "data/hurricane/series.json";
+    const Series series = loadSeries(manifest);
+    const Series outline = loadSeriesOutline(manifest);
+    const Scene whole = automaticScene(series, manifest).scene;
+    const Scene fromOutline = automaticScene(outline, manifest, automaticOpacityWindow(series)).scene;
+    EXPECT_EQ(fromOutline.stf.curve.opacity, whole.stf.curve.opacity);
+    EXPECT_EQ(fromOutline.camera.framing, Framing::Visible);
+    EXPECT_TRUE(fromOutline.gradientTstf.automaticRange);
+
+    const SceneOnSeries fitted = fitSceneToSeries(fromOutline, outline);
+    EXPECT_EQ(fitted.framed.lower, fitted.series.worldBounds().lower);
+    EXPECT_EQ(fitted.framed.upper, fitted.series.worldBounds().upper);
+    EXPECT_EQ(fitted.scene.gradientTstf.rangeHigh, 1.0);
+    // With the values, the hurricane's visible part is smaller than its box, and its change below 1.
+    const SceneOnSeries withValues = fitSceneToSeries(whole, series);
+    EXPECT_LT(withValues.framed.size().y, withValues.series.worldBounds().size().y);
+    EXPECT_LT(withValues.scene.gradientTstf.rangeHigh, 1.0);
 }
 
 }  // namespace

@@ -20,6 +20,10 @@ public:
     // processCount(). Empty for one process.
     const std::vector<int>& factors() const { return factors_; }
     const Bounds& block(int rank) const { return blocks_.at(std::size_t(rank)); }
+    // The one rank whose block holds `point`: blocks are half-open at the faces they share, and a
+    // point outside the split bounds counts as at their nearest face. So every process gives each
+    // point the same owner, which statistics taken over the blocks count once.
+    int ownerOf(const glm::dvec3& point) const;
     // A rank's digit at `level`: which slab of its parent block it is (rank = d0 + k0 (d1 + k1 (...)))
     int digit(int rank, int level) const;
     // The rank whose digit at `level` is `value` and whose other digits are `rank`'s.
@@ -29,6 +33,7 @@ public:
     int splitAxis(int rank, int level) const;
 
 private:
+    Bounds bounds_;
     std::vector<int> factors_;
     std::vector<Bounds> blocks_;
     std::vector<std::vector<int>> splitAxes_;  // per rank, per level

@@ -5,12 +5,23 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
+#include <vector>
 
 #include "tstyles/data/display_frame.h"
+#include "tstyles/data/node_block.h"
 #include "tstyles/data/read_options.h"
 #include "tstyles/data/series.h"
 
 namespace tstyles {
+
+// One process's block of a series, and where its nodes lie in the whole series' grids.
+struct BlockOfSeries {
+    Series series;  // in the display frame, every time-step cut to the block
+    // Per time-step, which of the file grid's nodes it holds (the display frame keeps a grid's nodes
+    // and their order); nullopt for a time-step kept whole (beam and structured grids).
+    std::vector<std::optional<NodeBlock>> nodes;
+};
 
 // The block of the manifest's series that the world box `box` (display coordinates) needs, with
 // kBlockGhostNodes around it, as cropSeriesToBox cuts it from the whole series in the display
@@ -20,7 +31,7 @@ namespace tstyles {
 // value is read, and which gives the block its display axes. `options`:
 // --max-memory and --precision (a manifest takes no other reading option); the memory check counts
 // the block's voxels.
-Series readManifestBlock(const std::filesystem::path& manifest, const ReadOptions& options,
+BlockOfSeries readManifestBlock(const std::filesystem::path& manifest, const ReadOptions& options,
                          const Series& displayOutline, const DisplayFrame& frame, const Bounds& box);
 
 }  // namespace tstyles

@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "tstyles/distributed/block_decomposition.h"
+#include "tstyles/distributed/block_reading.h"
 #include "tstyles/distributed/mpi_session.h"
 #include "tstyles/render/annotated_rendering.h"
 #include "tstyles/render/renderer.h"
@@ -43,18 +44,23 @@ public:
     // Reads this process's block of the series: every time-step cut to `box` (world coordinates of
     // the scene's display frame) with kBlockGhostNodes around it, values mapped to density by the
     // whole series' value range.
-    using BlockReader = std::function<Series(const Bounds& box)>;
+    using BlockReader = std::function<BlockOfSeries(const Bounds& box)>;
 
     // Collective. The same, where `fittedOutline`'s series has no values (the outline of the
     // series in the scene's display frame, the scene fitted to it) and each process reads only
     // its own block with `read`: no process holds more than its block and what `read` needs.
+    // The parts of the scene that the values decide (an "auto" gradient range, a camera framed on
+    // the visible data, and where `automaticOpacity` the automatic scene's STF opacity) are then
+    // fitted over the blocks (fitting_over_blocks.h), as one process fits them to the whole series.
     DistributedRendering(const MpiSession& mpi, Renderer& renderer, SceneOnSeries fittedOutline, const BlockReader& read,
-                         const BlockUpload& upload);
+                         const BlockUpload& upload, bool automaticOpacity = false);
 
     // Collective: the scene's frame, annotated, on process 0; an empty image on the others.
     Image render(const Scene& scene);
 
     const Scene& scene() const { return scene_; }
+    // What the camera frames where the scene leaves it to the data (Framing).
+    const Bounds& framed() const { return framed_; }
     const Bounds& block() const { return blocks_.block(mpi_.rank()); }
     std::size_t processCount() const { return std::size_t(mpi_.processCount()); }
     // Voxels of this process's block over all time-steps, ghosts included.

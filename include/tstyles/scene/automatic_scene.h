@@ -10,6 +10,7 @@
 
 #include "tstyles/data/display_frame.h"
 #include "tstyles/data/series.h"
+#include "tstyles/scene/automatic_opacity.h"
 #include "tstyles/scene/scene.h"
 
 namespace tstyles {
@@ -27,6 +28,9 @@ struct AutomaticScene {
 // The scene for a series as read (before any display frame): display frame, opacity from the
 // histogram, a neutral lit-sphere style, time in colour, the compositor and the camera.
 AutomaticScene automaticScene(const Series& series, const std::filesystem::path& dataset);
+// The same with the opacity window given: `series` may then be an outline (no values), as where
+// each process of a distributed render reads only its block and the window is taken from them all.
+AutomaticScene automaticScene(const Series& series, const std::filesystem::path& dataset, const OpacityWindow& window);
 
 // A scene fitted to a series: the series turned and scaled into the display frame the scene asks
 // for, the automatic gradient range filled in, and the bounds an automatic camera frames.
@@ -52,6 +56,8 @@ double typicalLargestChange(const Series& series, const Stf& stf);
 // The gradient TSTF's range that "auto" stands for with the scene's compositor
 // (AutomaticRange of tstyles/scene/temporal_compositors.h).
 std::pair<double, double> automaticGradientRange(const Scene& scene, const Series& series);
+// The same for a typical largest change already known (`series` gives the time span).
+std::pair<double, double> gradientRangeForChange(const Scene& scene, const Series& series, double change);
 // The automatic scene's gradient TSTF colours and opacities for the scene's compositor: for a
 // signed one (linear-trend, difference) the diverging "blue-red", faint in the middle (no change);
 // else the paper's "green-orange", faint at 0. For a compositor chosen after the automatic scene;
