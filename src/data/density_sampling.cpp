@@ -76,27 +76,39 @@ std::optional<double> sampleDensity(const TimeStep& step, const glm::dvec3& worl
     return interpolateAtVoxel(step, dims, voxel);
 }
 
-std::vector<std::optional<double>> temporalProfile(const Series& series, const glm::dvec3& world) {
-    std::vector<std::optional<double>> profile;
-    profile.reserve(series.size());
-    // One locator per structured grid, however many time-steps share it.
-    std::vector<std::unique_ptr<StructuredPointLocator>> locators;
+TemporalProfiler::TemporalProfiler(const Series& series) : series_(series) {
     for (const TimeStep& step : series.steps) {
         const StructuredGrid* structured = step.structured();
         if (!structured || step.density.size() != structured->voxelCount()) {
-            profile.push_back(sampleDensity(step, world));
+            locatorOfStep_.push_back(nullptr);
             continue;
         }
-        auto known = std::find_if(locators.begin(), locators.end(), [structured](const auto& locator) {
+        auto known = std::find_if(locators_.begin(), locators_.end(), [structured](const auto& locator) {
             return locator->grid().nodes == structured->nodes;
         });
-        if (known == locators.end()) {
-            locators.push_back(std::make_unique<StructuredPointLocator>(*structured));
-            known = locators.end() - 1;
+        if (known == locators_.end()) {
+            locators_.push_back(std::make_unique<StructuredPointLocator>(*structured));
+            known = locators_.end() - 1;
         }
-        profile.push_back(sampleStructured(step, **known, world));
+        locatorOfStep_.push_back(known->get());
+    }
+}
+
+TemporalProfiler::~TemporalProfiler() = default;
+
+std::vector<std::optional<double>> TemporalProfiler::profile(const glm::dvec3& world) const {
+    std::vector<std::optional<double>> profile;
+    profile.reserve(series_.size());
+    for (std::size_t index = 0; index < series_.steps.size(); ++index) {
+        const TimeStep& step = series_.steps[index];
+        const StructuredPointLocator* locator = locatorOfStep_[index];
+        profile.push_back(locator ? sampleStructured(step, *locator, world) : sampleDensity(step, world));
     }
     return profile;
+}
+
+std::vector<std::optional<double>> temporalProfile(const Series& series, const glm::dvec3& world) {
+    return TemporalProfiler(series).profile(world);
 }
 
 }  // namespace tstyles

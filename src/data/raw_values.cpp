@@ -15,7 +15,7 @@
 namespace tstyles {
 namespace {
 
-std::string dimsText(const glm::ivec3& dims) {
+std::string valueLayoutText(const glm::ivec3& dims) {
     return std::to_string(dims.x) + " x " + std::to_string(dims.y) + " x " + std::to_string(dims.z);
 }
 
@@ -83,7 +83,7 @@ RawValues readRawValues(const RawFileSource& source, const glm::ivec3& dims, Val
     const std::size_t stride = bytesPerValue(type);
     const std::size_t count = std::size_t(dims.x) * std::size_t(dims.y) * std::size_t(dims.z);
     std::ifstream in =
-        openExactly(source, "value file", count * stride, dimsText(dims) + " " + toString(type) + " values");
+        openExactly(source, "value file", count * stride, valueLayoutText(dims) + " " + toString(type) + " values");
     // Compared in the file's own precision: a float32 file stores the marker 1e35 as float(1e35).
     const bool nanIsMissing = missingMarker && std::isnan(*missingMarker);
     const float marker = missingMarker && !nanIsMissing ? float(*missingMarker) : 0.0f;
@@ -134,7 +134,7 @@ RawValues readRawValues(const RawFileSource& source, const glm::ivec3& dims, Val
 std::vector<std::uint8_t> readMask(const RawFileSource& source, const glm::ivec3& dims,
                                    const std::optional<NodeBlock>& kept) {
     const std::size_t bytes = std::size_t(dims.x) * std::size_t(dims.y) * std::size_t(dims.z);
-    const std::string layout = dimsText(dims) + " uint8 values";
+    const std::string layout = valueLayoutText(dims) + " uint8 values";
     if (!kept) return readExactly(source, "mask file", bytes, layout);
     std::ifstream in = openExactly(source, "mask file", bytes, layout);
     std::vector<std::uint8_t> mask(kept->nodeCount());

@@ -80,9 +80,10 @@ std::vector<double> temporalChanges(const Series& series, const Stf& stf) {
         }
         return changes;
     }
+    const TemporalProfiler profiler(series);
     for (const glm::dvec3& at : changeLatticePoints(visibleBounds(series, stf))) {
         densities.clear();
-        for (const auto& density : temporalProfile(series, at))
+        for (const auto& density : profiler.profile(at))
             if (density) densities.push_back(*density);
         addChange(densities, stf, changes);
     }
