@@ -93,12 +93,11 @@ std::string readingText(const DistributedSource& source, const Series& series) {
     std::string text = source.blockManifest ? "each process read only its block"
                                             : "every process read the whole series: " + source.wholeReason;
     const auto whole = std::count_if(series.steps.begin(), series.steps.end(), [](const TimeStep& step) {
-        return !std::holds_alternative<RectilinearGrid>(step.grid);
+        return std::holds_alternative<StructuredGrid>(step.grid);
     });
     if (whole > 0)
         text += "; " + std::to_string(whole) + " of its " + std::to_string(series.size()) +
-                " time-steps are beam or structured grids, which every process keeps whole (their samples "
-                "still split)";
+                " time-steps are structured grids, which every process keeps whole (their samples still split)";
     return text;
 }
 

@@ -43,8 +43,8 @@ DistributedRendering startDistributedRendering(const MpiSession& mpi, Renderer& 
                                                const DistributedRendering::BlockUpload& upload);
 
 // For the summary line: "each process read only its block", or "every process read the whole
-// series: REASON"; and, where `series` has beam or structured time-steps, that every process keeps
-// those whole (a world block does not cut them; series_crop.h).
+// series: REASON"; and, where `series` has structured time-steps, that every process keeps those
+// whole (a world block does not cut them; series_crop.h).
 std::string readingText(const DistributedSource& source, const Series& series);
 
 }  // namespace tstyles::cli

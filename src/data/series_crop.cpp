@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "tstyles/data/beam_grid_block.h"
+
 namespace tstyles {
 namespace {
 
@@ -65,35 +67,48 @@ std::vector<Value> cropValues(const std::vector<Value>& values, glm::ivec3 dims,
     return cropped;
 }
 
-// The nodes of `step` that the box needs: the first, how many, and the cut grid.
+// The nodes of `step` that the box needs: the first, how many, and the cut grid and its placement.
 struct KeptNodes {
     glm::ivec3 first{0};
     glm::ivec3 count{0};
-    glm::dvec3 offset{0.0};  // grid-local position of the first kept node
-    RectilinearGrid grid;
+    Grid grid;
+    Placement placement;
 };
 
-KeptNodes keptNodes(const TimeStep& step, const Bounds& box, int ghost) {
-    const RectilinearGrid& grid = step.rectilinear();
-    const Bounds local = localBounds(step.placement, box);
+KeptNodes keptRectilinearNodes(const TimeStep& step, const RectilinearGrid& grid, const Bounds& local, int ghost) {
     KeptNodes kept;
-    kept.grid.spacing = grid.spacing;
+    RectilinearGrid cut;
+    cut.spacing = grid.spacing;
+    glm::dvec3 offset(0.0);  // grid-local position of the first kept node
     for (int axis = 0; axis < 3; ++axis) {
         const glm::ivec2 range = nodeRange(grid, axis, local.lower[axis], local.upper[axis], ghost);
         kept.first[axis] = range.x;
         kept.count[axis] = range.y - range.x + 1;
         if (grid.isUneven(axis)) {
             const std::vector<double>& nodes = grid.axisPositions[std::size_t(axis)];
-            kept.offset[axis] = nodes[std::size_t(range.x)];
-            std::vector<double>& positions = kept.grid.axisPositions[std::size_t(axis)];
-            for (int node = range.x; node <= range.y; ++node)
-                positions.push_back(nodes[std::size_t(node)] - kept.offset[axis]);
+            offset[axis] = nodes[std::size_t(range.x)];
+            std::vector<double>& positions = cut.axisPositions[std::size_t(axis)];
+            for (int node = range.x; node <= range.y; ++node) positions.push_back(nodes[std::size_t(node)] - offset[axis]);
         } else {
-            kept.offset[axis] = double(range.x) * grid.spacing[axis];
+            offset[axis] = double(range.x) * grid.spacing[axis];
         }
     }
-    kept.grid.dims = kept.count;
+    cut.dims = kept.count;
+    kept.grid = std::move(cut);
+    kept.placement = step.placement;
+    kept.placement.origin = glm::dvec3(step.placement.gridToWorld() * glm::dvec4(offset, 1.0));
     return kept;
+}
+
+// Rectilinear and beam time-steps are cut; none for a structured one (kept whole, series_crop.h).
+std::optional<KeptNodes> keptNodes(const TimeStep& step, const Bounds& box, int ghost) {
+    const Bounds local = localBounds(step.placement, box);
+    if (const auto* grid = std::get_if<RectilinearGrid>(&step.grid)) return keptRectilinearNodes(step, *grid, local, ghost);
+    if (const auto* grid = std::get_if<BeamGrid>(&step.grid)) {
+        const NodeBlock nodes = beamNodesMeeting(*grid, local, ghost);
+        return KeptNodes{nodes.first, nodes.count, cutBeamGrid(*grid, nodes), step.placement};
+    }
+    return std::nullopt;
 }
 
 }  // namespace
@@ -104,38 +119,37 @@ std::size_t croppedVoxelCount(const TimeStep& step, const Bounds& box, int ghost
 }
 
 std::optional<NodeBlock> nodesKeptOf(const TimeStep& step, const Bounds& box, int ghostNodes) {
-    if (!std::holds_alternative<RectilinearGrid>(step.grid)) return std::nullopt;  // kept whole
-    const KeptNodes kept = keptNodes(step, box, ghostNodes);
-    return NodeBlock{kept.first, kept.count};
+    const std::optional<KeptNodes> kept = keptNodes(step, box, ghostNodes);
+    if (!kept) return std::nullopt;
+    return NodeBlock{kept->first, kept->count};
 }
 
 namespace {
 
 // Moves `step`'s grid and placement to the kept nodes; its values must be theirs already.
 void cutGridTo(TimeStep& step, KeptNodes kept) {
-    const std::size_t keptCount = kept.grid.voxelCount();
+    const std::size_t keptCount = NodeBlock{kept.first, kept.count}.nodeCount();
     if (step.density.size() != keptCount || (step.mask && step.mask->size() != keptCount))
         throw std::logic_error("cropTimeStepGridToBox: the time-step's values are not those of its block (" +
                                std::to_string(step.density.size()) + " values for " + std::to_string(keptCount) +
                                " kept nodes)");
-    step.placement.origin = glm::dvec3(step.placement.gridToWorld() * glm::dvec4(kept.offset, 1.0));
+    step.placement = kept.placement;
     step.grid = std::move(kept.grid);
 }
 
 }  // namespace
 
 void cropTimeStepGridToBox(TimeStep& step, const Bounds& box, int ghostNodes) {
-    if (!std::holds_alternative<RectilinearGrid>(step.grid)) return;  // kept whole (series_crop.h)
-    cutGridTo(step, keptNodes(step, box, ghostNodes));
+    if (std::optional<KeptNodes> kept = keptNodes(step, box, ghostNodes)) cutGridTo(step, std::move(*kept));
 }
 
 void cropTimeStepToBox(TimeStep& step, const Bounds& box, int ghostNodes) {
-    if (!std::holds_alternative<RectilinearGrid>(step.grid)) return;  // kept whole (series_crop.h)
-    KeptNodes kept = keptNodes(step, box, ghostNodes);
-    const glm::ivec3 dims = step.rectilinear().dims;
-    step.density = cropValues(step.density, dims, kept.first, kept.count);
-    if (step.mask) step.mask = cropValues(*step.mask, dims, kept.first, kept.count);
-    cutGridTo(step, std::move(kept));
+    std::optional<KeptNodes> kept = keptNodes(step, box, ghostNodes);
+    if (!kept) return;  // kept whole (series_crop.h)
+    const glm::ivec3 dims = gridDims(step.grid);
+    step.density = cropValues(step.density, dims, kept->first, kept->count);
+    if (step.mask) step.mask = cropValues(*step.mask, dims, kept->first, kept->count);
+    cutGridTo(step, std::move(*kept));
 }
 
 Series cropSeriesToBox(Series series, const Bounds& box, int ghostNodes) {

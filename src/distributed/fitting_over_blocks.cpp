@@ -1,6 +1,7 @@
 // The value-dependent parts of a scene, fitted over the processes' blocks (fitting_over_blocks.h).
 #include "tstyles/distributed/fitting_over_blocks.h"
 
+#include "tstyles/data/beam_geometry.h"
 #include "tstyles/data/density_sampling.h"
 #include "tstyles/data/grid_axes.h"
 #include "tstyles/scene/automatic_opacity.h"
@@ -11,22 +12,28 @@
 namespace tstyles {
 namespace {
 
+// A node's grid-local position in a rectilinear or beam grid (the time-steps that blocks cut).
+glm::dvec3 nodeLocalPosition(const Grid& grid, const glm::ivec3& node) {
+    if (const auto* beam = std::get_if<BeamGrid>(&grid)) return beamSamplePosition(*beam, node.x, node.y, node.z);
+    return voxelToLocal(std::get<RectilinearGrid>(grid), glm::dvec3(node));
+}
+
 // Which process counts a node of a time-step that every process holds in part: the owner of its
 // world position, from the whole grid (the outline's), so that every process computes it alike.
 class NodeOwnership {
 public:
     NodeOwnership(const BlockDecomposition& blocks, int rank, const TimeStep& whole)
-        : blocks_(blocks), rank_(rank), grid_(whole.rectilinear()), toWorld_(whole.placement.gridToWorld()) {}
+        : blocks_(blocks), rank_(rank), grid_(whole.grid), toWorld_(whole.placement.gridToWorld()) {}
 
     bool ownsNode(const glm::ivec3& node) const {
-        const glm::dvec3 world(toWorld_ * glm::dvec4(voxelToLocal(grid_, glm::dvec3(node)), 1.0));
+        const glm::dvec3 world(toWorld_ * glm::dvec4(nodeLocalPosition(grid_, node), 1.0));
         return blocks_.ownerOf(world) == rank_;
     }
 
 private:
     const BlockDecomposition& blocks_;
     int rank_;
-    const RectilinearGrid& grid_;
+    const Grid& grid_;
     glm::dmat4 toWorld_;
 };
 
@@ -50,7 +57,8 @@ void forOwnedNodes(const BlockDecomposition& blocks, int rank, const TimeStep& w
 }
 
 // This process's counts of the density histogram that automaticOpacityWindow takes of the whole
-// series: its owned nodes among those counted; a time-step kept whole is counted by process 0.
+// series: its owned nodes among those counted; a time-step kept whole (structured) is counted by
+// process 0.
 std::vector<double> histogramShare(const MpiSession& mpi, const BlockDecomposition& blocks, const Series& outline,
                                    const BlockOfSeries& block) {
     std::vector<double> counts(kOpacityHistogramBins, 0.0);
@@ -111,10 +119,11 @@ std::vector<double> changeShare(const MpiSession& mpi, const BlockDecomposition&
                       });
         return changes;
     }
+    const TemporalProfiler profiler(block.series);
     for (const glm::dvec3& at : changeLatticePoints(visible)) {
         if (blocks.ownerOf(at) != mpi.rank()) continue;
         densities.clear();
-        for (const auto& density : temporalProfile(block.series, at))
+        for (const auto& density : profiler.profile(at))
             if (density) densities.push_back(*density);
         addChange(densities, stf, changes);
     }

@@ -1,7 +1,8 @@
 // Distributed (sort-last) rendering against one process, run under `mpirun -np N`: every temporal
 // compositor on the partial-overlap super-ellipsoid and on the hurricane (aligned, uneven z, missing
 // values), lit-sphere styled scenes, whose gradients read ghost nodes at the block faces, and the
-// sonar and the warped box, whose beam and structured grids every process keeps whole.
+// sonar, whose pings are cut to the blocks, and the warped box, whose structured grid every
+// process keeps whole.
 // Process 0 also renders each case alone and compares; exit 0 when every case is within the
 // thresholds below, 1 otherwise (the table says which). Each case is rendered twice distributed:
 // with each process's block cut from the whole series, and with each process reading only its
@@ -163,7 +164,7 @@ int run(const std::filesystem::path& sourceDir, const std::filesystem::path& out
         {"figure5-focus-step5.json", everyBuiltInCompositor()},    // the hurricane
         {"figure4-styled-temporal-average.json", {TemporalCompositor::Average, TemporalCompositor::MaxIntensityProjection}},
         {"figure1-styled-focus-step3.json", {TemporalCompositor::MaxIntensityProjection}},
-        // The sonar: beam grids stay whole in every process, which renders only its block's samples.
+        // The sonar: each ping cut to the beams and range bins of the block.
         {"figure6-centre-index-tstf.json", {TemporalCompositor::MaxIntensityProjection, TemporalCompositor::Average}},
         {"figure6-right-max-density-change.json", {TemporalCompositor::MaxDensityChange}},
         // A curvilinear (structured) grid, also kept whole, with lit-sphere styles.

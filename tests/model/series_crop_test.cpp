@@ -9,7 +9,10 @@
 
 #include "test_dataset.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/data/beam_geometry.h"
+#include "tstyles/data/density_sampling.h"
 #include "tstyles/data/manifest.h"
+#include "tstyles/data/structured_grid.h"
 
 namespace tstyles {
 namespace {
@@ -185,30 +188,92 @@ TEST(SeriesCrop, ReadingOnlyTheBlockIsCuttingTheWholeSeries) {
     }
 }
 
-// A beam grid's index axes do not run along the world's: it stays whole in every block (the clip
-// box splits its samples instead), and the voxel count known before reading says so.
-TEST(SeriesCrop, BeamGridsAreKeptWhole) {
-    Series series;
-    series.manifestPath = "survey/series.json";
-    series.steps.push_back(linearStep({11, 6, 5}, glm::dvec3(0.1), Placement{}));
-    TimeStep ping;
+// A sonar ping: `azimuths` x `elevations` beams over +-30 and +-15 degrees, ranges 1 to 9 m,
+// holding valueAt of each node's world position.
+TimeStep beamStep(int azimuths, int elevations, int ranges, const Placement& placement) {
     BeamGrid beams;
-    beams.dims = {2, 2, 2};
-    beams.azimuthDeg = {-10.0, 10.0};
-    beams.elevationDeg = {-5.0, 5.0};
-    ping.grid = beams;
-    ping.density = {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f, 0.7f, 0.8f};
-    ping.placement.origin = {0.5, 0.0, 0.0};
-    series.steps.push_back(ping);
+    beams.dims = {azimuths, elevations, ranges};
+    beams.azimuthDeg = evenBeamAngles(-30.0, 30.0, azimuths);
+    beams.elevationDeg = evenBeamAngles(-15.0, 15.0, elevations);
+    beams.minRange = 1.0;
+    beams.maxRange = 9.0;
+    TimeStep step;
+    step.grid = beams;
+    step.placement = placement;
+    const glm::dmat4 toWorld = placement.gridToWorld();
+    for (int k = 0; k < ranges; ++k)
+        for (int j = 0; j < elevations; ++j)
+            for (int i = 0; i < azimuths; ++i)
+                step.density.push_back(
+                    valueAt(glm::dvec3(toWorld * glm::dvec4(beamSamplePosition(beams, i, j, k), 1.0))));
+    step.mask = std::vector<std::uint8_t>(step.density.size(), 1);
+    return step;
+}
+
+// A block cuts a beam grid to the beams and range bins its box needs: the kept nodes sit where they
+// sat, with their values, and every point of the box samples what it samples in the whole ping,
+// even without ghost nodes and with the ping turned; a box beside the fan keeps one cell.
+TEST(SeriesCrop, BeamGridsKeepTheBeamsAndRangesTheBoxNeeds) {
+    Placement turned;
+    turned.origin = {0.3, -0.2, 0.1};
+    turned.rotation = glm::angleAxis(glm::radians(25.0), glm::normalize(glm::dvec3(0.2, 1.0, 0.3)));
+    for (const Placement& placement : {Placement{}, turned}) {
+        const TimeStep whole = beamStep(31, 13, 81, placement);
+        const glm::dmat4 toWorld = placement.gridToWorld();
+        const Bounds box{glm::dvec3(toWorld * glm::dvec4(-0.8, -0.5, 4.0, 1.0)) - 0.7,
+                         glm::dvec3(toWorld * glm::dvec4(-0.8, -0.5, 4.0, 1.0)) + 0.7};
+        for (int ghost : {0, 2}) {
+            SCOPED_TRACE("ghost nodes " + std::to_string(ghost));
+            TimeStep cut = whole;
+            cropTimeStepToBox(cut, box, ghost);
+            const BeamGrid& beams = cut.beam();
+            EXPECT_LT(cut.density.size(), whole.density.size() / 4);
+            EXPECT_EQ(cut.density.size(), croppedVoxelCount(whole, box, ghost));
+            EXPECT_EQ(cut.mask->size(), cut.density.size());
+            std::size_t index = 0;
+            for (int k = 0; k < beams.dims.z; ++k)
+                for (int j = 0; j < beams.dims.y; ++j)
+                    for (int i = 0; i < beams.dims.x; ++i, ++index) {
+                        const glm::dvec3 world(toWorld * glm::dvec4(beamSamplePosition(beams, i, j, k), 1.0));
+                        ASSERT_NEAR(cut.density[index], valueAt(world), 1e-5) << i << " " << j << " " << k;
+                    }
+            int inside = 0;
+            for (int z = 0; z <= 20; ++z)
+                for (int y = 0; y <= 20; ++y)
+                    for (int x = 0; x <= 20; ++x) {
+                        const glm::dvec3 at = box.lower + glm::dvec3(x, y, z) / 20.0 * box.size();
+                        const std::optional<double> expected = sampleDensity(whole, at);
+                        if (!expected) continue;
+                        ++inside;
+                        const std::optional<double> sampled = sampleDensity(cut, at);
+                        ASSERT_TRUE(sampled.has_value()) << "a point of the box left out of the cut ping";
+                        ASSERT_NEAR(*sampled, *expected, 1e-6);
+                    }
+            EXPECT_GT(inside, 5000);  // the box lies mostly inside the fan
+        }
+    }
+    TimeStep beside = beamStep(31, 13, 81, Placement{});
+    cropTimeStepToBox(beside, Bounds{{20.0, 20.0, 20.0}, {21.0, 21.0, 21.0}}, 2);
+    EXPECT_EQ(beside.beam().dims, glm::ivec3(4, 4, 4));  // the first cell and two ghost nodes beyond it
+}
+
+// A structured grid stays whole in every block (the clip box splits its samples instead), and
+// the voxel count known before reading says so.
+TEST(SeriesCrop, StructuredGridsAreKeptWhole) {
+    TimeStep warped;
+    std::vector<glm::vec3> nodes;
+    for (int k = 0; k < 2; ++k)
+        for (int j = 0; j < 2; ++j)
+            for (int i = 0; i < 2; ++i) nodes.emplace_back(float(i) + 0.1f * float(j), float(j), float(k));
+    warped.grid = makeStructuredGrid({2, 2, 2}, std::move(nodes));
+    warped.density = {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f, 0.7f, 0.8f};
     const Bounds box{{0.0, 0.0, 0.0}, {0.05, 0.05, 0.05}};
-    EXPECT_EQ(croppedVoxelCount(series.steps[1], box, 2), 8u);
-    const Series cut = cropSeriesToBox(series, box, 2);
-    ASSERT_TRUE(std::holds_alternative<BeamGrid>(cut.steps[1].grid));
-    EXPECT_EQ(cut.steps[1].density, ping.density);
-    EXPECT_EQ(cut.steps[1].placement.origin, ping.placement.origin);
-    // The rectilinear time-step is cut as ever: the box touches its first cell (nodes 0 and 1), and
-    // two ghost nodes follow.
-    EXPECT_EQ(cut.steps[0].dims(), glm::ivec3(4, 4, 4));
+    EXPECT_EQ(croppedVoxelCount(warped, box, 2), 8u);
+    EXPECT_FALSE(nodesKeptOf(warped, box, 2).has_value());
+    TimeStep cut = warped;
+    cropTimeStepToBox(cut, box, 2);
+    EXPECT_EQ(cut.density, warped.density);
+    EXPECT_TRUE(std::holds_alternative<StructuredGrid>(cut.grid));
 }
 
 }  // namespace

@@ -15,10 +15,12 @@ namespace tstyles {
 // inside `box` read exactly what they read in the whole series. A time-step that misses the box
 // keeps two nodes per axis at its edge nearest to it (it stays in the series: time-step indices
 // mean something to the index TSTF and the compositors). Values, masks, times and metadata carry
-// over. A beam (sonar) or structured time-step is kept whole: its index axes do not run along the
-// world's, so a world box does not cut it; the renderer's clip box still gives each process only
-// its block's samples of it, so the work splits but its memory does not. Takes the series by value
-// so that a caller who moves it in never holds the whole and the block at once.
+// over. A beam (sonar) time-step keeps the beams and range bins whose cells meet the box, plus the
+// ghost nodes (beam_grid_block.h). A structured time-step is kept whole: its index axes do not run
+// along the world's, and time-steps share one grid (and its inverse map); the renderer's clip box
+// still gives each process only its block's samples of it, so the work splits but its memory does
+// not. Takes the series by value so that a caller who moves it in never holds the whole and the
+// block at once.
 Series cropSeriesToBox(Series series, const Bounds& box, int ghostNodes);
 
 // The same for one time-step, in place.

@@ -19,7 +19,7 @@ namespace tstyles {
 struct BlockOfSeries {
     Series series;  // in the display frame, every time-step cut to the block
     // Per time-step, which of the file grid's nodes it holds (the display frame keeps a grid's nodes
-    // and their order); nullopt for a time-step kept whole (beam and structured grids).
+    // and their order); nullopt for a time-step kept whole (structured grids).
     std::vector<std::optional<NodeBlock>> nodes;
 };
 
