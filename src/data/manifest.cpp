@@ -235,11 +235,11 @@ std::optional<double> readMissingValue(const std::optional<ManifestField>& field
 }
 
 void readStepFiles(const std::filesystem::path& manifest, std::size_t index, StepEntry& entry,
-                   std::optional<double> missingMarker, const std::optional<NodeBlock>& kept) {
+                   std::optional<double> missingMarker, const std::optional<NodeBlock>& kept, BlockReach reach) {
     TimeStep& step = entry.step;
     // The raw files hold one value per node whatever the grid kind: only the dims matter here.
     RawValues raw = readRawValues({manifest, entry.valuesField, index, step.valuesFile}, step.dims(),
-                                  step.sourceType, missingMarker, kept);
+                                  step.sourceType, missingMarker, kept, reach);
     step.density = std::move(raw.values);  // still raw: normalised once the value range is known
     step.rawRange = raw.range;
     if (!entry.maskField.empty()) {
@@ -378,10 +378,12 @@ Series loadSeries(const std::filesystem::path& manifestPath, const ManifestLimit
     const std::filesystem::path& manifest = series.manifestPath;
 
     requireSeriesMemory(manifest, entries, limits);
+    // A block needs the whole files read through only where they decide the value range.
+    const BlockReach reach = parsed.explicitRange ? BlockReach::BlockRows : BlockReach::WholeFile;
     for (std::size_t index = 0; index < entries.size(); ++index) {
         const std::optional<NodeBlock> kept =
             limits.nodesToRead ? limits.nodesToRead(index, entries[index].step) : std::nullopt;
-        readStepFiles(manifest, index, entries[index], parsed.missingMarker, kept);
+        readStepFiles(manifest, index, entries[index], parsed.missingMarker, kept, reach);
         if (limits.afterStepRead) limits.afterStepRead(index, entries[index].step);
     }
     series.valueRange = parsed.explicitRange ? *parsed.explicitRange : valueRangeFromData(manifest, entries);

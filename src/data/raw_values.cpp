@@ -76,31 +76,88 @@ std::string voxelText(std::size_t index, const glm::ivec3& dims) {
            std::to_string(index / (nx * ny)) + ")";
 }
 
+// Decodes raw values one at a time into a kept list, marking missing ones and refusing other
+// non-finite ones, and keeps the range of those with data.
+class ValueDecoder {
+public:
+    ValueDecoder(const RawFileSource& source, const glm::ivec3& dims, ValueType type,
+                 std::optional<double> missingMarker)
+        : source_(source), dims_(dims), type_(type) {
+        // Compared in the file's own precision: a float32 file stores the marker 1e35 as float(1e35).
+        nanIsMissing_ = missingMarker && std::isnan(*missingMarker);
+        markerIsSet_ = missingMarker && !nanIsMissing_;
+        marker_ = markerIsSet_ ? float(*missingMarker) : 0.0f;
+    }
+
+    // The value at `bytes`, the file's value number `index`; appended to `values` where `keep`.
+    void decode(const std::uint8_t* bytes, std::size_t index, bool keep, std::vector<float>& values, std::size_t& next) {
+        const float value = float(decodeValue(bytes, type_, ByteOrder::Little));
+        if ((markerIsSet_ && value == marker_) || (nanIsMissing_ && std::isnan(value))) {
+            if (keep) values[next++] = missingDensity();
+            return;
+        }
+        if (!std::isfinite(value)) {
+            failFile(source_, "value file",
+                     std::string("holds a non-finite value (") + (std::isnan(value) ? "NaN" : "Inf") +
+                         ") at voxel (x, y, z) = " + voxelText(index, dims_) +
+                         (std::isnan(value) ? " (declare \"missing_value\": \"NaN\" if NaN marks missing data)" : ""));
+        }
+        if (keep) values[next++] = value;
+        lowest_ = std::min(lowest_, value);
+        highest_ = std::max(highest_, value);
+    }
+
+    std::array<double, 2> range() const {
+        const double none = std::numeric_limits<double>::quiet_NaN();
+        return lowest_ <= highest_ ? std::array<double, 2>{double(lowest_), double(highest_)}
+                                   : std::array<double, 2>{none, none};
+    }
+
+private:
+    const RawFileSource& source_;
+    glm::ivec3 dims_;
+    ValueType type_;
+    bool nanIsMissing_ = false;
+    bool markerIsSet_ = false;
+    float marker_ = 0.0f;
+    float lowest_ = std::numeric_limits<float>::infinity();
+    float highest_ = -std::numeric_limits<float>::infinity();
+};
+
 }  // namespace
 
 RawValues readRawValues(const RawFileSource& source, const glm::ivec3& dims, ValueType type,
-                        std::optional<double> missingMarker, const std::optional<NodeBlock>& kept) {
+                        std::optional<double> missingMarker, const std::optional<NodeBlock>& kept, BlockReach reach) {
     const std::size_t stride = bytesPerValue(type);
     const std::size_t count = std::size_t(dims.x) * std::size_t(dims.y) * std::size_t(dims.z);
     std::ifstream in =
         openExactly(source, "value file", count * stride, valueLayoutText(dims) + " " + toString(type) + " values");
-    // Compared in the file's own precision: a float32 file stores the marker 1e35 as float(1e35).
-    const bool nanIsMissing = missingMarker && std::isnan(*missingMarker);
-    const float marker = missingMarker && !nanIsMissing ? float(*missingMarker) : 0.0f;
-    const bool markerIsSet = missingMarker && !nanIsMissing;
-
+    ValueDecoder decoder(source, dims, type, missingMarker);
     RawValues raw;
     raw.values.resize(kept ? kept->nodeCount() : count);
     std::size_t keptIndex = 0;  // where the next kept value goes
-    glm::ivec3 node(0);         // of `index`, x fastest
+
+    if (kept && reach == BlockReach::BlockRows) {
+        std::vector<std::uint8_t> row(std::size_t(kept->count.x) * stride);
+        for (int z = kept->first.z; z < kept->first.z + kept->count.z; ++z)
+            for (int y = kept->first.y; y < kept->first.y + kept->count.y; ++y) {
+                const std::size_t first =
+                    (std::size_t(z) * std::size_t(dims.y) + std::size_t(y)) * std::size_t(dims.x) + std::size_t(kept->first.x);
+                in.seekg(std::streamoff(first * stride));
+                readInto(in, source, "value file", row.data(), row.size());
+                for (int x = 0; x < kept->count.x; ++x)
+                    decoder.decode(row.data() + std::size_t(x) * stride, first + std::size_t(x), true, raw.values, keptIndex);
+            }
+        raw.range = decoder.range();
+        return raw;
+    }
+
+    glm::ivec3 node(0);  // of `index`, x fastest
     std::vector<std::uint8_t> bytes(std::min(count, kValuesPerRead) * stride);
-    float lowest = std::numeric_limits<float>::infinity();
-    float highest = -std::numeric_limits<float>::infinity();
     for (std::size_t first = 0; first < count; first += kValuesPerRead) {
         const std::size_t values = std::min(kValuesPerRead, count - first);
         readInto(in, source, "value file", bytes.data(), values * stride);
         for (std::size_t offset = 0; offset < values; ++offset) {
-            const std::size_t index = first + offset;
             const bool keep = !kept || kept->contains(node);
             if (++node.x == dims.x) {
                 node.x = 0;
@@ -109,25 +166,10 @@ RawValues readRawValues(const RawFileSource& source, const glm::ivec3& dims, Val
                     ++node.z;
                 }
             }
-            const float value = float(decodeValue(bytes.data() + offset * stride, type, ByteOrder::Little));
-            if ((markerIsSet && value == marker) || (nanIsMissing && std::isnan(value))) {
-                if (keep) raw.values[keptIndex++] = missingDensity();
-                continue;
-            }
-            if (!std::isfinite(value)) {
-                failFile(source, "value file",
-                         std::string("holds a non-finite value (") + (std::isnan(value) ? "NaN" : "Inf") +
-                             ") at voxel (x, y, z) = " + voxelText(index, dims) +
-                             (std::isnan(value) ? " (declare \"missing_value\": \"NaN\" if NaN marks missing data)" : ""));
-            }
-            if (keep) raw.values[keptIndex++] = value;
-            lowest = std::min(lowest, value);
-            highest = std::max(highest, value);
+            decoder.decode(bytes.data() + offset * stride, first + offset, keep, raw.values, keptIndex);
         }
     }
-    const double none = std::numeric_limits<double>::quiet_NaN();
-    raw.range = lowest <= highest ? std::array<double, 2>{double(lowest), double(highest)}
-                                  : std::array<double, 2>{none, none};
+    raw.range = decoder.range();
     return raw;
 }
 

@@ -31,13 +31,21 @@ struct RawValues {
     std::array<double, 2> range{0.0, 0.0};
 };
 
+// How much of a value file a reader that keeps one block reads.
+enum class BlockReach {
+    WholeFile,  // read through: the range and the checks cover every value of the file
+    BlockRows,  // only the block's rows: the range and the checks cover the block's values
+};
+
 // Reads dims.x * dims.y * dims.z little-endian values of `type`; the file size must match exactly.
 // A value equal to `missingMarker` is missing (a NaN marker makes NaN values missing); any other
 // non-finite float32 value is an error. With `kept`, only that block's values are kept (x fastest
-// within it), while the whole file is still read past in chunks: the range and the checks cover
-// every value, as without it, and memory holds the block alone.
+// within it), and memory holds the block alone; `reach` says whether the whole file is still read
+// past in chunks, so that the range and the checks cover every value as without `kept`, or only
+// the block's rows are read.
 RawValues readRawValues(const RawFileSource& source, const glm::ivec3& dims, ValueType type,
-                        std::optional<double> missingMarker, const std::optional<NodeBlock>& kept = std::nullopt);
+                        std::optional<double> missingMarker, const std::optional<NodeBlock>& kept = std::nullopt,
+                        BlockReach reach = BlockReach::WholeFile);
 
 // Reads one uint8 per voxel; with `kept`, only that block's rows.
 std::vector<std::uint8_t> readMask(const RawFileSource& source, const glm::ivec3& dims,

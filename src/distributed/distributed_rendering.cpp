@@ -53,6 +53,7 @@ DistributedRendering::DistributedRendering(const MpiSession& mpi, Renderer& rend
                            fittedOutline.framed, fittedOutline.frame) {
     std::optional<BlockOfSeries> block;
     mpi_.together("reading this process's block", [&] { block = read(blocks_.block(mpi_.rank())); });
+    combineRawRanges(mpi_, block->series);
     if (fittingReadsValues(scene_, automaticOpacity)) {
         SceneFittedOverBlocks fitted =
             fitOverBlocks(mpi_, blocks_, scene_, automaticOpacity, fittedOutline.series, *block, framed_);

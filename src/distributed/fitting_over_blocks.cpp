@@ -1,6 +1,9 @@
 // The value-dependent parts of a scene, fitted over the processes' blocks (fitting_over_blocks.h).
 #include "tstyles/distributed/fitting_over_blocks.h"
 
+#include <cmath>
+#include <limits>
+
 #include "tstyles/data/beam_geometry.h"
 #include "tstyles/data/density_sampling.h"
 #include "tstyles/data/grid_axes.h"
@@ -163,6 +166,23 @@ SceneFittedOverBlocks fitOverBlocks(const MpiSession& mpi, const BlockDecomposit
     }
     const Bounds framed = scene.camera.framing == Framing::Visible ? visible : framedOutline;
     return {std::move(scene), framed};
+}
+
+void combineRawRanges(const MpiSession& mpi, Series& block) {
+    // As maxima: the negated lows and the highs, with none as -infinity.
+    const double none = -std::numeric_limits<double>::infinity();
+    std::vector<double> ends;
+    for (const TimeStep& step : block.steps) {
+        ends.push_back(std::isnan(step.rawRange[0]) ? none : -step.rawRange[0]);
+        ends.push_back(std::isnan(step.rawRange[1]) ? none : step.rawRange[1]);
+    }
+    ends = mpi.maximum(std::move(ends));
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (std::size_t index = 0; index < block.steps.size(); ++index) {
+        const double low = ends[2 * index];
+        const double high = ends[2 * index + 1];
+        block.steps[index].rawRange = high == none ? std::array<double, 2>{nan, nan} : std::array<double, 2>{-low, high};
+    }
 }
 
 }  // namespace tstyles

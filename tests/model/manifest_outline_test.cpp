@@ -94,9 +94,12 @@ TEST(ManifestBlockReading, KeepsTheBlocksNodesAndTheWholeFilesRange) {
     EXPECT_FLOAT_EQ(series.steps[1].density[0], 15.0f / 23.0f);
 }
 
-// A bad value outside the block is still found: the whole file is read through.
-TEST(ManifestBlockReading, ABadValueOutsideTheBlockIsStillAnError) {
+// Without "value_range" a bad value outside the block is still found: the whole file is read
+// through for the range. (With it, only the block's rows are read, and the process whose block
+// holds the value finds it: SeriesCrop.AGivenValueRangeReadsOnlyTheBlocksRows.)
+TEST(ManifestBlockReading, WithoutAValueRangeABadValueOutsideTheBlockIsStillAnError) {
     json manifest = baseManifest();
+    manifest.erase("value_range");
     manifest["time_steps"][1]["values"]["type"] = "float32";
     const auto folder = writeBaseDataset("block_reading_nan", manifest);
     std::vector<float> values(tstyles_test::kBaseVoxels, 1.0f);

@@ -4,8 +4,12 @@
 
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "test_dataset.h"
 #include "tstyles/core/errors.h"
@@ -186,6 +190,54 @@ TEST(SeriesCrop, ReadingOnlyTheBlockIsCuttingTheWholeSeries) {
             EXPECT_EQ(read.placement.origin, expected.placement.origin);
         }
     }
+}
+
+// Where the manifest gives the value range, a block reads only its rows: its raw range is the
+// block's, and a bad value is found by the block that holds it and no other. Without the range,
+// every block reads the files through, as the range needs every value, and finds it anywhere.
+TEST(SeriesCrop, AGivenValueRangeReadsOnlyTheBlocksRows) {
+    RawSeries raw;
+    raw.name = "rows";
+    raw.valueRange = {0.0, 15.0};
+    RawTimeStep step;
+    step.grid.dims = {16, 4, 4};
+    step.grid.spacing = glm::dvec3(1.0);
+    step.type = ValueType::Float32;
+    std::vector<float> values;
+    for (int z = 0; z < 4; ++z)
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 16; ++x) values.push_back(float(x));
+    values[15] = std::numeric_limits<float>::quiet_NaN();  // node (15, 0, 0)
+    step.bytes.resize(values.size() * sizeof(float));
+    std::memcpy(step.bytes.data(), values.data(), step.bytes.size());
+    raw.steps.push_back(std::move(step));
+    const std::filesystem::path folder = tstyles_test::freshFolder("series_crop_block_rows");
+    writeSeries(raw, folder);
+    const auto readBlock = [&](const Bounds& box) {
+        ManifestLimits limits;
+        limits.nodesToRead = [&](std::size_t, const TimeStep& outline) { return nodesKeptOf(outline, box, 2); };
+        limits.afterStepRead = [&](std::size_t, TimeStep& kept) { cropTimeStepGridToBox(kept, box, 2); };
+        limits.keptVoxels = 16 * 4 * 4;
+        return loadSeries(folder / "series.json", limits);
+    };
+    const Bounds left{{0.0, 0.0, 0.0}, {4.0, 3.0, 3.0}};  // nodes 0..4, and two ghost nodes: 0..6
+    const Series block = readBlock(left);
+    EXPECT_EQ(block.steps[0].rawRange, (std::array<double, 2>{0.0, 6.0}));
+    EXPECT_EQ(block.valueRange, (std::array<double, 2>{0.0, 15.0}));
+    try {
+        readBlock(Bounds{{12.0, 0.0, 0.0}, {15.0, 3.0, 3.0}});
+        ADD_FAILURE() << "the block that holds the NaN read it";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("non-finite value (NaN) at voxel (x, y, z) = (15, 0, 0)"),
+                  std::string::npos)
+            << error.what();
+    }
+
+    // The same files without "value_range": the left block reads them through and finds the NaN.
+    nlohmann::ordered_json manifest = nlohmann::ordered_json::parse(std::ifstream(folder / "series.json"));
+    ASSERT_EQ(manifest.erase("value_range"), 1u);
+    std::ofstream(folder / "series.json") << manifest.dump(2);
+    EXPECT_THROW(readBlock(left), InputError);
 }
 
 // A sonar ping: `azimuths` x `elevations` beams over +-30 and +-15 degrees, ranges 1 to 9 m,

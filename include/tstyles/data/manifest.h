@@ -15,9 +15,12 @@ namespace tstyles {
 // What a series may take: memory (none given: half of the machine's, defaultMemoryCap()) for 4
 // bytes a voxel in memory, a mask byte where there is a mask, and the GPU's copy.
 // Where a process keeps one block of every time-step (distributed rendering): `nodesToRead` says,
-// before a time-step's files are opened, which of its nodes to keep (none: all). Its files are
-// still read through in chunks, so rawRange and the checks of every value cover the whole file and
-// every process finds the whole series' range, but memory holds the block alone. Then
+// before a time-step's files are opened, which of its nodes to keep (none: all). Where the
+// manifest gives "value_range", only the block's rows of each value file are read, and rawRange
+// and the checks of the values (NaN, Inf) cover the block; the process whose block holds a bad
+// value finds it. Otherwise the files are still read through in chunks, so rawRange and the
+// checks cover the whole file and every process finds the whole series' range; memory holds the
+// block alone either way. Then
 // `afterStepRead` is called with the time-step as read (values cut, grid still whole; missing
 // values NaN), before the values are mapped to density, to cut its grid alike.
 using StepNodesToRead = std::function<std::optional<NodeBlock>(std::size_t index, const TimeStep& outline)>;

@@ -30,4 +30,9 @@ SceneFittedOverBlocks fitOverBlocks(const MpiSession& mpi, const BlockDecomposit
                                     bool automaticOpacity, const Series& displayOutline, const BlockOfSeries& block,
                                     const Bounds& framedOutline);
 
+// Collective. Each time-step's raw value range (TimeStep::rawRange) of `block` made the whole
+// time-step's: the range over every process's block, since a block read only its rows where the
+// manifest gives the value range (loadSeries). NaN, NaN where no block has a value with data.
+void combineRawRanges(const MpiSession& mpi, Series& block);
+
 }  // namespace tstyles
