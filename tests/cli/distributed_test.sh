@@ -125,6 +125,24 @@ case_failure_on_one_process_ends_all() {
     [ "$(grep -c "process [12] of 3" "$ERR_FILE")" -eq 0 ] || fail "processes 1 and 2 did not fail, yet are reported"
 }
 
+# With "value_range" in the manifest each process reads only its block's rows, so a bad value is
+# found by the process whose block holds it: an Inf in the last value of a converted CF NetCDF ends
+# both processes with that one process's message, exit 2, and no image.
+case_bad_value_in_one_block_ends_all() {
+    "$(dirname "$TSTYLES")/tests/write_realistic_datasets" "$SCRATCH/real" >/dev/null || fail "write_realistic_datasets failed"
+    run_tstyles -- convert "$SCRATCH/real/ocean-eddy.nc" -o "$SCRATCH/eddy"
+    expect_exit 0
+    grep -q '"value_range"' "$SCRATCH/eddy/series.json" || fail "convert wrote no value_range"
+    local bytes
+    bytes=$(stat -c %s "$SCRATCH/eddy/t00.raw")
+    printf '\x00\x00\x80\x7f' | dd of="$SCRATCH/eddy/t00.raw" bs=1 seek=$((bytes - 4)) conv=notrunc status=none
+    run_mpi 2 render "$SCRATCH/eddy" -o "$SCRATCH/bad.png" --width 64 --height 64 --distributed
+    expect_exit 2
+    expect_stderr_contains "holds a non-finite value (Inf) at voxel (x, y, z) = (79, 59, 19)"
+    [ "$(grep -c "tstyles: process [01] of 2: " "$ERR_FILE")" -eq 1 ] || fail "not exactly one process reported the value"
+    expect_no_output "$SCRATCH/bad.png"
+}
+
 case_animate_frames_match_one() {
     # The growing multiple exposure, 80 frames at 64x64; the first, a middle and the last compared.
     run_tstyles -- animate "$SCENE" --exposure grow --width 64 --height 64 -o "$SCRATCH/one/"
