@@ -69,21 +69,30 @@ struct AnimationPlan {
     std::vector<Scene> scenes;
 };
 
-// `opened`: the scene and series the options ask for.
-AnimationPlan planAnimation(const AnimateOptions& options, SceneAndSeries opened, bool checkOutput) {
+// The scene the options ask for (`opened`: with its series), fitted to the series, before its
+// animation is made.
+SceneOnSeries fittedForAnimation(const AnimateOptions& options, SceneAndSeries opened) {
     Scene& scene = opened.scene;
     if (options.width) scene.width = *options.width;
     if (options.height) scene.height = *options.height;
     applySceneOverrides(opened, options.overrides);
     applyAnnotationOptions(scene, options.annotations);
+    return fitSceneToSeries(std::move(scene), std::move(opened.series));
+}
+
+// The animation of `fitted` (the scene's, or the presets') and its frames.
+AnimationPlan planFrames(const AnimateOptions& options, SceneOnSeries fitted, bool checkOutput) {
     const std::string sceneName = options.inputs.front().string();
-    SceneOnSeries fitted = fitSceneToSeries(std::move(scene), std::move(opened.series));
     fitted.scene.animation =
         animationFor(fitted.scene, fitted.series.size(), options.animation, sceneName, cameraDistance(fitted));
     const MovieSettings movie{fitted.scene.width, fitted.scene.height, fitted.scene.animation.framesPerSecond};
     if (checkOutput) requireWritableFrameOutput(options.output, movie);
     std::vector<Scene> scenes = frameScenes(fitted.scene, fitted.series.size(), options.inputs.front());
     return {std::move(fitted), movie, std::move(scenes)};
+}
+
+AnimationPlan planAnimation(const AnimateOptions& options, SceneAndSeries opened, bool checkOutput) {
+    return planFrames(options, fittedForAnimation(options, std::move(opened)), checkOutput);
 }
 
 void reportWritten(const AnimateOptions& options, const FrameSink& sink, const MovieSettings& movie,
@@ -133,10 +142,13 @@ int runDistributedAnimate(const AnimateOptions& options) {
     const MpiSession mpi;
     std::optional<AnimationPlan> plan;
     std::optional<DistributedSource> source;
+    std::optional<SceneOnSeries> unanimated;  // where blocks are read: the outline's scene before its animation
     mpi.together("reading the scene and the series", [&] {
         parseGpuMemoryOption(options.gpuMemory);
-        source = openDistributedSource(options.inputs, {}, options.dataset, ValueFitting::BeforeReading);
-        plan = planAnimation(options, std::move(source->opened), mpi.isFirst());
+        source = openDistributedSource(options.inputs, {}, options.dataset);
+        SceneOnSeries fitted = fittedForAnimation(options, std::move(source->opened));
+        if (source->blockManifest) unanimated = fitted;  // an outline: no values
+        plan = planFrames(options, std::move(fitted), mpi.isFirst());
     });
     std::unique_ptr<HeadlessContext> context;
     std::optional<Renderer> renderer;
@@ -149,6 +161,15 @@ int runDistributedAnimate(const AnimateOptions& options) {
         mpi, *renderer, std::move(plan->fitted), *source, options.dataset,
         [&](const Series& block, const WholeSeries& whole) {
             uploadWithinGpuMemory(*renderer, block, options.gpuMemory, options.dataset, whole);
+        });
+    if (unanimated)
+        // The plan above was the outline's (it checked the output before any block was read); the
+        // frames follow the scene fitted over the blocks: its opacity, gradient range and framing.
+        mpi.together("planning the frames", [&] {
+            Scene scene = rendering.scene();
+            scene.animation = unanimated->scene.animation;
+            plan = planFrames(options, {std::move(scene), unanimated->series, unanimated->frame, rendering.framed()},
+                              false);
         });
     const InterruptGuard interrupt;  // before the output is opened, as in runAnimate
     std::unique_ptr<FrameSink> sink;

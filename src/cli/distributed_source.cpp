@@ -24,17 +24,6 @@ std::string whyNotInBlocks(const std::vector<std::filesystem::path>& dataset, co
     return "";
 }
 
-// Why a scene file's values must be known before any frame is planned; empty where they need not.
-std::string whyNotFittedAfterReading(const Scene& scene) {
-    if (scene.gradientTstf.automaticRange)
-        return "the scene's gradient TSTF range is \"auto\", which is fitted to the values before the frames are "
-               "planned (a fixed range reads blocks)";
-    if (scene.camera.framing == Framing::Visible)
-        return "the camera frames the visible data, which the values decide before the frames are planned "
-               "(\"frame\": \"series\" reads blocks)";
-    return "";
-}
-
 Series outlineFor(const std::filesystem::path& manifest, const DatasetOptions& datasetOptions) {
     Series outline = loadSeriesOutline(manifest);
     outline.precision = toReadOptions(datasetOptions).precision;
@@ -45,15 +34,13 @@ Series outlineFor(const std::filesystem::path& manifest, const DatasetOptions& d
 
 DistributedSource openDistributedSource(const std::vector<std::filesystem::path>& inputs,
                                         const std::vector<std::filesystem::path>& datasetFiles,
-                                        const DatasetOptions& datasetOptions, ValueFitting fitting) {
+                                        const DatasetOptions& datasetOptions) {
     const auto wholeSeries = [&](std::string reason) {
         return DistributedSource{openSceneOrDataset(inputs, datasetFiles, datasetOptions), std::nullopt,
                                  std::move(reason)};
     };
     if (inputs.size() != 1 || classifyInput(inputs.front()) != InputKind::Scene) {
-        if (fitting == ValueFitting::BeforeReading)
-            return wholeSeries("the automatic scene is fitted to the values before the frames are planned "
-                               "(`tstyles scene` writes it to a file to fix)");
+        if (!datasetFiles.empty()) return wholeSeries("");  // refused there: --dataset needs a scene file
         if (std::string reason = whyNotInBlocks(inputs, datasetOptions); !reason.empty())
             return wholeSeries(std::move(reason));
         for (const auto& input : inputs)
@@ -68,9 +55,8 @@ DistributedSource openDistributedSource(const std::vector<std::filesystem::path>
     Scene scene = loadScene(inputs.front());
     const std::vector<std::filesystem::path> dataset =
         datasetFiles.empty() ? std::vector<std::filesystem::path>{scene.dataset} : datasetFiles;
-    std::string reason = whyNotInBlocks(dataset, datasetOptions);
-    if (reason.empty() && fitting == ValueFitting::BeforeReading) reason = whyNotFittedAfterReading(scene);
-    if (!reason.empty()) return wholeSeries(std::move(reason));
+    if (std::string reason = whyNotInBlocks(dataset, datasetOptions); !reason.empty())
+        return wholeSeries(std::move(reason));
     Series outline = outlineFor(dataset.front(), datasetOptions);
     return {SceneAndSeries{std::move(scene), std::move(outline), {}}, dataset.front(), "", false};
 }

@@ -1,8 +1,8 @@
 // What the processes of `render --distributed` and `animate --distributed` read: where the dataset
 // is one manifest, each process reads only its block (block_reading.h), and a scene whose fitting
 // needs values (the automatic scene, an "auto" gradient range, a camera framed on the visible
-// data) is fitted over the blocks (fitting_over_blocks.h) where the command can wait for them;
-// otherwise every process reads the whole series and keeps its block, and says why
+// data) is fitted over the blocks (fitting_over_blocks.h), after which the commands plan their
+// frames; otherwise every process reads the whole series and keeps its block, and says why
 // (docs/scaling.md, "What each process reads").
 #pragma once
 
@@ -26,15 +26,10 @@ struct DistributedSource {
     bool automaticOpacity = false;
 };
 
-// Whether the command can leave the parts of the scene that the values decide until the blocks are
-// read (`render` of one frame), or needs the whole scene before it renders anything (`animate`
-// and `render --frame K` plan their frames from it).
-enum class ValueFitting { AfterReading, BeforeReading };
-
 // As openSceneOrDataset, but with the outline only where blocks can be read.
 DistributedSource openDistributedSource(const std::vector<std::filesystem::path>& inputs,
                                         const std::vector<std::filesystem::path>& datasetFiles,
-                                        const DatasetOptions& datasetOptions, ValueFitting fitting);
+                                        const DatasetOptions& datasetOptions);
 
 // Collective: the distributed rendering of `fitted` (fitted to `source`'s series), each process's
 // block read by itself or cut from the whole series.

@@ -60,8 +60,8 @@ void overrideStyles(Scene& scene, const std::vector<std::string>& overrides) {
     }
 }
 
-// The scene and series the options ask for (`opened`), fitted to each other, at the frame asked for.
-SceneOnSeries fittedSceneFor(const RenderOptions& options, SceneAndSeries opened) {
+// The scene and series the options ask for (`opened`), fitted to each other.
+SceneOnSeries fittedScene(const RenderOptions& options, SceneAndSeries opened) {
     Scene& scene = opened.scene;
     if (options.width) scene.width = *options.width;
     if (options.height) scene.height = *options.height;
@@ -71,7 +71,12 @@ SceneOnSeries fittedSceneFor(const RenderOptions& options, SceneAndSeries opened
     if (!options.frame && (hasPreset(options.animation) || options.animation.frames || options.animation.framesPerSecond))
         throwInputError("", "--frame", "missing: the animation options of render choose the animation that --frame K "
                                        "takes a frame of");
-    SceneOnSeries fitted = fitSceneToSeries(std::move(scene), std::move(opened.series));
+    return fitSceneToSeries(std::move(scene), std::move(opened.series));
+}
+
+// A fitted scene at the frame asked for (--frame K of its animation or the presets'), its exposure
+// and difference steps checked against the series.
+SceneOnSeries atRequestedFrame(const RenderOptions& options, SceneOnSeries fitted) {
     if (options.frame) {
         const Animation animation = animationFor(fitted.scene, fitted.series.size(), options.animation,
                                                   options.inputs.front().string(), cameraDistance(fitted));
@@ -84,6 +89,10 @@ SceneOnSeries fittedSceneFor(const RenderOptions& options, SceneAndSeries opened
     fitted.scene.exposure.stepsOf(fitted.series.size(), options.inputs.front());
     fitted.scene.compositorOptions.differenceSteps(fitted.series.size(), options.inputs.front());
     return fitted;
+}
+
+SceneOnSeries fittedSceneFor(const RenderOptions& options, SceneAndSeries opened) {
+    return atRequestedFrame(options, fittedScene(options, std::move(opened)));
 }
 
 void warnAboutCutShortRays(const RenderOptions& options, const Renderer& renderer, const HeadlessContext& context) {
@@ -122,14 +131,16 @@ int runDistributedRender(const RenderOptions& options) {
     const MpiSession mpi;
     std::optional<DistributedSource> source;
     std::optional<SceneOnSeries> fitted;
+    std::optional<SceneOnSeries> outline;  // where blocks are read: the scene on the series' outline
     mpi.together("reading the scene and the series", [&] {
         if (mpi.isFirst()) requireWritableImagePath(options.output);
         parseGpuMemoryOption(options.gpuMemory);
-        // One frame: the scene's value-dependent parts can wait for the blocks; --frame K plans the
-        // animation from the fitted scene first.
-        source = openDistributedSource(options.inputs, options.datasetFiles, options.dataset,
-                                       options.frame ? ValueFitting::BeforeReading : ValueFitting::AfterReading);
-        fitted = fittedSceneFor(options, std::move(source->opened));
+        source = openDistributedSource(options.inputs, options.datasetFiles, options.dataset);
+        fitted = fittedScene(options, std::move(source->opened));
+        if (source->blockManifest)
+            outline = fitted;  // no values: small
+        else
+            fitted = atRequestedFrame(options, std::move(*fitted));
     });
     std::unique_ptr<HeadlessContext> context;
     std::optional<Renderer> renderer;
@@ -143,7 +154,12 @@ int runDistributedRender(const RenderOptions& options) {
         mpi, *renderer, std::move(*fitted), *source, options.dataset, [&](const Series& block, const WholeSeries& whole) {
             uploadWithinGpuMemory(*renderer, block, options.gpuMemory, options.dataset, whole);
         });
-    const Scene& scene = rendering.scene();
+    Scene scene = rendering.scene();
+    if (outline)
+        // The scene's value-dependent parts came from the blocks; the frame asked for follows them.
+        mpi.together("choosing the frame", [&] {
+            scene = atRequestedFrame(options, {rendering.scene(), outline->series, outline->frame, rendering.framed()}).scene;
+        });
     const Image image = rendering.render(scene);
     const double renderMs = mpi.maximum(rendering.lastTimes().render);
     const double compositeMs = mpi.maximum(rendering.lastTimes().composite);

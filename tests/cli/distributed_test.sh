@@ -41,9 +41,8 @@ case_four_processes_match_one() {
 }
 
 # Framing the visible data needs the values: each process reads only its block, the visible bounds
-# are taken over the blocks, and the image is the one process's. `render --frame K` plans the
-# animation from the framed scene before anything is read, so there every process reads the whole
-# series and says why.
+# are taken over the blocks, and the image is the one process's; with `--frame K` of an orbit too,
+# whose distance follows the framed bounds.
 case_blocks_where_the_scene_needs_values() {
     sed 's#"fov_deg": 30}#"fov_deg": 30, "frame": "visible"}#; s#"\.\./superellipsoid/#"'"$SOURCE_DIR"'/data/superellipsoid/#' \
         "$SCENE" >"$SCRATCH/visible.json"
@@ -54,15 +53,20 @@ case_blocks_where_the_scene_needs_values() {
     expect_exit 0
     expect_stdout_contains "each process read only its block"
     expect_same_as_one_process "$SCRATCH/one.png" "$SCRATCH/two.png"
-    run_mpi 2 render "$SCRATCH/visible.json" -o "$SCRATCH/frame.png" --width 64 --height 64 --distributed \
-        --orbit 90 --frames 4 --frame 0
+    run_tstyles -- render "$SCRATCH/visible.json" -o "$SCRATCH/one-frame.png" --width 96 --height 96 \
+        --orbit 90 --frames 4 --frame 1
     expect_exit 0
-    expect_stdout_contains "every process read the whole series: the camera frames the visible data, which the values decide before the frames are planned (\"frame\": \"series\" reads blocks)"
+    run_mpi 2 render "$SCRATCH/visible.json" -o "$SCRATCH/two-frame.png" --width 96 --height 96 --distributed \
+        --orbit 90 --frames 4 --frame 1
+    expect_exit 0
+    expect_stdout_contains "each process read only its block"
+    expect_same_as_one_process "$SCRATCH/one-frame.png" "$SCRATCH/two-frame.png"
 }
 
 # A manifest given alone takes the automatic scene, whose opacity comes from the histogram, its
 # gradient range from the changes over time and its camera from the visible bounds: all taken over
-# the blocks, so the processes read only their blocks and the picture is the one process's.
+# the blocks, so the processes read only their blocks and the picture is the one process's; and
+# `animate` plans its frames (an orbit's distance) from the scene so fitted.
 case_automatic_scene_in_blocks() {
     local hurricane="$SOURCE_DIR/data/hurricane/series.json"
     run_tstyles -- render "$hurricane" -o "$SCRATCH/one.png" --width 128 --height 128 --tc temporal-max-change
@@ -71,6 +75,14 @@ case_automatic_scene_in_blocks() {
     expect_exit 0
     expect_stdout_contains "each process read only its block"
     expect_same_as_one_process "$SCRATCH/one.png" "$SCRATCH/two.png"
+    run_tstyles -- animate "$hurricane" --orbit 90 --frames 3 --width 64 --height 64 -o "$SCRATCH/one/"
+    expect_exit 0
+    run_mpi 2 animate "$hurricane" --orbit 90 --frames 3 --width 64 --height 64 -o "$SCRATCH/two/" --distributed
+    expect_exit 0
+    expect_stdout_contains "each process read only its block"
+    for frame in 0000 0002; do
+        expect_same_as_one_process "$SCRATCH/one/frame-$frame.png" "$SCRATCH/two/frame-$frame.png"
+    done
 }
 
 # The hurricane takes 23.4 MB under the memory check (4 bytes a voxel in memory, 2 on the GPU), so
