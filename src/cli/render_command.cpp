@@ -137,10 +137,12 @@ int runDistributedRender(const RenderOptions& options) {
         parseGpuMemoryOption(options.gpuMemory);
         source = openDistributedSource(options.inputs, options.datasetFiles, options.dataset);
         fitted = fittedScene(options, std::move(source->opened));
-        if (source->blockManifest)
+        if (source->blockManifest) {
             outline = fitted;  // no values: small
-        else
+            atRequestedFrame(options, *outline);  // --frame and the steps checked before any block is read
+        } else {
             fitted = atRequestedFrame(options, std::move(*fitted));
+        }
     });
     std::unique_ptr<HeadlessContext> context;
     std::optional<Renderer> renderer;

@@ -40,7 +40,7 @@ private:
     glm::dmat4 toWorld_;
 };
 
-// Calls visit(localIndex, node) for the nodes of a cut time-step whose linear index in the whole
+// Calls visit(localIndex) for the nodes of a cut time-step whose linear index in the whole
 // grid is a multiple of `stride` and whose position this process owns.
 template <typename Visit>
 void forOwnedNodes(const BlockDecomposition& blocks, int rank, const TimeStep& whole, const NodeBlock& nodes,
