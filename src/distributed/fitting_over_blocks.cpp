@@ -85,22 +85,26 @@ std::vector<NodeIndexBox> visibleBoxesOverBlocks(const MpiSession& mpi, const St
     std::vector<NodeIndexBox> boxes;
     mpi.together("finding the visible part of this process's block",
                  [&] { boxes = visibleNodeBoxes(block.series, stf); });
-    // As maxima: the negated lower corners and the upper corners.
-    std::vector<double> corners;
+    // Merged as minima and maxima; an empty box (lower INT_MAX, upper INT_MIN) takes no part.
+    std::vector<double> lower;
+    std::vector<double> upper;
     for (std::size_t index = 0; index < boxes.size(); ++index) {
         NodeIndexBox box = boxes[index];
         if (!box.empty() && block.nodes[index]) {
             box.lower += block.nodes[index]->first;
             box.upper += block.nodes[index]->first;
         }
-        for (int axis = 0; axis < 3; ++axis) corners.push_back(-double(box.lower[axis]));
-        for (int axis = 0; axis < 3; ++axis) corners.push_back(double(box.upper[axis]));
+        for (int axis = 0; axis < 3; ++axis) {
+            lower.push_back(double(box.lower[axis]));
+            upper.push_back(double(box.upper[axis]));
+        }
     }
-    corners = mpi.maximum(std::move(corners));
+    lower = mpi.minimum(std::move(lower));
+    upper = mpi.maximum(std::move(upper));
     for (std::size_t index = 0; index < boxes.size(); ++index)
         for (int axis = 0; axis < 3; ++axis) {
-            boxes[index].lower[axis] = int(-corners[6 * index + std::size_t(axis)]);
-            boxes[index].upper[axis] = int(corners[6 * index + 3 + std::size_t(axis)]);
+            boxes[index].lower[axis] = int(lower[3 * index + std::size_t(axis)]);
+            boxes[index].upper[axis] = int(upper[3 * index + std::size_t(axis)]);
         }
     return boxes;
 }
@@ -169,20 +173,20 @@ SceneFittedOverBlocks fitOverBlocks(const MpiSession& mpi, const BlockDecomposit
 }
 
 void combineRawRanges(const MpiSession& mpi, Series& block) {
-    // As maxima: the negated lows and the highs, with none as -infinity.
-    const double none = -std::numeric_limits<double>::infinity();
-    std::vector<double> ends;
+    // A time-step without data in a block takes no part: +infinity as its low, -infinity as its high.
+    const double infinity = std::numeric_limits<double>::infinity();
+    std::vector<double> lows;
+    std::vector<double> highs;
     for (const TimeStep& step : block.steps) {
-        ends.push_back(std::isnan(step.rawRange[0]) ? none : -step.rawRange[0]);
-        ends.push_back(std::isnan(step.rawRange[1]) ? none : step.rawRange[1]);
+        lows.push_back(std::isnan(step.rawRange[0]) ? infinity : step.rawRange[0]);
+        highs.push_back(std::isnan(step.rawRange[1]) ? -infinity : step.rawRange[1]);
     }
-    ends = mpi.maximum(std::move(ends));
+    lows = mpi.minimum(std::move(lows));
+    highs = mpi.maximum(std::move(highs));
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    for (std::size_t index = 0; index < block.steps.size(); ++index) {
-        const double low = ends[2 * index];
-        const double high = ends[2 * index + 1];
-        block.steps[index].rawRange = high == none ? std::array<double, 2>{nan, nan} : std::array<double, 2>{-low, high};
-    }
+    for (std::size_t index = 0; index < block.steps.size(); ++index)
+        block.steps[index].rawRange = lows[index] <= highs[index] ? std::array<double, 2>{lows[index], highs[index]}
+                                                                  : std::array<double, 2>{nan, nan};
 }
 
 }  // namespace tstyles

@@ -101,6 +101,11 @@ std::vector<double> MpiSession::sum(std::vector<double> values) const {
     return values;
 }
 
+std::vector<double> MpiSession::minimum(std::vector<double> values) const {
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), int(values.size()), MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
+    return values;
+}
+
 std::vector<double> MpiSession::maximum(std::vector<double> values) const {
     MPI_Allreduce(MPI_IN_PLACE, values.data(), int(values.size()), MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
     return values;

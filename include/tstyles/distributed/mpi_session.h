@@ -40,8 +40,9 @@ public:
     // Collective maximum of a value over the processes, on every process.
     double maximum(double value) const;
     // Collective, element by element over the processes (every process gives as many), on every
-    // process: the sums, and the maxima.
+    // process: the sums, the minima and the maxima.
     std::vector<double> sum(std::vector<double> values) const;
+    std::vector<double> minimum(std::vector<double> values) const;
     std::vector<double> maximum(std::vector<double> values) const;
     // Collective: every process's values one after the other, in rank order, on every process.
     std::vector<double> gathered(const std::vector<double>& values) const;
