@@ -2,8 +2,8 @@
 // RGBA16 texel of the packed atlas, so one filtered fetch reads a group of four at a sample. All
 // time-steps have the same grid, placement and entry/exit interval, so the ray's only slot gives
 // the voxel position of every one of them (one node lookup along uneven axes for all), and one
-// occupancy texel per brick (visible where any time-step is) decides empty-space skipping for all
-// of them at once. Included by the packed walk of the time-steps (walk_packed_groups.glsl) only.
+// occupancy texel per brick (visible where any time-step is; else how far the empty bricks reach)
+// decides empty-space skipping for all of them at once. Included by the packed walk of the time-steps (walk_packed_groups.glsl) only.
 // With missing values the packed densities are premultiplied by validity (render::PackedValidity):
 // PER_GROUP: the group's four validities are a second RGBA16 texel at the same place; SHARED:
 // every time-step misses the same voxels, and one R16 texture of the grid holds their validity.
@@ -15,7 +15,7 @@
 #include "voxel_rays.glsl"
 
 layout(binding = PACKED_ATLAS_UNIT) uniform sampler3D packedAtlas;
-layout(binding = PACKED_OCCUPANCY_UNIT) uniform sampler3D packedOccupancy;
+layout(binding = PACKED_OCCUPANCY_UNIT) uniform usampler3D packedOccupancy;
 layout(binding = PACKED_VALIDITY_UNIT) uniform sampler3D packedValidity;
 uniform vec3 inversePackedAtlasSize;
 uniform vec3 inverseSharedValiditySize;
@@ -71,6 +71,8 @@ float packedEmptySpaceUntil(AlignedSample aligned, float t) {
 #if !SKIP_EMPTY_BRICKS
     return -1.0;
 #endif
-    if (texelFetch(packedOccupancy, ivec3(brickOf(0, aligned.voxel)), 0).r > 0.5) return -1.0;
-    return brickExit(0, aligned.voxel, aligned.gridLocal, t, slotVoxelDirection(0));
+    // 0: visible; else 1 + how far the empty bricks reach (as emptyReachAt).
+    int reach = int(texelFetch(packedOccupancy, ivec3(brickOf(0, aligned.voxel)), 0).r) - 1;
+    if (reach < 0) return -1.0;
+    return brickExit(0, aligned.voxel, aligned.gridLocal, t, slotVoxelDirection(0), reach);
 }

@@ -106,9 +106,10 @@ AtlasSample sampleAtlas(vec3 atlasPosition) {
 #endif
 }
 
-// Empty-space skipping: one texel per brick of BRICK_SIZE³ cells in the occupancy atlas, non-zero
-// where the STF can give the brick's densities some opacity (render/brick_occupancy.h).
-layout(binding = OCCUPANCY_UNIT) uniform sampler3D occupancyAtlas;
+// Empty-space skipping: one texel per brick of BRICK_SIZE³ cells in the occupancy atlas: 0 where the
+// STF can give the brick's densities some opacity (render/brick_occupancy.h), else 1 + how far the
+// empty bricks around it reach (render/empty_brick_reach.h).
+layout(binding = OCCUPANCY_UNIT) uniform usampler3D occupancyAtlas;
 const float BRICK_SIZE = float(BRICK_CELLS);
 
 vec3 brickCount(int step) {
@@ -119,19 +120,28 @@ vec3 brickOf(int step, vec3 voxel) {
     return min(floor(voxel / BRICK_SIZE), brickCount(step) - 1.0);
 }
 
-bool brickVisible(int step, vec3 voxel) {
+// -1 where the brick at the voxel is visible; else its reach r: every brick at most r bricks away
+// along each axis is empty too.
+int emptyReachAt(int step, vec3 voxel) {
     ivec3 texel = ivec3(timeSteps.steps[step].occupancyOrigin.xyz + brickOf(step, voxel));
-    return texelFetch(occupancyAtlas, texel, 0).r > 0.5;
+    return int(texelFetch(occupancyAtlas, texel, 0).r) - 1;
+}
+
+// The node box of the empty bricks within `reach` bricks of the voxel's brick, cut by the grid.
+void emptyRegionOf(int step, vec3 voxel, int reach, out vec3 lower, out vec3 upper) {
+    vec3 brick = brickOf(step, voxel);
+    lower = max(brick - float(reach), 0.0) * BRICK_SIZE;
+    upper = min((brick + float(reach) + 1.0) * BRICK_SIZE, timeSteps.steps[step].dims.xyz - 1.0);
 }
 
 // The ray parameter at which a ray at `t`, at `voxel` in the time-step's grid and moving by
-// `direction` per unit of t in worldToVoxel's space, leaves the brick it is in. Only for
-// rectilinear grids, where a ray is a straight line in that space with the ray's own parameter;
-// `gridLocal` is the sample in that space (the voxel itself along even axes), where the brick's
-// faces are taken too (node index to position is monotonic along uneven axes).
-float brickExit(int step, vec3 voxel, vec3 gridLocal, float t, vec3 direction) {
-    vec3 lower = brickOf(step, voxel) * BRICK_SIZE;
-    vec3 upper = min(lower + BRICK_SIZE, timeSteps.steps[step].dims.xyz - 1.0);
+// `direction` per unit of t in worldToVoxel's space, leaves the empty bricks within `reach` of the
+// brick it is in. Only for rectilinear grids, where a ray is a straight line in that space with the
+// ray's own parameter; `gridLocal` is the sample in that space (the voxel itself along even axes),
+// where the region's faces are taken too (node index to position is monotonic along uneven axes).
+float brickExit(int step, vec3 voxel, vec3 gridLocal, float t, vec3 direction, int reach) {
+    vec3 lower, upper;
+    emptyRegionOf(step, voxel, reach, lower, upper);
 #if !ALL_AFFINE
     nodeBoundsToGrid(step, lower, upper);
 #endif
@@ -144,19 +154,20 @@ float brickExit(int step, vec3 voxel, vec3 gridLocal, float t, vec3 direction) {
     return t + max(exit, 0.0);
 }
 
-// Where a ray may jump to from `t` when the time-step's brick there is empty: the brick's exit, or
-// for a beam grid a conservative step (the distance to the brick's nearest bounding plane or
-// sphere); structured grids get no jump. `gridLocal` and `direction` (rectilinear grids): the
-// sample and the ray's direction in worldToVoxel's space (brickExit).
-float emptyBrickEnd(int step, vec3 voxel, vec3 gridLocal, float t, vec3 worldPosition, vec3 direction) {
+// Where a ray may jump to from `t` when the time-step's brick there is empty, with `reach`
+// (emptyReachAt): the exit of the empty bricks around it, or for a beam grid a conservative step
+// (the distance to their region's nearest bounding plane or sphere); structured grids get no jump.
+// `gridLocal` and `direction` (rectilinear grids): the sample and the ray's direction in
+// worldToVoxel's space (brickExit).
+float emptyBrickEnd(int step, vec3 voxel, vec3 gridLocal, float t, vec3 worldPosition, vec3 direction, int reach) {
 #if !ALL_AFFINE
     if (isStructured(step)) return t;
     if (isBeamGrid(step)) {
-        vec3 brickLower = brickOf(step, voxel) * BRICK_SIZE;
-        vec3 brickUpper = min(brickLower + BRICK_SIZE, timeSteps.steps[step].dims.xyz - 1.0);
+        vec3 regionLower, regionUpper;
+        emptyRegionOf(step, voxel, reach, regionLower, regionUpper);
         vec3 local = (timeSteps.steps[step].worldToVoxel * vec4(worldPosition, 1.0)).xyz;
-        return beamBrickExit(step, brickLower, brickUpper, local, t);
+        return beamBrickExit(step, regionLower, regionUpper, local, t);
     }
 #endif
-    return brickExit(step, voxel, gridLocal, t, direction);
+    return brickExit(step, voxel, gridLocal, t, direction, reach);
 }

@@ -51,14 +51,15 @@ float emptySpaceUntil(SamplePoint point) {
             continue;
         }
         vec3 voxel = voxelInShape.xyz;
-        if (brickVisible(step, voxel)) return -1.0;
+        int reach = emptyReachAt(step, voxel);
+        if (reach < 0) return -1.0;
 #if ALL_AFFINE
         vec3 gridLocal = voxel;
 #else
         vec3 gridLocal = slotAffine(i) ? voxel : gridLocalAtSample(i, point.t);
 #endif
         emptyUntil = min(emptyUntil,
-                         emptyBrickEnd(step, voxel, gridLocal, point.t, point.position, slotVoxelDirection(i)));
+                         emptyBrickEnd(step, voxel, gridLocal, point.t, point.position, slotVoxelDirection(i), reach));
     }
     return anyStep ? emptyUntil : -1.0;
 }

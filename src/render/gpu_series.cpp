@@ -15,6 +15,7 @@
 #include "tstyles/render/beam_angle_table.h"
 #include "tstyles/render/shader_contract.h"
 #include "tstyles/render/density_texels.h"
+#include "tstyles/render/empty_brick_reach.h"
 #include "tstyles/render/packed_aligned_atlas.h"
 #include "tstyles/render/proxy_mesh.h"
 #include "tstyles/render/series_texture_plan.h"
@@ -236,7 +237,7 @@ GpuSeries::GpuSeries(const Series& series, const SeriesStorage& storage)
     }
     occupancyLayout_ = plan_.occupancy;
     occupancyAtlas_ = Texture::create(GL_TEXTURE_3D);
-    glTextureStorage3D(occupancyAtlas_.id(), 1, GL_R8, occupancyLayout_.size.x, occupancyLayout_.size.y,
+    glTextureStorage3D(occupancyAtlas_.id(), 1, GL_R8UI, occupancyLayout_.size.x, occupancyLayout_.size.y,
                        occupancyLayout_.size.z);
     occupancyAtlas_.setFilter(GL_NEAREST, GL_NEAREST);
     occupancyAtlas_.setClampToEdge();
@@ -295,8 +296,9 @@ void GpuSeries::updateOccupancy(const std::vector<glm::vec4>& stfTable) {
         if (packedAtlas_) visibilities.push_back(visible);
         const glm::ivec3 origin = occupancyLayout_.brickOrigins[index];
         const glm::ivec3 size = brickGrids_[index].bricks;
-        glTextureSubImage3D(occupancyAtlas_.id(), 0, origin.x, origin.y, origin.z, size.x, size.y, size.z, GL_RED,
-                            GL_UNSIGNED_BYTE, visible.data());
+        const std::vector<std::uint8_t> reach = emptyBrickReach(visible, size);
+        glTextureSubImage3D(occupancyAtlas_.id(), 0, origin.x, origin.y, origin.z, size.x, size.y, size.z,
+                            GL_RED_INTEGER, GL_UNSIGNED_BYTE, reach.data());
     }
     emptyBrickFraction_ = bricks ? double(emptyBricks) / double(bricks) : 0.0;
     if (packedAtlas_) {

@@ -9,6 +9,7 @@
 #include "tstyles/data/series_summary.h"
 #include "tstyles/render/shader_contract.h"
 #include "tstyles/render/density_texels.h"
+#include "tstyles/render/empty_brick_reach.h"
 
 namespace tstyles {
 namespace {
@@ -126,7 +127,7 @@ PackedAlignedAtlas::PackedAlignedAtlas(const Series& series, glm::ivec3 brickCou
     }
     groupOrigins_.setData(std::as_bytes(std::span(origins)), GL_STATIC_DRAW);
 
-    glTextureStorage3D(occupancy_.id(), 1, GL_R8, brickCounts.x, brickCounts.y, brickCounts.z);
+    glTextureStorage3D(occupancy_.id(), 1, GL_R8UI, brickCounts.x, brickCounts.y, brickCounts.z);
     occupancy_.setFilter(GL_NEAREST, GL_NEAREST);
     occupancy_.setClampToEdge();
 }
@@ -137,8 +138,9 @@ std::size_t PackedAlignedAtlas::textureBytes() const {
 
 void PackedAlignedAtlas::updateOccupancy(const std::vector<std::uint8_t>& unionVisibility) {
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage3D(occupancy_.id(), 0, 0, 0, 0, brickCounts_.x, brickCounts_.y, brickCounts_.z, GL_RED,
-                        GL_UNSIGNED_BYTE, unionVisibility.data());
+    const std::vector<std::uint8_t> reach = emptyBrickReach(unionVisibility, brickCounts_);
+    glTextureSubImage3D(occupancy_.id(), 0, 0, 0, 0, brickCounts_.x, brickCounts_.y, brickCounts_.z, GL_RED_INTEGER,
+                        GL_UNSIGNED_BYTE, reach.data());
 }
 
 void PackedAlignedAtlas::bind() const {

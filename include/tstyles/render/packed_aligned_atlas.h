@@ -68,7 +68,8 @@ public:
     glm::ivec3 sharedValiditySize() const { return sharedValiditySize_; }
     std::size_t textureBytes() const;
 
-    // The union of the time-steps' brick visibilities, per transfer-function change.
+    // The union of the time-steps' brick visibilities, per transfer-function change; the texture
+    // holds how far the empty bricks reach (emptyBrickReach).
     void updateOccupancy(const std::vector<std::uint8_t>& unionVisibility);
     // Binds the packed atlas, its validities, its occupancy and the table of group origins.
     void bind() const;
