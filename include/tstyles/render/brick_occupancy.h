@@ -15,9 +15,10 @@
 namespace tstyles {
 
 // 4 rather than 8: the finer grid skips about a quarter of the samples of the super-ellipsoid
-// scenes that 8³ bricks left (transparent samples inside partly visible bricks), and a jump per
-// brick still costs less than the samples it saves; 2 takes more samples than it skips
-// (docs/performance.md). BRICK_CELLS in shaders/contract.glsl.
+// scenes that 8³ bricks left (transparent samples inside partly visible bricks). 2 takes fewer
+// samples still now that a ray jumps over cubes of empty bricks (empty_brick_reach.h), but was no
+// faster in paired runs and needs eight times the min/max grids (docs/performance.md).
+// BRICK_CELLS in shaders/contract.glsl.
 inline constexpr int kBrickSize = contract::BRICK_CELLS;
 
 struct BrickGrid {
