@@ -3,7 +3,8 @@
 // time-steps have the same grid, placement and entry/exit interval, so the ray's only slot gives
 // the voxel position of every one of them (one node lookup along uneven axes for all), and one
 // occupancy texel per brick (visible where any time-step is; else how far the empty bricks reach)
-// decides empty-space skipping for all of them at once. Included by the packed walk of the time-steps (walk_packed_groups.glsl) only.
+// decides empty-space skipping for all of them at once. Included by the packed walk of the
+// time-steps (walk_packed_groups.glsl) only.
 // With missing values the packed densities are premultiplied by validity (render::PackedValidity):
 // PER_GROUP: the group's four validities are a second RGBA16 texel at the same place; SHARED:
 // every time-step misses the same voxels, and one R16 texture of the grid holds their validity.

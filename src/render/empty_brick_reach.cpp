@@ -41,7 +41,8 @@ void erodeAlong(int axis, const glm::ivec3& bricks, std::vector<std::uint8_t>& e
 
 std::vector<std::uint8_t> emptyBrickReach(const std::vector<std::uint8_t>& visible, const glm::ivec3& bricks) {
     const std::size_t count = std::size_t(bricks.x) * std::size_t(bricks.y) * std::size_t(bricks.z);
-    if (visible.size() != count) throw std::invalid_argument("emptyBrickReach: visibility does not match the brick grid");
+    if (visible.size() != count)
+        throw std::invalid_argument("emptyBrickReach: visibility does not match the brick grid");
     std::vector<std::uint8_t> reach(count), empty(count), scratch(count);
     std::size_t remaining = 0;
     for (std::size_t brick = 0; brick < count; ++brick) {
