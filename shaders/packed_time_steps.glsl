@@ -72,8 +72,7 @@ float packedEmptySpaceUntil(AlignedSample aligned, float t) {
 #if !SKIP_EMPTY_BRICKS
     return -1.0;
 #endif
-    // 0: visible; else 1 + how far the empty bricks reach (as emptyReachAt).
-    int reach = int(texelFetch(packedOccupancy, ivec3(brickOf(0, aligned.voxel)), 0).r) - 1;
+    int reach = emptyReachOfTexel(texelFetch(packedOccupancy, ivec3(brickOf(0, aligned.voxel)), 0).r);
     if (reach < 0) return -1.0;
     return brickExit(0, aligned.voxel, aligned.gridLocal, t, slotVoxelDirection(0), reach);
 }

@@ -120,11 +120,15 @@ vec3 brickOf(int step, vec3 voxel) {
     return min(floor(voxel / BRICK_SIZE), brickCount(step) - 1.0);
 }
 
-// -1 where the brick at the voxel is visible; else its reach r: every brick at most r bricks away
-// along each axis is empty too.
+// An occupancy texel (this atlas' or the packed atlas'), decoded: -1 where the brick is visible;
+// else its reach r: every brick at most r bricks away along each axis is empty too.
+int emptyReachOfTexel(uint occupancy) {
+    return int(occupancy) - 1;
+}
+
 int emptyReachAt(int step, vec3 voxel) {
     ivec3 texel = ivec3(timeSteps.steps[step].occupancyOrigin.xyz + brickOf(step, voxel));
-    return int(texelFetch(occupancyAtlas, texel, 0).r) - 1;
+    return emptyReachOfTexel(texelFetch(occupancyAtlas, texel, 0).r);
 }
 
 // The node box of the empty bricks within `reach` bricks of the voxel's brick, cut by the grid.
