@@ -93,17 +93,23 @@ SphereCoordinate styleCoordinate(int step, vec3 position, inout int fetches) {
 #endif
 }
 
+// Whether the final processing of a sample, in or outside the masks, with the TSTF `tstfTrack`
+// shows a track that has styles, and so reads a lit sphere.
+bool readsLitSphere(bool inMask, int tstfTrack) {
+    return (showsStf(inMask) && isStyledTrack(STF_TRACK)) || (showsTstf(inMask) && isStyledTrack(tstfTrack));
+}
+
 // The final processing of an STF classification and a TSTF one (`tstfTrack`), each styled where
 // it has styles and is shown. Only then is the sphere coordinate (a six-fetch gradient) needed:
-// outside the masks of a scene whose STF has no styles there is none. A run-time test, and llvmpipe
-// skips its body for every block of 8 pixels that agree (docs/performance.md, "llvmpipe and
-// branches"); the picture is the same either way.
+// outside the masks of a scene whose STF has no styles there is none. A run-time test: a GPU skips
+// the gradient where a warp agrees, but inside the ray's loop llvmpipe runs it for every call, taken
+// or not (docs/performance.md, "llvmpipe and branches"), so a compositor that styles several
+// time-steps per sample leaves out those that need no sphere before it calls this (tc_average.glsl).
 vec4 styledFinal(TimeStepSample s, vec3 position, vec4 tstf, int tstfTrack, float tstfX, inout int fetches) {
     bool stfShown = showsStf(s.inMask);
     bool tstfShown = showsTstf(s.inMask);
     SphereCoordinate sphere = SphereCoordinate(vec2(0.5));
-    if ((stfShown && isStyledTrack(STF_TRACK)) || (tstfShown && isStyledTrack(tstfTrack)))
-        sphere = styleCoordinate(s.step, position, fetches);
+    if (readsLitSphere(s.inMask, tstfTrack)) sphere = styleCoordinate(s.step, position, fetches);
     vec4 stf = stfShown ? applyStyle(STF_TRACK, s.density, s.stf, sphere) : s.stf;
     vec4 styledTstf = tstfShown ? applyStyle(tstfTrack, tstfX, tstf, sphere) : tstf;
     return finalProcessing(stf, styledTstf, s.inMask);
@@ -112,4 +118,10 @@ vec4 styledFinal(TimeStepSample s, vec3 position, vec4 tstf, int tstfTrack, floa
 // One time-step's own temporal style: its STF and its index TSTF, styled, after final processing.
 vec4 styledTimeStep(TimeStepSample s, vec3 position, inout int fetches) {
     return styledFinal(s, position, classifyIndexTstf(s.step), INDEX_TSTF_TRACK, float(s.step), fetches);
+}
+
+// styledTimeStep() of a sample where readsLitSphere(s.inMask, INDEX_TSTF_TRACK) is false: no style
+// applies there, so this is the same colour without the style code.
+vec4 timeStepWithoutStyles(TimeStepSample s) {
+    return finalProcessing(s.stf, classifyIndexTstf(s.step), s.inMask);
 }

@@ -22,7 +22,8 @@
 //   PRECOMPUTED_GRADIENTS 1 when styles read gradients from the gradient atlas (one fetch, computed
 //                       once per series by gradient_atlas.comp) instead of six density fetches
 // Each is a switch and not a run-time test because llvmpipe runs both sides of a branch that the 8
-// pixels it shades together disagree on, masked (docs/performance.md, "llvmpipe and branches").
+// pixels it shades together disagree on, masked, and inside the ray's loop even one that none of them
+// takes (docs/performance.md, "llvmpipe and branches").
 #if !defined(STYLED) || !defined(HAS_MASKS) || !defined(ALL_AFFINE) || !defined(STRUCTURED_GRIDS) || \
     !defined(UNEVEN_AXES) || !defined(BEAM_GRIDS) || !defined(EVEN_BEAMS) || !defined(PACKED_ALIGNED) ||   \
     !defined(PACKED_VALIDITY) || !defined(MAX_TIME_STEPS) || !defined(COLLECT_STATISTICS) ||             \

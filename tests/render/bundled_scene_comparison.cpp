@@ -2,6 +2,7 @@
 #include "bundled_scene_comparison.h"
 
 #include <iostream>
+#include <optional>
 
 #include <gtest/gtest.h>
 
@@ -18,10 +19,14 @@ const std::filesystem::path kOutputDir = TSTYLES_TEST_OUTPUT_DIR;
 
 }  // namespace
 
-void PrintTo(const BundledScene& bundled, std::ostream* out) { *out << bundled.scene << " on " << bundled.dataset; }
+void PrintTo(const BundledScene& bundled, std::ostream* out) {
+    *out << bundled.scene << " on " << bundled.dataset;
+    if (!bundled.compositor.empty()) *out << " with " << bundled.compositor;
+}
 
 std::string testNameOf(const BundledScene& bundled) {
     std::string name = bundled.scene + "_on_" + bundled.dataset;
+    if (!bundled.compositor.empty()) name += "_with_" + bundled.compositor;
     for (char& c : name)
         if (c == '-') c = '_';
     return name;
@@ -36,6 +41,11 @@ void expectSameImage(const BundledScene& bundled, int size, const RenderingWay& 
     Scene scene = loadScene(kSourceDir / "data/scenes" / (bundled.scene + ".json"));
     scene.width = size;
     scene.height = size;
+    if (!bundled.compositor.empty()) {
+        const std::optional<TemporalCompositor> compositor = temporalCompositorFromString(bundled.compositor);
+        ASSERT_TRUE(compositor) << "no compositor named " << bundled.compositor;
+        scene.compositor = *compositor;
+    }
     const Series& series = loadSeriesOnce(manifestOf(bundled));
     testRenderer().setSeries(series);
     const Image firstImage = drawWithCurrentSeries(scene, series.worldBounds(), first.options);

@@ -14,6 +14,7 @@ namespace tstyles::testing {
 struct BundledScene {
     std::string scene;
     std::string dataset;
+    std::string compositor;  // a compositor's name (as in scene files) in place of the scene's; empty: the scene's
 };
 
 // What ctest lists and gtest reports as the parameter (instead of the struct's bytes).

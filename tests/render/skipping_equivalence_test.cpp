@@ -95,7 +95,9 @@ INSTANTIATE_TEST_SUITE_P(BenchmarkScenes, EmptyBrickTestEquivalence,
 // The per-ray caches (voxel rays, the temporal average's deferred styling) are on by default on a
 // CPU rasterizer and off on a GPU: both give the same picture, on every kind of walk and grid (ray
 // list on boxes, on the hurricane's uneven levels and on the sonar's beam fans, the packed walk of
-// the aligned series, the curvilinear warped box) and for the average styled both ways. Without
+// the aligned series, the curvilinear warped box) and for the average styled both ways, and where
+// its styles show inside the masks only, so that some of a sample's time-steps are styled as the
+// walk meets them and the others in the finish (the sonar's index TSTF). Without
 // the caches a sample's voxel position is one matrix product instead of origin + t * direction:
 // float rounding alone tells them apart.
 class PerRayCachesEquivalence : public ::testing::TestWithParam<BundledScene> {};
@@ -114,6 +116,7 @@ INSTANTIATE_TEST_SUITE_P(BenchmarkScenes, PerRayCachesEquivalence,
                                            BundledScene{"figure5-focus-step5", "hurricane"},
                                            BundledScene{"figure6-centre-index-tstf", "sonar"},
                                            BundledScene{"figure6-right-max-density-change", "sonar"},
+                                           BundledScene{"figure6-centre-index-tstf", "sonar", "temporal-average"},
                                            BundledScene{"warped-box-styled", "warped-box"}),
                          [](const auto& parameter) { return testNameOf(parameter.param); });
 
