@@ -2,6 +2,7 @@
 // through a known transfer function: a linear gradient TSTF ramp turns a characteristic into a
 // colour that says its value, an index TSTF with one colour per time-step says which time-step won.
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -211,6 +212,56 @@ TEST(CompositorRender, ChronovolumeCompositesTheTimeStepsInTimeOrder) {
     const glm::dvec4 strongerRed(1, 0, 0, 0.2);
     expectPixel(renderSeries(stackedBoxes({1.0f, 0.5f}), scene), kCentre,
                 chronovolumePixel({strongerRed, fainterBlue}, kConstantBoxWidth), "stronger red in front");
+}
+
+// Styles inside the masks only (an STF without styles, a styled index TSTF, modulate): a sample's
+// time-step inside its mask reads a lit sphere, one outside does not, so the temporal average and
+// the chronovolume style the first and colour the second without style code (tc_average.glsl,
+// tc_chronovolume.glsl). Time-step 0 (density 0.5) lies inside its mask, time-step 1 (density 1)
+// outside its own; the STF is white with opacity 0.2 x density, the index TSTF one flat style.
+class StylesInsideTheMasksOnly : public ::testing::Test {
+protected:
+    static constexpr glm::vec4 kStyleColour{0.2f, 0.6f, 0.4f, 1.0f};  // exact in 8 bits
+
+    static Series maskedBoxes() {
+        BoxSpec inside = constantBox({0, 0, 0}, 0.5f);
+        inside.mask = [](glm::ivec3) { return true; };
+        BoxSpec outside = constantBox({0, 0, 0}, 1.0f);
+        outside.mask = [](glm::ivec3) { return false; };
+        return makeSeries({inside, outside});
+    }
+
+    static Scene maskedStyleScene(TemporalCompositor compositor) {
+        Scene scene = orthographicSceneLookingDownZ(kCentre, kViewHeight, kSize);
+        scene.stf.curve.opacity = {{0.0, 0.0}, {1.0, 0.2}};
+        scene.stf.curve.color = {{0.0, {1, 1, 1}}};
+        const std::string style = writeStyle("flat-for-masks", 16, 16, [](glm::vec2) { return kStyleColour; });
+        scene.indexTstf.curve.opacity = {{0.0, 1.0}};
+        scene.indexTstf.curve.color = {{0.0, {1, 1, 1}, style, 0}};
+        scene.finalMode = FinalMode::Modulate;
+        scene.compositor = compositor;
+        return scene;
+    }
+
+    // Time-step 0 inside its mask: the STF (white, 0.1) modulated by the styled TSTF; time-step 1
+    // outside: the STF alone (white, 0.2).
+    const glm::dvec4 styledInside{kStyleColour.r, kStyleColour.g, kStyleColour.b, 0.1};
+    const glm::dvec4 plainOutside{1, 1, 1, 0.2};
+};
+
+TEST_F(StylesInsideTheMasksOnly, TheTemporalAverageAveragesTheStyledAndThePlainTimeStep) {
+    // Colours weighted by opacity, opacities averaged.
+    const double opacity = (styledInside.a + plainOutside.a) / 2.0;
+    const glm::dvec3 colour = (glm::dvec3(styledInside) * styledInside.a + glm::dvec3(plainOutside) * plainOutside.a) /
+                              (styledInside.a + plainOutside.a);
+    const double alpha = slabOpacity(opacity, kConstantBoxWidth);
+    expectPixel(renderSeries(maskedBoxes(), maskedStyleScene(TemporalCompositor::Average)), kCentre,
+                glm::vec4(glm::vec3(colour * alpha), float(alpha)), "styled inside, plain outside");
+}
+
+TEST_F(StylesInsideTheMasksOnly, TheChronovolumeCompositesTheStyledBeforeThePlainTimeStep) {
+    expectPixel(renderSeries(maskedBoxes(), maskedStyleScene(TemporalCompositor::Chronovolume)), kCentre,
+                chronovolumePixel({styledInside, plainOutside}, kConstantBoxWidth), "styled in front of plain");
 }
 
 }  // namespace
