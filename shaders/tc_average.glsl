@@ -13,11 +13,24 @@
 const int COMPOSITOR_READS = READS_COMPOSITED;
 const bool COMPOSITOR_IGNORES_TRANSPARENT = true;
 
-// The average of `count` styled time-steps from the sum of their premultiplied colours and opacities:
-// colour weighted by opacity, opacity averaged.
-TemporalCharacteristic averageOf(vec4 premultipliedSum, int count) {
-    if (count == 0) return transparentCharacteristic();
-    return compositedCharacteristic(vec4(premultipliedSum.rgb / premultipliedSum.a, premultipliedSum.a / float(count)));
+// The styled time-steps added so far: the sum of their premultiplied colours and opacities, and
+// how many have some opacity.
+struct AverageSums {
+    vec4 premultipliedSum;
+    int nonTransparent;
+};
+
+void addStyled(inout AverageSums sums, vec4 styled) {
+    if (styled.a <= 0.0) return;
+    sums.premultipliedSum += vec4(styled.rgb * styled.a, styled.a);
+    sums.nonTransparent += 1;
+}
+
+// Their average: colour weighted by opacity, opacity averaged.
+TemporalCharacteristic averageOf(AverageSums sums) {
+    if (sums.nonTransparent == 0) return transparentCharacteristic();
+    vec4 sum = sums.premultipliedSum;
+    return compositedCharacteristic(vec4(sum.rgb / sum.a, sum.a / float(sums.nonTransparent)));
 }
 
 #if PER_RAY_CACHES
@@ -29,25 +42,18 @@ float averageDensity[MAX_TIME_STEPS];
 bool averageInMask[MAX_TIME_STEPS];
 
 struct CompositorState {
-    vec4 premultipliedSum;
-    int nonTransparent;
+    AverageSums sums;
     int deferred;  // entries of the arrays above
 };
 
 CompositorState compositorInit() {
-    return CompositorState(vec4(0.0), 0, 0);
-}
-
-void addStyled(inout CompositorState state, vec4 styled) {
-    if (styled.a <= 0.0) return;
-    state.premultipliedSum += vec4(styled.rgb * styled.a, styled.a);
-    state.nonTransparent += 1;
+    return CompositorState(AverageSums(vec4(0.0), 0), 0);
 }
 
 void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 position, inout int fetches) {
     if (s.stf.a <= 0.0) return;
     if (!readsLitSphere(s.inMask, INDEX_TSTF_TRACK)) {
-        addStyled(state, timeStepWithoutStyles(s));
+        addStyled(state.sums, timeStepWithoutStyles(s));
         return;
     }
     averageStep[state.deferred] = s.step;
@@ -63,32 +69,28 @@ void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 po
 TemporalCharacteristic compositorFinish(CompositorState state, vec3 position, inout int fetches) {
     for (int i = 0; i < state.deferred; ++i) {
         float density = averageDensity[i];
-        addStyled(state, styledTimeStep(TimeStepSample(averageStep[i], density, classifyStf(density), averageInMask[i]),
-                                        position, fetches));
+        addStyled(state.sums, styledTimeStep(TimeStepSample(averageStep[i], density, classifyStf(density), averageInMask[i]),
+                                             position, fetches));
     }
-    return averageOf(state.premultipliedSum, state.nonTransparent);
+    return averageOf(state.sums);
 }
 #else
 // On a GPU each visible time-step is styled as the walk meets it, into running sums: the arrays of
 // the finish would live in slow per-thread memory there.
 struct CompositorState {
-    vec4 premultipliedSum;
-    int nonTransparent;
+    AverageSums sums;
 };
 
 CompositorState compositorInit() {
-    return CompositorState(vec4(0.0), 0);
+    return CompositorState(AverageSums(vec4(0.0), 0));
 }
 
 void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 position, inout int fetches) {
     if (s.stf.a <= 0.0) return;
-    vec4 styled = styledTimeStep(s, position, fetches);
-    if (styled.a <= 0.0) return;
-    state.premultipliedSum += vec4(styled.rgb * styled.a, styled.a);
-    state.nonTransparent += 1;
+    addStyled(state.sums, styledTimeStep(s, position, fetches));
 }
 
 TemporalCharacteristic compositorFinish(CompositorState state, vec3 position, inout int fetches) {
-    return averageOf(state.premultipliedSum, state.nonTransparent);
+    return averageOf(state.sums);
 }
 #endif
