@@ -4,6 +4,7 @@
 // world positions to grid-local ones; from there (azimuth, elevation, range) give the fractional
 // sample (beam across, beam along, range sample). Mirrors tstyles/data/beam_geometry.h.
 #include "contract.glsl"
+#include "variant_switches.glsl"
 #include "time_steps.glsl"
 
 // Every beam grid's beam angles in radians, one run per axis and time-step (TimeStepInfo.grid.yz
@@ -15,7 +16,7 @@ layout(std430, binding = BEAM_ANGLE_BUFFER) readonly buffer BeamAngles {
 
 bool isBeamGrid(int step) {
 #if BEAM_GRIDS
-    return timeSteps.steps[step].grid.x == GRID_BEAM;
+    return ONLY_BEAM_GRIDS || timeSteps.steps[step].grid.x == GRID_BEAM;
 #else
     return false;
 #endif

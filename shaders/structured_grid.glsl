@@ -17,7 +17,7 @@ layout(binding = INVERSE_MAP_UNIT) uniform sampler3D inverseMapAtlas;
 
 bool isStructured(int step) {
 #if STRUCTURED_GRIDS
-    return structuredGrids.steps[step].mapOrigin.w > 0.5;
+    return ONLY_STRUCTURED_GRIDS || structuredGrids.steps[step].mapOrigin.w > 0.5;
 #else
     return false;
 #endif

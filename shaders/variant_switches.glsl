@@ -7,6 +7,7 @@
 //   MISSING_VALUES      1 when the density atlas holds (density * validity, validity) pairs
 //   ALL_AFFINE          1 when every time-step's world -> voxel map is affine (even rectilinear grids)
 //   STRUCTURED_GRIDS    1 when the series has explicit structured time-steps
+//   RECTILINEAR_GRIDS   1 when a time-step is a rectilinear grid (even or uneven axes)
 //   UNEVEN_AXES         1 when a time-step has an uneven rectilinear axis
 //   UNEVEN_AXIS_WALK    1 when an uneven axis' bucket may hold several nodes (UnevenAxisTable::crowdedBuckets)
 //   BEAM_GRIDS          1 when a time-step is a beam (sonar) grid
@@ -29,9 +30,19 @@
     !defined(PACKED_VALIDITY) || !defined(MAX_TIME_STEPS) || !defined(COLLECT_STATISTICS) ||             \
     !defined(CUSTOM_READS_INDEX) || !defined(STYLED_TRACKS) || !defined(SKIP_EMPTY_BRICKS) || \
     !defined(MISSING_VALUES) || !defined(UNEVEN_AXIS_WALK) || !defined(PER_RAY_CACHES) ||              \
-    !defined(PRECOMPUTED_GRADIENTS)
+    !defined(PRECOMPUTED_GRADIENTS) || !defined(RECTILINEAR_GRIDS)
 #error "a raycasting switch is not defined: build the program through RaycastVariant"
 #endif
+#if !RECTILINEAR_GRIDS && !STRUCTURED_GRIDS && !BEAM_GRIDS
+#error "a series holds at least one kind of grid"
+#endif
+
+// A series of one kind of grid needs no test of a time-step's kind: isBeamGrid and isStructured
+// are then constant, and the paths of the kinds it lacks leave the program (inside the ray's loop
+// llvmpipe would run them, masked, at every sample: the sonar's frames took a third longer with
+// the rectilinear path beside the beam one).
+const bool ONLY_BEAM_GRIDS = BEAM_GRIDS != 0 && RECTILINEAR_GRIDS == 0 && STRUCTURED_GRIDS == 0;
+const bool ONLY_STRUCTURED_GRIDS = STRUCTURED_GRIDS != 0 && RECTILINEAR_GRIDS == 0 && BEAM_GRIDS == 0;
 #if PRECOMPUTED_GRADIENTS && (!ALL_AFFINE || MISSING_VALUES)
 #error "precomputed gradients are for even rectilinear grids without missing values"
 #endif

@@ -73,7 +73,7 @@ bool slotAffine(int slot) {
 #if BEAM_GRIDS
 bool slotBeam(int slot) {
 #if PER_RAY_CACHES
-    return activeBeam[slot];
+    return ONLY_BEAM_GRIDS || activeBeam[slot];
 #else
     return isBeamGrid(activeSteps[slot]);
 #endif

@@ -196,6 +196,9 @@ GpuSeries::GpuSeries(const Series& series, const SeriesStorage& storage)
     hasMasks_ = series.hasMasks();
     allAffine_ = std::all_of(series.steps.begin(), series.steps.end(), hasAffineWorldToVoxel);
     hasBeamGrids_ = std::any_of(series.steps.begin(), series.steps.end(), [](const TimeStep& step) { return step.isBeam(); });
+    hasRectilinearGrids_ = std::any_of(series.steps.begin(), series.steps.end(), [](const TimeStep& step) {
+        return std::holds_alternative<RectilinearGrid>(step.grid);
+    });
     allBeamsEven_ = hasBeamGrids_ && std::all_of(series.steps.begin(), series.steps.end(), [](const TimeStep& step) {
                         if (!step.isBeam()) return true;
                         const BeamGrid& grid = step.beam();

@@ -62,16 +62,17 @@ struct GridKind {
     bool structuredGrids;
     bool beamGrids;
     bool evenBeams;
-    bool rectilinear;  // only rectilinear series can be packed
+    bool rectilinearGrids;  // a time-step is rectilinear
+    bool onlyRectilinear;   // only rectilinear series can be packed
 };
 
 constexpr GridKind kGridKinds[] = {
-    {true, false, false, false, false, true},    // even rectilinear
-    {false, true, false, false, false, true},    // uneven rectilinear
-    {false, false, false, true, true, false},    // beam grids, evenly spaced beams
-    {false, false, false, true, false, false},   // beam grids, uneven beams
-    {false, false, true, false, false, false},   // structured grids
-    {false, true, true, true, false, false},     // structured, uneven rectilinear and beam grids together
+    {true, false, false, false, false, true, true},     // even rectilinear
+    {false, true, false, false, false, true, true},     // uneven rectilinear
+    {false, false, false, true, true, false, false},    // beam grids alone, evenly spaced beams
+    {false, false, false, true, false, false, false},   // beam grids alone, uneven beams
+    {false, false, true, false, false, false, false},   // structured grids alone
+    {false, true, true, true, false, true, false},      // structured, uneven rectilinear and beam grids together
 };
 
 // The custom compositor twice, once for each transfer function that may read it.
@@ -104,6 +105,7 @@ ShaderDefines RaycastVariant::defines() const {
         {"MISSING_VALUES", flag(missingValues)},
         {"ALL_AFFINE", flag(allAffine)},
         {"STRUCTURED_GRIDS", flag(structuredGrids)},
+        {"RECTILINEAR_GRIDS", flag(rectilinearGrids)},
         {"UNEVEN_AXES", flag(unevenAxes)},
         {"UNEVEN_AXIS_WALK", flag(unevenAxisWalk)},
         {"BEAM_GRIDS", flag(beamGrids)},
@@ -149,7 +151,7 @@ std::vector<RaycastVariant> requestableRaycastVariants() {
     for (const RaycastVariant& choice : compositorChoices()) {
         for (TimeStepWalk walk : {TimeStepWalk::RayList, TimeStepWalk::PackedGroups, TimeStepWalk::Naive}) {
             for (const GridKind& kind : kGridKinds) {
-                if (walk == TimeStepWalk::PackedGroups && !kind.rectilinear) continue;
+                if (walk == TimeStepWalk::PackedGroups && !kind.onlyRectilinear) continue;
                 for (bool styled : {false, true}) {
                     RaycastVariant variant = choice;
                     variant.walk = walk;
@@ -158,6 +160,7 @@ std::vector<RaycastVariant> requestableRaycastVariants() {
                     variant.unevenAxes = kind.unevenAxes;
                     variant.unevenAxisWalk = kind.unevenAxes && !styled;  // both lookups compile
                     variant.structuredGrids = kind.structuredGrids;
+                    variant.rectilinearGrids = kind.rectilinearGrids;
                     variant.beamGrids = kind.beamGrids;
                     variant.evenBeams = kind.evenBeams;
                     // Statistics and the empty-brick test on in half of the set each, so that

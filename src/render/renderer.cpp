@@ -98,6 +98,7 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     variant.unevenAxes = gpuSeries_->hasUnevenAxes();
     variant.unevenAxisWalk = gpuSeries_->hasCrowdedUnevenAxes();
     variant.beamGrids = gpuSeries_->hasBeamGrids();
+    variant.rectilinearGrids = gpuSeries_->hasRectilinearGrids();
     variant.evenBeams = gpuSeries_->allBeamsEven();
     variant.structuredGrids = gpuSeries_->structuredGrids().layerCount() > 0;
     variant.styledTracks = styleTextures_.styledTrackBits();

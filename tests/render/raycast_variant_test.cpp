@@ -48,6 +48,10 @@ TEST(RaycastVariant, BeamAndMissingValueSwitchesFollowTheSeries) {
     EXPECT_EQ(defines.at("BEAM_GRIDS"), "1");
     EXPECT_EQ(defines.at("EVEN_BEAMS"), "1");
     EXPECT_EQ(defines.at("MISSING_VALUES"), "1");
+    // A rectilinear grid beside the beams keeps the test of each time-step's kind in the program.
+    EXPECT_EQ(defines.at("RECTILINEAR_GRIDS"), "1");
+    variant.rectilinearGrids = false;
+    EXPECT_EQ(definesOf(variant).at("RECTILINEAR_GRIDS"), "0");
     // Different switches are different programs in the cache.
     RaycastVariant uneven = variant;
     uneven.evenBeams = false;

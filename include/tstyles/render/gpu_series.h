@@ -45,6 +45,8 @@ public:
     bool hasCrowdedUnevenAxes() const { return hasCrowdedUnevenAxes_; }
     // Whether any time-step is a beam (sonar) grid.
     bool hasBeamGrids() const { return hasBeamGrids_; }
+    // Whether any time-step is a rectilinear grid (even or uneven axes).
+    bool hasRectilinearGrids() const { return hasRectilinearGrids_; }
     // Whether every beam grid has evenly spaced beams on both axes (a beam index is linear in its
     // angle; shaders/beam_grid.glsl, EVEN_BEAMS). False without beam grids.
     bool allBeamsEven() const { return allBeamsEven_; }
@@ -83,6 +85,7 @@ private:
     bool hasUnevenAxes_ = true;
     bool hasCrowdedUnevenAxes_ = true;
     bool hasBeamGrids_ = false;
+    bool hasRectilinearGrids_ = true;
     bool allBeamsEven_ = false;
     bool hasMissingValues_ = false;
     DensityPrecision precision_ = DensityPrecision::Bits16;

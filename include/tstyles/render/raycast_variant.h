@@ -32,6 +32,7 @@ struct RaycastVariant {
     bool missingValues = false;    // the density atlas holds (density * validity, validity) pairs
     bool allAffine = false;        // every time-step's world -> voxel map is affine
     bool structuredGrids = false;  // the series has structured time-steps (inverse-map lookups)
+    bool rectilinearGrids = true;  // a time-step is a rectilinear grid (even or uneven axes)
     bool unevenAxes = false;       // a time-step has an uneven axis (node lookups)
     bool unevenAxisWalk = false;   // an uneven axis' bucket may hold several nodes (walking lookups)
     bool beamGrids = false;        // a time-step is a beam (sonar) grid
