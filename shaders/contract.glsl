@@ -20,6 +20,7 @@ CONTRACT_CONSTANT(int, PACKED_ATLAS_UNIT, 9)
 CONTRACT_CONSTANT(int, PACKED_OCCUPANCY_UNIT, 10)
 CONTRACT_CONSTANT(int, PACKED_VALIDITY_UNIT, 11)
 CONTRACT_CONSTANT(int, GRADIENT_ATLAS_UNIT, 12)
+CONTRACT_CONSTANT(int, UNEVEN_CELL_UNIT, 13)
 
 // Image units (imageStore).
 CONTRACT_CONSTANT(int, GRADIENT_IMAGE_UNIT, 0)
@@ -82,6 +83,15 @@ struct TimeStepInfo {
     vec4 evenBeamFan;
     // x: the time-step's time stamp minus the series' first one, in the series' time units.
     vec4 time;
+};
+
+// Per time-step, per axis (x, y, z): where uneven_axes.glsl finds a grid-local position's node
+// index along an uneven axis (render/uneven_axis_table.h).
+struct UnevenAxisInfo {
+    ivec4 firstNode;       // the axis' first node in the node buffer; -1 along an even axis
+    ivec4 firstCell;       // its first bucket's cell record in the cell-record texture
+    ivec4 bucketCount;     // buckets of equal width from its first node (at 0) to its last
+    vec4 bucketsPerUnit;   // 1 / bucket width, in grid-local units
 };
 
 // A box proxy for the entry/exit buffers (proxy_geometry.glsl).

@@ -34,14 +34,33 @@ struct AlignedSample {
     vec3 voxel;
 };
 
+#if UNEVEN_AXES
+// The shared grid's uneven-axis lookup and node counts, read once per ray (prepareAlignedSamples)
+// rather than from the storage buffers at every sample.
+UnevenAxisInfo alignedUnevenAxes;
+ivec3 alignedNodes;
+#endif
+
+// After prepareVoxelRays.
+void prepareAlignedSamples() {
+#if UNEVEN_AXES
+    alignedUnevenAxes = unevenAxes.steps[activeSteps[0]];
+    alignedNodes = ivec3(timeSteps.steps[activeSteps[0]].dims.xyz);
+#endif
+}
+
 AlignedSample alignedSampleAt(float t) {
     vec3 gridLocal = gridLocalAtSample(0, t);
 #if ALL_AFFINE
     vec3 voxel = clamp(gridLocal, vec3(0.0), slotVoxelUpper(0));
     return AlignedSample(voxel, voxel);
 #else
-    vec3 voxel = clamp(applyUnevenAxes(activeSteps[0], gridLocal), vec3(0.0), slotVoxelUpper(0));
-    return AlignedSample(gridLocal, voxel);
+#if UNEVEN_AXES
+    vec3 voxel = applyUnevenAxesIn(alignedUnevenAxes, alignedNodes, gridLocal);
+#else
+    vec3 voxel = gridLocal;
+#endif
+    return AlignedSample(gridLocal, clamp(voxel, vec3(0.0), slotVoxelUpper(0)));
 #endif
 }
 

@@ -1,14 +1,21 @@
 // Uneven rectilinear axes (depth or pressure levels): along such an axis the time-step's
 // worldToVoxel gives the grid-local position, and the axis' node list turns it into a fractional
-// node index (bucket lookup, then linear between the two nodes). Mirrors tstyles/data/grid_axes.h.
+// node index (the record of the position's bucket, render/uneven_axis_table.h). Mirrors
+// tstyles/data/grid_axes.h.
 #include "contract.glsl"
 #include "variant_switches.glsl"
 layout(std430, binding = UNEVEN_AXIS_BUFFER) readonly buffer UnevenAxes {
-    ivec4 firstNode[];  // per time-step, per axis: index of its first node in axisNodes; -1: even
+    UnevenAxisInfo steps[];  // per time-step
 } unevenAxes;
 layout(std430, binding = AXIS_NODE_BUFFER) readonly buffer AxisNodes {
     float positions[];  // the nodes of every uneven axis, each list increasing from 0
 } axisNodes;
+#if UNEVEN_AXES
+// Per bucket of each axis: the first node after the bucket's start (x), its index (y), and the node
+// indices per grid-local unit below (z) and above (w) it (UnevenAxisTable::cells). A texel fetch:
+// llvmpipe reads the four at once, where four reads of a storage buffer are four gathers.
+layout(binding = UNEVEN_CELL_UNIT) uniform samplerBuffer unevenCells;
+#endif
 
 // 0 when no time-step of the series has an uneven axis: the node lookups are then left out of the
 // program. llvmpipe runs their loops, masked, wherever voxelCoordinate() is reached (beam grids
@@ -19,41 +26,49 @@ bool isUnevenAxis(int step, int axis) {
 #if !UNEVEN_AXES
     return false;
 #else
-    return unevenAxes.firstNode[step][axis] >= 0;
+    return unevenAxes.steps[step].firstNode[axis] >= 0;
 #endif
 }
 
-// The fractional node index of grid-local `position` along an uneven axis; clamped to the grid.
-// Mirrors lookUpNodeIndex (tstyles/render/uneven_axis_table.h).
-float nodeIndexOf(int step, int axis, float position) {
-    int first = unevenAxes.firstNode[step][axis];
-    int count = int(timeSteps.steps[step].dims[axis]);
-    // After the nodes, a bucket lookup: 1 / bucket width, bucket count, each bucket's lower node.
-    int lookup = first + count;
-    int buckets = int(axisNodes.positions[lookup + 1]);
-    int bucket = clamp(int(position * axisNodes.positions[lookup]), 0, buckets - 1);
-    // The last node at or below `position`, in [0, count - 2].
-    int low = int(axisNodes.positions[lookup + 2 + bucket]);
+#if UNEVEN_AXES
+// The fractional node index of grid-local `position` along uneven axis `axis` of a grid with these
+// lookup numbers (`info`, read once per ray where the grid stays the same) and `count` nodes along
+// it; clamped to the grid. Mirrors lookUpNodeIndex (tstyles/render/uneven_axis_table.h).
+float nodeIndexIn(UnevenAxisInfo info, int axis, int count, float position) {
+    int bucket = clamp(int(position * info.bucketsPerUnit[axis]), 0, info.bucketCount[axis] - 1);
+    vec4 cell = texelFetch(unevenCells, info.firstCell[axis] + bucket);
 #if UNEVEN_AXIS_WALK
-    // Some axis' buckets are wider than half its finest gap (the table's limit): walk.
+    // Some axis' buckets are wider than half its finest gap (the table's limit): walk from the cell
+    // the bucket starts in. llvmpipe counts a pass of a while loop even where it runs none, and
+    // these run for every time-step at every sample, so only such axes have them.
+    int first = info.firstNode[axis];
+    int low = int(cell.y) - 1;
     while (low < count - 2 && axisNodes.positions[first + low + 1] <= position) ++low;
     while (low > 0 && axisNodes.positions[first + low] > position) --low;
-#else
-    // Buckets at most half the finest gap wide: the node is the bucket's or the next one (the one
-    // before where float rounding picked the next bucket). No loop: llvmpipe counts a pass of a
-    // while loop even where it runs none, and these ran for every time-step at every sample (twice
-    // with empty-space skipping), which cut the hurricane's rays short on the general path.
-    if (low < count - 2 && axisNodes.positions[first + low + 1] <= position) ++low;
-    if (low > 0 && axisNodes.positions[first + low] > position) --low;
-#endif
     float lower = axisNodes.positions[first + low];
     float upper = axisNodes.positions[first + low + 1];
     return clamp(float(low) + (position - lower) / (upper - lower), 0.0, float(count - 1));
+#else
+    // The bucket holds at most one node, cell.x: linear on either side of it. (Where float rounding
+    // picked the next bucket, the position lies within rounding of its start, and the cell below
+    // cell.x gives the same index.)
+    float index = cell.y + (position - cell.x) * (position < cell.x ? cell.z : cell.w);
+    return clamp(index, 0.0, float(count - 1));
+#endif
 }
+
+// The node index along every uneven axis of such a grid; `nodes`: its node counts.
+vec3 applyUnevenAxesIn(UnevenAxisInfo info, ivec3 nodes, vec3 gridCoordinate) {
+    vec3 voxel = gridCoordinate;
+    for (int axis = 0; axis < 3; ++axis)
+        if (info.firstNode[axis] >= 0) voxel[axis] = nodeIndexIn(info, axis, nodes[axis], gridCoordinate[axis]);
+    return voxel;
+}
+#endif
 
 // The grid-local position of a fractional node index along an uneven axis.
 float nodePositionOf(int step, int axis, float index) {
-    int first = unevenAxes.firstNode[step][axis];
+    int first = unevenAxes.steps[step].firstNode[axis];
     int cell = clamp(int(floor(index)), 0, int(timeSteps.steps[step].dims[axis]) - 2);
     float lower = axisNodes.positions[first + cell];
     float upper = axisNodes.positions[first + cell + 1];
@@ -62,12 +77,11 @@ float nodePositionOf(int step, int axis, float index) {
 
 // worldToVoxel's result -> voxel coordinates: even axes are already node indices.
 vec3 applyUnevenAxes(int step, vec3 gridCoordinate) {
-    vec3 voxel = gridCoordinate;
 #if UNEVEN_AXES
-    for (int axis = 0; axis < 3; ++axis)
-        if (isUnevenAxis(step, axis)) voxel[axis] = nodeIndexOf(step, axis, gridCoordinate[axis]);
+    return applyUnevenAxesIn(unevenAxes.steps[step], ivec3(timeSteps.steps[step].dims.xyz), gridCoordinate);
+#else
+    return gridCoordinate;
 #endif
-    return voxel;
 }
 
 // Voxel coordinates -> the space worldToVoxel maps into (grid-local along uneven axes), where a
@@ -85,7 +99,7 @@ vec3 unapplyUnevenAxes(int step, vec3 voxel) {
 // along even ones.
 void nodeBoundsToGrid(int step, inout vec3 lower, inout vec3 upper) {
 #if UNEVEN_AXES
-    ivec4 firstNode = unevenAxes.firstNode[step];
+    ivec4 firstNode = unevenAxes.steps[step].firstNode;
     for (int axis = 0; axis < 3; ++axis) {
         if (firstNode[axis] < 0) continue;
         lower[axis] = axisNodes.positions[firstNode[axis] + int(lower[axis])];

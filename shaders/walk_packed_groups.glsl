@@ -19,6 +19,7 @@ struct SamplePoint {
 
 void prepareWalk(Ray ray) {
     prepareVoxelRays(ray);
+    prepareAlignedSamples();
 }
 
 void advanceWalk(float t) {

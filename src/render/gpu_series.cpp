@@ -189,6 +189,8 @@ GpuSeries::GpuSeries(const Series& series, const SeriesStorage& storage)
       proxyTable_(Buffer::create()),
       unevenAxisTable_(Buffer::create()),
       axisNodeTable_(Buffer::create()),
+      unevenCellTable_(Buffer::create()),
+      unevenCells_(Texture::create(GL_TEXTURE_BUFFER)),
       beamAngleTable_(Buffer::create()),
       proxyMeshTable_(Buffer::create()) {
     // Validation of structured grids happens on load; here they only need an inverse map and a mesh.
@@ -274,12 +276,14 @@ GpuSeries::GpuSeries(const Series& series, const SeriesStorage& storage)
     proxyMeshTable_.setData(std::as_bytes(std::span(mesh)), GL_STATIC_DRAW);
     proxyTable_.setData(std::as_bytes(std::span(boxes)), GL_STATIC_DRAW);
     const UnevenAxisTable uneven = buildUnevenAxisTable(series);
-    hasUnevenAxes_ = std::any_of(uneven.firstNode.begin(), uneven.firstNode.end(), [](const glm::ivec4& first) {
-        return glm::any(glm::greaterThanEqual(first, glm::ivec4(0)));
+    hasUnevenAxes_ = std::any_of(uneven.steps.begin(), uneven.steps.end(), [](const contract::UnevenAxisInfo& info) {
+        return glm::any(glm::greaterThanEqual(info.firstNode, glm::ivec4(0)));
     });
     hasCrowdedUnevenAxes_ = uneven.crowdedBuckets;
-    unevenAxisTable_.setData(std::as_bytes(std::span(uneven.firstNode)), GL_STATIC_DRAW);
+    unevenAxisTable_.setData(std::as_bytes(std::span(uneven.steps)), GL_STATIC_DRAW);
     axisNodeTable_.setData(std::as_bytes(std::span(uneven.positions)), GL_STATIC_DRAW);
+    unevenCellTable_.setData(std::as_bytes(std::span(uneven.cells)), GL_STATIC_DRAW);
+    glTextureBuffer(unevenCells_.id(), GL_RGBA32F, unevenCellTable_.id());
 }
 
 std::size_t GpuSeries::textureBytes() const {
@@ -322,6 +326,7 @@ void GpuSeries::bind() const {
     structuredGrids_->bind();
     unevenAxisTable_.bindBase(GL_SHADER_STORAGE_BUFFER, contract::UNEVEN_AXIS_BUFFER);
     axisNodeTable_.bindBase(GL_SHADER_STORAGE_BUFFER, contract::AXIS_NODE_BUFFER);
+    unevenCells_.bindToUnit(contract::UNEVEN_CELL_UNIT);
     beamAngleTable_.bindBase(GL_SHADER_STORAGE_BUFFER, contract::BEAM_ANGLE_BUFFER);
     proxyMeshTable_.bindBase(GL_SHADER_STORAGE_BUFFER, contract::PROXY_MESH_BUFFER);
     if (packedAtlas_) packedAtlas_->bind();

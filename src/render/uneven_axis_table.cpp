@@ -1,8 +1,9 @@
-// Flattening the node lists of all uneven axes into one array for the GPU.
+// Flattening the node lists of all uneven axes into arrays for the GPU.
 #include "tstyles/render/uneven_axis_table.h"
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <variant>
 
 namespace tstyles {
@@ -10,60 +11,78 @@ namespace {
 
 constexpr int kMaxBuckets = 4096;
 
-// After an axis' nodes: 1 / bucket width, the bucket count, then each bucket's lower node (the
-// last node at or below the bucket's start, at most count - 2). Buckets are half the finest gap
-// wide where that takes at most kMaxBuckets, so a lookup lands on its node or the one before (one
-// step up; one down where float rounding picked the next bucket). Returns false where the limit
-// made them wider: a bucket may then hold several nodes, and the lookup has to walk.
-bool appendBuckets(const std::vector<double>& nodes, std::vector<float>& positions) {
+// One uneven axis in the table.
+struct AxisEntry {
+    int firstNode = -1;
+    int firstCell = -1;
+    int bucketCount = 0;
+    float bucketsPerUnit = 0.0f;
+};
+
+// Appends the axis' nodes and its cell records: buckets half the finest gap wide where that takes
+// at most kMaxBuckets, each with the cell of the last node at or below its start (at most
+// count - 2). Sets `crowded` where the limit made them wider: a bucket may then hold several nodes.
+AxisEntry appendAxis(const std::vector<double>& nodes, UnevenAxisTable& table) {
+    AxisEntry entry;
+    entry.firstNode = int(table.positions.size());
+    for (const double position : nodes) table.positions.push_back(float(position));
     double finestGap = nodes.back();
     for (std::size_t k = 1; k < nodes.size(); ++k) finestGap = std::min(finestGap, nodes[k] - nodes[k - 1]);
     const double halfGapBuckets = std::ceil(2.0 * nodes.back() / finestGap);
-    const int buckets = int(std::clamp(halfGapBuckets, 1.0, double(kMaxBuckets)));
-    const double width = nodes.back() / buckets;
-    positions.push_back(float(1.0 / width));
-    positions.push_back(float(buckets));
+    if (halfGapBuckets > double(kMaxBuckets)) table.crowdedBuckets = true;
+    entry.bucketCount = int(std::clamp(halfGapBuckets, 1.0, double(kMaxBuckets)));
+    const double width = nodes.back() / entry.bucketCount;
+    entry.bucketsPerUnit = float(1.0 / width);
+    entry.firstCell = int(table.cells.size());
     const int lastCell = int(nodes.size()) - 2;
     int lower = 0;
-    for (int bucket = 0; bucket < buckets; ++bucket) {
+    for (int bucket = 0; bucket < entry.bucketCount; ++bucket) {
         while (lower < lastCell && nodes[std::size_t(lower) + 1] <= bucket * width) ++lower;
-        positions.push_back(float(lower));
+        const std::size_t next = std::size_t(lower) + 1;
+        const double slopeBelow = 1.0 / (nodes[next] - nodes[next - 1]);
+        const double slopeAbove = lower < lastCell ? 1.0 / (nodes[next + 1] - nodes[next]) : slopeBelow;
+        table.cells.emplace_back(float(nodes[next]), float(next), float(slopeBelow), float(slopeAbove));
     }
-    return halfGapBuckets <= double(kMaxBuckets);
+    return entry;
 }
 
 }  // namespace
 
 UnevenAxisTable buildUnevenAxisTable(const Series& series) {
     UnevenAxisTable table;
+    std::map<std::vector<double>, AxisEntry> axes;
     for (const TimeStep& step : series.steps) {
-        glm::ivec4 first(-1);
+        contract::UnevenAxisInfo info{glm::ivec4(-1), glm::ivec4(-1), glm::ivec4(0), glm::vec4(0.0f)};
         const RectilinearGrid* grid = std::get_if<RectilinearGrid>(&step.grid);  // other kinds: no uneven axes
         for (int axis = 0; grid && axis < 3; ++axis) {
             if (!grid->isUneven(axis)) continue;
-            first[axis] = int(table.positions.size());
             const std::vector<double>& nodes = grid->axisPositions[std::size_t(axis)];
-            for (const double position : nodes) table.positions.push_back(float(position));
-            if (!appendBuckets(nodes, table.positions)) table.crowdedBuckets = true;
+            auto found = axes.find(nodes);
+            if (found == axes.end()) found = axes.emplace(nodes, appendAxis(nodes, table)).first;
+            info.firstNode[axis] = found->second.firstNode;
+            info.firstCell[axis] = found->second.firstCell;
+            info.bucketCount[axis] = found->second.bucketCount;
+            info.bucketsPerUnit[axis] = found->second.bucketsPerUnit;
         }
-        table.firstNode.push_back(first);
+        table.steps.push_back(info);
     }
     if (table.positions.empty()) table.positions.push_back(0.0f);
+    if (table.cells.empty()) table.cells.emplace_back(0.0f);
     return table;
 }
 
-float lookUpNodeIndex(const UnevenAxisTable& table, int first, int count, float position) {
-    const auto node = [&](int index) { return table.positions[std::size_t(first + index)]; };
-    const int buckets = int(node(count + 1));
-    const int bucket = std::clamp(int(position * node(count)), 0, buckets - 1);
-    int low = int(node(count + 2 + bucket));
-    if (table.crowdedBuckets) {
-        while (low < count - 2 && node(low + 1) <= position) ++low;
-        while (low > 0 && node(low) > position) --low;
-    } else {
-        if (low < count - 2 && node(low + 1) <= position) ++low;
-        if (low > 0 && node(low) > position) --low;
+float lookUpNodeIndex(const UnevenAxisTable& table, int step, int axis, int count, float position) {
+    const contract::UnevenAxisInfo& info = table.steps[std::size_t(step)];
+    const int bucket = std::clamp(int(position * info.bucketsPerUnit[axis]), 0, info.bucketCount[axis] - 1);
+    const glm::vec4 cell = table.cells[std::size_t(info.firstCell[axis] + bucket)];
+    if (!table.crowdedBuckets) {
+        const float index = cell.y + (position - cell.x) * (position < cell.x ? cell.z : cell.w);
+        return std::clamp(index, 0.0f, float(count - 1));
     }
+    const auto node = [&](int index) { return table.positions[std::size_t(info.firstNode[axis] + index)]; };
+    int low = int(cell.y) - 1;
+    while (low < count - 2 && node(low + 1) <= position) ++low;
+    while (low > 0 && node(low) > position) --low;
     return std::clamp(float(low) + (position - node(low)) / (node(low + 1) - node(low)), 0.0f, float(count - 1));
 }
 

@@ -1,7 +1,7 @@
-// The bucket lookup of uneven axes (render/uneven_axis_table.h, mirrored by the shaders' nodeIndexOf)
+// The bucket lookup of uneven axes (render/uneven_axis_table.h, mirrored by the shaders' nodeIndexIn)
 // gives the same fractional node index as the data model's inverse of the axis (data/grid_axes.h),
-// on the synthetic hurricane's levels (one step from the bucket's node, no loop) and on an axis
-// whose gaps span four orders of magnitude (a walk, UNEVEN_AXIS_WALK).
+// on the synthetic hurricane's levels (one cell record per bucket, no loop) and on an axis
+// whose gaps span four orders of magnitude (a walk from the bucket's cell, UNEVEN_AXIS_WALK).
 #include <cmath>
 #include <vector>
 
@@ -29,15 +29,14 @@ void expectLookupMatchesGridAxes(const std::vector<double>& nodes) {
     const Series series = seriesWithZNodes(nodes);
     const RectilinearGrid& grid = series.steps[0].rectilinear();
     const UnevenAxisTable table = buildUnevenAxisTable(series);
-    ASSERT_EQ(table.firstNode.size(), 1u);
-    const int first = table.firstNode[0].z;
+    ASSERT_EQ(table.steps.size(), 1u);
     const int count = int(nodes.size());
-    ASSERT_GE(first, 0);
+    ASSERT_GE(table.steps[0].firstNode.z, 0);
     std::vector<double> positions = nodes;
     for (int i = -100; i <= 10100; ++i) positions.push_back(nodes.back() * i / 10000.0);
     for (const double position : positions) {
         const double expected = std::clamp(fractionalIndex(grid, 2, position), 0.0, double(count - 1));
-        const float found = lookUpNodeIndex(table, first, count, float(position));
+        const float found = lookUpNodeIndex(table, 0, 2, count, float(position));
         EXPECT_NEAR(found, expected, 1e-4 * count) << "at " << position;
     }
 }
@@ -66,12 +65,35 @@ TEST(UnevenAxisLookup, TheTableFollowsEachAxisNodes) {
     const Series series = seriesWithZNodes({0.0, 1.0, 3.0, 7.0});
     const UnevenAxisTable table = buildUnevenAxisTable(series);
     // Nodes 0, 1, 3, 7; buckets half the finest gap (1) wide: 14 buckets of 0.5.
-    ASSERT_EQ(table.firstNode[0], glm::ivec4(-1, -1, 0, -1));
-    ASSERT_EQ(table.positions.size(), 4u + 2u + 14u);
-    EXPECT_FLOAT_EQ(table.positions[4], 2.0f);
-    EXPECT_FLOAT_EQ(table.positions[5], 14.0f);
-    const std::vector<float> lowerNodes{0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 2, 2, 2, 2};
-    EXPECT_EQ(std::vector<float>(table.positions.begin() + 6, table.positions.end()), lowerNodes);
+    ASSERT_EQ(table.steps.size(), 1u);
+    const contract::UnevenAxisInfo& info = table.steps[0];
+    EXPECT_EQ(info.firstNode, glm::ivec4(-1, -1, 0, -1));
+    EXPECT_EQ(info.firstCell.z, 0);
+    EXPECT_EQ(info.bucketCount.z, 14);
+    EXPECT_FLOAT_EQ(info.bucketsPerUnit.z, 2.0f);
+    EXPECT_EQ(table.positions, (std::vector<float>{0, 1, 3, 7}));
+    // Each bucket: the first node after its start, that node's index, and the node indices per unit
+    // below and above it (the last node's cell on both sides).
+    const glm::vec4 toNode1(1, 1, 1, 0.5f), toNode2(3, 2, 0.5f, 0.25f), toNode3(7, 3, 0.25f, 0.25f);
+    const std::vector<glm::vec4> cells{toNode1, toNode1, toNode2, toNode2, toNode2, toNode2, toNode3,
+                                       toNode3, toNode3, toNode3, toNode3, toNode3, toNode3, toNode3};
+    EXPECT_EQ(table.cells, cells);
+    // Position 2 (bucket 4): node index 1 + (2 - 1) / 2 = 1.5, from the record 2 + (2 - 3) * 0.5.
+    EXPECT_FLOAT_EQ(lookUpNodeIndex(table, 0, 2, 4, 2.0f), 1.5f);
+}
+
+TEST(UnevenAxisLookup, TimeStepsOnTheSameLevelsShareOneList) {
+    Series series = seriesWithZNodes({0.0, 1.0, 3.0, 7.0});
+    series.steps.push_back(series.steps[0]);
+    Series other = seriesWithZNodes({0.0, 2.0, 3.0});
+    series.steps.push_back(other.steps[0]);
+    const UnevenAxisTable table = buildUnevenAxisTable(series);
+    ASSERT_EQ(table.steps.size(), 3u);
+    EXPECT_EQ(table.steps[1].firstNode, table.steps[0].firstNode);
+    EXPECT_EQ(table.steps[1].firstCell, table.steps[0].firstCell);
+    EXPECT_EQ(table.steps[2].firstNode.z, 4);  // after the first list's four nodes
+    EXPECT_EQ(table.positions.size(), 4u + 3u);
+    EXPECT_FLOAT_EQ(lookUpNodeIndex(table, 2, 2, 3, 2.5f), 1.5f);
 }
 
 }  // namespace

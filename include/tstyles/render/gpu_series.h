@@ -103,6 +103,8 @@ private:
     std::optional<GpuStructuredGrids> structuredGrids_;
     Buffer unevenAxisTable_;  // shaders/uneven_axes.glsl
     Buffer axisNodeTable_;
+    Buffer unevenCellTable_;
+    Texture unevenCells_;  // a buffer texture over unevenCellTable_
     Buffer beamAngleTable_;
     Buffer proxyMeshTable_;
 };

@@ -22,6 +22,7 @@ static_assert(sizeof(TimeStepInfo) == 64 + 9 * 16);
 static_assert(sizeof(ProxyBox) == 64 + 16);
 static_assert(sizeof(ProxyVertex) == 2 * 16);
 static_assert(sizeof(StructuredGridInfo) == 2 * 16);
+static_assert(sizeof(UnevenAxisInfo) == 4 * 16);
 static_assert(sizeof(StyleNode) == 2 * 16);
 static_assert(alignof(TimeStepInfo) <= 16 && sizeof(glm::vec4) == 16 && sizeof(glm::mat4) == 64);
 
