@@ -9,21 +9,21 @@ const bool COMPOSITOR_IGNORES_TRANSPARENT = true;
 
 struct CompositorState {
     TimeStepSample winner;
-    vec4 winnerTstf;
+    float winnerTstfOpacity;  // the index TSTF's opacity at the winner (the colour is read in the finish)
 };
 
 CompositorState compositorInit() {
-    return CompositorState(noTimeStep(), vec4(0.0));
+    return CompositorState(noTimeStep(), 0.0);
 }
 
 void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 position, inout int fetches) {
     if (s.stf.a < state.winner.stf.a || s.stf.a <= 0.0) return;
-    vec4 tstf = classifyIndexTstf(s.step);
-    bool stronger = s.stf.a > state.winner.stf.a || tstf.a > state.winnerTstf.a ||
-                    (tstf.a == state.winnerTstf.a && s.step < state.winner.step);
+    float tstfOpacity = indexTstfOpacity(s.step);
+    bool stronger = s.stf.a > state.winner.stf.a || tstfOpacity > state.winnerTstfOpacity ||
+                    (tstfOpacity == state.winnerTstfOpacity && s.step < state.winner.step);
     if (stronger) {
         state.winner = s;
-        state.winnerTstf = tstf;
+        state.winnerTstfOpacity = tstfOpacity;
     }
 }
 

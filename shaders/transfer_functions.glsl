@@ -24,6 +24,12 @@ vec4 classifyIndexTstf(int step) {
     return indexTstf.colorOpacity[step];
 }
 
+// Its opacity alone: one read of the buffer where the whole entry is four (llvmpipe gathers each
+// component of a read indexed per pixel).
+float indexTstfOpacity(int step) {
+    return indexTstf.colorOpacity[step].a;
+}
+
 vec4 classifyGradientTstf(float normalizedChange) {
     return lookupTable(gradientTstfTable, normalizedChange);
 }
