@@ -276,6 +276,9 @@ GpuSeries::GpuSeries(const Series& series, const SeriesStorage& storage)
     proxyMeshTable_.setData(std::as_bytes(std::span(mesh)), GL_STATIC_DRAW);
     proxyTable_.setData(std::as_bytes(std::span(boxes)), GL_STATIC_DRAW);
     const UnevenAxisTable uneven = buildUnevenAxisTable(series);
+    GLint maxBufferTexels = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxBufferTexels);
+    requireCellsFit(uneven, std::size_t(maxBufferTexels), series);
     hasUnevenAxes_ = std::any_of(uneven.steps.begin(), uneven.steps.end(), [](const contract::UnevenAxisInfo& info) {
         return glm::any(glm::greaterThanEqual(info.firstNode, glm::ivec4(0)));
     });

@@ -4,7 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <string>
 #include <variant>
+
+#include "tstyles/core/errors.h"
 
 namespace tstyles {
 namespace {
@@ -69,6 +72,14 @@ UnevenAxisTable buildUnevenAxisTable(const Series& series) {
     if (table.positions.empty()) table.positions.push_back(0.0f);
     if (table.cells.empty()) table.cells.emplace_back(0.0f);
     return table;
+}
+
+void requireCellsFit(const UnevenAxisTable& table, std::size_t maxTexels, const Series& series) {
+    if (table.cells.size() <= maxTexels) return;
+    throwInputError(series.manifestPath, "time_steps[].grid.positions",
+                    "the uneven axes of the series' " + std::to_string(series.size()) + " time-steps need " +
+                        std::to_string(table.cells.size()) + " lookup cells, more than this GPU's buffer textures hold (" +
+                        std::to_string(maxTexels) + "); time-steps on the same levels share theirs");
 }
 
 float lookUpNodeIndex(const UnevenAxisTable& table, int step, int axis, int count, float position) {

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tstyles/core/errors.h"
 #include "tstyles/data/grid_axes.h"
 #include "tstyles/render/uneven_axis_table.h"
 
@@ -94,6 +95,22 @@ TEST(UnevenAxisLookup, TimeStepsOnTheSameLevelsShareOneList) {
     EXPECT_EQ(table.steps[2].firstNode.z, 4);  // after the first list's four nodes
     EXPECT_EQ(table.positions.size(), 4u + 3u);
     EXPECT_FLOAT_EQ(lookUpNodeIndex(table, 2, 2, 3, 2.5f), 1.5f);
+}
+
+TEST(UnevenAxisLookup, MoreCellsThanTheGpuHoldsIsAnInputErrorNamingTheManifest) {
+    Series series = seriesWithZNodes({0.0, 1.0, 3.0, 7.0});  // 14 cells
+    series.manifestPath = "levels/series.json";
+    const UnevenAxisTable table = buildUnevenAxisTable(series);
+    EXPECT_NO_THROW(requireCellsFit(table, 14, series));
+    try {
+        requireCellsFit(table, 13, series);
+        FAIL() << "no error";
+    } catch (const InputError& error) {
+        const std::string message = error.what();
+        EXPECT_NE(message.find("levels/series.json"), std::string::npos) << message;
+        EXPECT_NE(message.find("14 lookup cells"), std::string::npos) << message;
+        EXPECT_NE(message.find("(13)"), std::string::npos) << message;
+    }
 }
 
 }  // namespace

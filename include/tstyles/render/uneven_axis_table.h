@@ -35,6 +35,11 @@ struct UnevenAxisTable {
 
 UnevenAxisTable buildUnevenAxisTable(const Series& series);
 
+// Throws an InputError naming the series' manifest where the table's cell records are more than a
+// buffer texture of the GPU holds (GL_MAX_TEXTURE_BUFFER_SIZE, at least 65536): many time-steps,
+// each on levels of its own.
+void requireCellsFit(const UnevenAxisTable& table, std::size_t maxTexels, const Series& series);
+
 // The fractional node index of grid-local `position` along axis `axis` of time-step `step`, whose
 // grid has `count` nodes along it, clamped to [0, count - 1]: what shaders/uneven_axes.glsl's
 // nodeIndexIn computes, with UNEVEN_AXIS_WALK as table.crowdedBuckets (the tests check it against
