@@ -17,6 +17,8 @@
 
 layout(binding = PACKED_ATLAS_UNIT) uniform sampler3D packedAtlas;
 layout(binding = PACKED_OCCUPANCY_UNIT) uniform usampler3D packedOccupancy;
+// Per brick: bit g set where a time-step of group g is visible under the STF (PACKED_GROUP_MASKS).
+layout(binding = PACKED_GROUP_MASK_UNIT) uniform usampler3D packedGroupMasks;
 layout(binding = PACKED_VALIDITY_UNIT) uniform sampler3D packedValidity;
 uniform vec3 inversePackedAtlasSize;
 uniform vec3 inverseSharedValiditySize;
@@ -83,6 +85,11 @@ vec4 packedDensities(int group, vec3 voxel, float sharedValidity) {
     vec4 validity =
         PACKED_VALIDITY == PACKED_VALIDITY_PER_GROUP ? texture(packedValidity, position) : vec4(sharedValidity);
     return mix(densities / validity, vec4(MISSING_DENSITY), lessThan(validity, vec4(0.5)));
+}
+
+// The groups with a time-step visible in the brick of the voxel position (PACKED_GROUP_MASKS).
+uint visibleGroupsAt(vec3 voxel) {
+    return texelFetch(packedGroupMasks, ivec3(brickOf(0, voxel)), 0).r;
 }
 
 // Empty-space skipping for all time-steps at once: -1 when any time-step's brick at the sample is

@@ -14,6 +14,7 @@
 //   EVEN_BEAMS          1 when every beam grid's beams are evenly spaced on both axes
 //   PACKED_ALIGNED      1 when the packed groups of four are walked (walk_packed_groups.glsl)
 //   PACKED_VALIDITY     a PACKED_VALIDITY_* code of contract.glsl
+//   PACKED_GROUP_MASKS  1 when each brick's mask names the packed groups visible in it (at most 32 groups)
 //   MAX_TIME_STEPS      capacity of the per-ray arrays of time-steps
 //   COLLECT_STATISTICS  1 to count rays, samples and fetches
 //   SKIP_EMPTY_BRICKS   1 to test at each sample whether every time-step there is in an empty brick
@@ -30,7 +31,7 @@
     !defined(PACKED_VALIDITY) || !defined(MAX_TIME_STEPS) || !defined(COLLECT_STATISTICS) ||             \
     !defined(CUSTOM_READS_INDEX) || !defined(STYLED_TRACKS) || !defined(SKIP_EMPTY_BRICKS) || \
     !defined(MISSING_VALUES) || !defined(UNEVEN_AXIS_WALK) || !defined(PER_RAY_CACHES) ||              \
-    !defined(PRECOMPUTED_GRADIENTS) || !defined(RECTILINEAR_GRIDS)
+    !defined(PRECOMPUTED_GRADIENTS) || !defined(RECTILINEAR_GRIDS) || !defined(PACKED_GROUP_MASKS)
 #error "a raycasting switch is not defined: build the program through RaycastVariant"
 #endif
 #if !RECTILINEAR_GRIDS && !STRUCTURED_GRIDS && !BEAM_GRIDS

@@ -26,6 +26,13 @@ void advanceWalk(float t) {
     advanceLiveWindow(t);
 }
 
+// Time-steps in a group: four, but fewer in the last. A loop bound that is the same for every
+// pixel ends there, where a test in the loop would still run the missing lanes (llvmpipe runs a
+// loop pass that every pixel skips, masked).
+int lanesOfGroup(int group) {
+    return min(4, timeStepCount - 4 * group);
+}
+
 SamplePoint samplePointAt(vec3 position, float t) {
     return SamplePoint(position, t, alignedSampleAt(t));
 }
@@ -34,30 +41,47 @@ float emptySpaceUntil(SamplePoint point) {
     return packedEmptySpaceUntil(point.aligned, point.t);
 }
 
-void accumulateTimeSteps(inout CompositorState state, SamplePoint point, inout TemporalSample result) {
-    vec3 voxel = point.aligned.voxel;
-    float sharedValidity = sharedValidityAt(voxel);
-    result.fetches += PACKED_FETCHES_PER_SAMPLE;
-    for (int group = 0; group < packedGroupCount; ++group) {
-        vec4 groupDensities = packedDensities(group, voxel, sharedValidity);
-        result.fetches += PACKED_FETCHES_PER_GROUP;
-        // The last group may hold fewer than four: a loop bound that is the same for every pixel
-        // ends there, where a test in the loop would still run the missing lanes (llvmpipe runs
-        // a loop pass that every pixel skips, masked).
-        int lanes = min(4, timeStepCount - 4 * group);
-        // All four transparent under the STF (or without data): nothing for a compositor that
-        // leaves transparent time-steps out. They still count as met, so the ray does not jump.
-        if (COMPOSITOR_IGNORES_TRANSPARENT && !stfMayBeVisible(groupDensities.x) &&
-            !stfMayBeVisible(groupDensities.y) && !stfMayBeVisible(groupDensities.z) &&
-            !stfMayBeVisible(groupDensities.w)) {
-            result.contributing += lanes;
-            continue;
-        }
-        for (int lane = 0; lane < lanes; ++lane) {
-            int step = 4 * group + lane;
-            if (step < exposedSteps.x || step > exposedSteps.y) continue;
-            // No masks in a packed series.
-            visitTimeStep(state, step, AtlasSample(groupDensities[lane], true), point.position, result);
-        }
+// One group of four time-steps at the sample: one fetch, then each exposed time-step to the compositor.
+void visitGroup(inout CompositorState state, SamplePoint point, int group, float sharedValidity,
+                inout TemporalSample result) {
+    vec4 groupDensities = packedDensities(group, point.aligned.voxel, sharedValidity);
+    result.fetches += PACKED_FETCHES_PER_GROUP;
+    int lanes = lanesOfGroup(group);
+    // All four transparent under the STF (or without data): nothing for a compositor that leaves
+    // transparent time-steps out. They still count as met, so the ray does not jump.
+    if (COMPOSITOR_IGNORES_TRANSPARENT && !stfMayBeVisible(groupDensities.x) && !stfMayBeVisible(groupDensities.y) &&
+        !stfMayBeVisible(groupDensities.z) && !stfMayBeVisible(groupDensities.w)) {
+        result.contributing += lanes;
+        return;
     }
+    for (int lane = 0; lane < lanes; ++lane) {
+        int step = 4 * group + lane;
+        if (step < exposedSteps.x || step > exposedSteps.y) continue;
+        // No masks in a packed series.
+        visitTimeStep(state, step, AtlasSample(groupDensities[lane], true), point.position, result);
+    }
+}
+
+void accumulateTimeSteps(inout CompositorState state, SamplePoint point, inout TemporalSample result) {
+    float sharedValidity = sharedValidityAt(point.aligned.voxel);
+    result.fetches += PACKED_FETCHES_PER_SAMPLE;
+#if PACKED_GROUP_MASKS
+    if (COMPOSITOR_IGNORES_TRANSPARENT) {
+        // Only the groups with a time-step visible in the sample's brick: every time-step of the
+        // others is transparent here, which such a compositor leaves out (they count as met). The
+        // loop runs as often as the pixel of the 8 with the most visible groups needs, where a loop
+        // over all groups fetched every group (llvmpipe runs a loop's body for all 8, masked).
+        uint groups = visibleGroupsAt(point.aligned.voxel);
+        int unvisitedLanes = timeStepCount;
+        while (groups != 0u) {
+            int group = findLSB(groups);
+            groups &= groups - 1u;
+            unvisitedLanes -= lanesOfGroup(group);
+            visitGroup(state, point, group, sharedValidity, result);
+        }
+        result.contributing += unvisitedLanes;
+        return;
+    }
+#endif
+    for (int group = 0; group < packedGroupCount; ++group) visitGroup(state, point, group, sharedValidity, result);
 }

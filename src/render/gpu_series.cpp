@@ -313,7 +313,7 @@ void GpuSeries::updateOccupancy(const std::vector<glm::vec4>& stfTable) {
     emptyBrickFraction_ = bricks ? double(emptyBricks) / double(bricks) : 0.0;
     if (packedAtlas_) {
         const std::vector<std::uint8_t> anyVisible = unionOfVisibilities(visibilities);
-        packedAtlas_->updateOccupancy(anyVisible);
+        packedAtlas_->updateOccupancy(visibilities);
         packedEmptyBrickFraction_ =
             anyVisible.empty() ? 0.0
                                : double(std::count(anyVisible.begin(), anyVisible.end(), std::uint8_t(0))) /

@@ -84,12 +84,24 @@ std::vector<std::uint8_t> unionOfVisibilities(const std::vector<std::vector<std:
     return result;
 }
 
+std::vector<std::uint32_t> groupVisibilityMasks(const std::vector<std::vector<std::uint8_t>>& visibilities) {
+    std::vector<std::uint32_t> masks(visibilities.empty() ? 0 : visibilities.front().size(), 0u);
+    const std::size_t maskedSteps = std::min(visibilities.size(), std::size_t(kMaxMaskedGroups * kTimeStepsPerTexel));
+    for (std::size_t step = 0; step < maskedSteps; ++step) {
+        const std::uint32_t bit = 1u << (step / kTimeStepsPerTexel);
+        for (std::size_t brick = 0; brick < masks.size(); ++brick)
+            if (visibilities[step][brick] != 0) masks[brick] |= bit;
+    }
+    return masks;
+}
+
 PackedAlignedAtlas::PackedAlignedAtlas(const Series& series, glm::ivec3 brickCounts, int maxTextureSize)
     : brickCounts_(brickCounts),
       validity_(packedValidityOf(series)),
       atlas_(Texture::create(GL_TEXTURE_3D)),
       validityTexture_(Texture::create(GL_TEXTURE_3D)),
       occupancy_(Texture::create(GL_TEXTURE_3D)),
+      groupMasks_(Texture::create(GL_TEXTURE_3D)),
       groupOrigins_(Buffer::create()) {
     const std::size_t groups = (series.size() + kTimeStepsPerTexel - 1) / kTimeStepsPerTexel;
     const glm::ivec3 dims = series.steps.front().dims();
@@ -130,23 +142,34 @@ PackedAlignedAtlas::PackedAlignedAtlas(const Series& series, glm::ivec3 brickCou
     glTextureStorage3D(occupancy_.id(), 1, GL_R8UI, brickCounts.x, brickCounts.y, brickCounts.z);
     occupancy_.setFilter(GL_NEAREST, GL_NEAREST);
     occupancy_.setClampToEdge();
+    // Without masks (more groups than a mask names) one texel, bound but never read.
+    const glm::ivec3 maskSize = hasGroupMasks() ? brickCounts : glm::ivec3(1);
+    glTextureStorage3D(groupMasks_.id(), 1, GL_R32UI, maskSize.x, maskSize.y, maskSize.z);
+    groupMasks_.setFilter(GL_NEAREST, GL_NEAREST);
+    groupMasks_.setClampToEdge();
 }
 
 std::size_t PackedAlignedAtlas::textureBytes() const {
-    return atlas_.allocatedBytes() + validityTexture_.allocatedBytes() + occupancy_.allocatedBytes();
+    return atlas_.allocatedBytes() + validityTexture_.allocatedBytes() + occupancy_.allocatedBytes() +
+           groupMasks_.allocatedBytes();
 }
 
-void PackedAlignedAtlas::updateOccupancy(const std::vector<std::uint8_t>& unionVisibility) {
+void PackedAlignedAtlas::updateOccupancy(const std::vector<std::vector<std::uint8_t>>& visibilities) {
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    const std::vector<std::uint8_t> reach = emptyBrickReach(unionVisibility, brickCounts_);
+    const std::vector<std::uint8_t> reach = emptyBrickReach(unionOfVisibilities(visibilities), brickCounts_);
     glTextureSubImage3D(occupancy_.id(), 0, 0, 0, 0, brickCounts_.x, brickCounts_.y, brickCounts_.z, GL_RED_INTEGER,
                         GL_UNSIGNED_BYTE, reach.data());
+    if (!hasGroupMasks()) return;
+    const std::vector<std::uint32_t> masks = groupVisibilityMasks(visibilities);
+    glTextureSubImage3D(groupMasks_.id(), 0, 0, 0, 0, brickCounts_.x, brickCounts_.y, brickCounts_.z, GL_RED_INTEGER,
+                        GL_UNSIGNED_INT, masks.data());
 }
 
 void PackedAlignedAtlas::bind() const {
     atlas_.bindToUnit(contract::PACKED_ATLAS_UNIT);
     validityTexture_.bindToUnit(contract::PACKED_VALIDITY_UNIT);
     occupancy_.bindToUnit(contract::PACKED_OCCUPANCY_UNIT);
+    groupMasks_.bindToUnit(contract::PACKED_GROUP_MASK_UNIT);
     groupOrigins_.bindBase(GL_SHADER_STORAGE_BUFFER, contract::PACKED_GROUP_BUFFER);
 }
 

@@ -112,6 +112,7 @@ ShaderDefines RaycastVariant::defines() const {
         {"EVEN_BEAMS", flag(evenBeams)},
         {"PACKED_ALIGNED", flag(walk == TimeStepWalk::PackedGroups)},
         {"PACKED_VALIDITY", std::to_string(packedValidityCode(packedValidity))},
+        {"PACKED_GROUP_MASKS", flag(packedGroupMasks)},
         {"MAX_TIME_STEPS", std::to_string(timeStepCapacity)},
         {"COLLECT_STATISTICS", flag(collectStatistics)},
         {"SKIP_EMPTY_BRICKS", flag(skipEmptyBricks)},
@@ -174,9 +175,12 @@ std::vector<RaycastVariant> requestableRaycastVariants() {
                              {PackedValidity::None, PackedValidity::PerGroup, PackedValidity::Shared}) {
                             variant.packedValidity = validity;
                             variant.missingValues = validity != PackedValidity::None;
+                            // Both sides of the group-mask switch compile, in part of the set each.
+                            variant.packedGroupMasks = validity != PackedValidity::PerGroup;
                             variants.push_back(variant);
                         }
                         variant.packedValidity = PackedValidity::None;
+                        variant.packedGroupMasks = false;
                     } else {
                         for (bool masks : {false, true}) {
                             variant.masks = masks;

@@ -126,6 +126,7 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     if (const PackedAlignedAtlas* packed = gpuSeries_->packedAtlas(); packed && options.packAligned && !options.naive) {
         variant.walk = TimeStepWalk::PackedGroups;
         variant.packedValidity = packed->validity();
+        variant.packedGroupMasks = packed->hasGroupMasks();
         parameters.sharedValiditySize = packed->sharedValiditySize();
         parameters.packedGroupCount = packed->groupCount();
         parameters.packedAtlasSize = packed->layout().size;

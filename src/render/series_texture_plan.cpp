@@ -92,6 +92,8 @@ std::vector<PlannedTexture> SeriesTexturePlan::textures() const {
         result.push_back({"packed atlas", packed->size, 8});
         result.push_back({"packed validity", perGroup ? packed->size : sharedValiditySize, perGroup ? 8u : 2u});
         result.push_back({"packed occupancy", packedBricks, 1});
+        const bool masked = packed->brickOrigins.size() <= std::size_t(kMaxMaskedGroups);
+        result.push_back({"packed group masks", masked ? packedBricks : glm::ivec3(1), 4});
     }
     return result;
 }

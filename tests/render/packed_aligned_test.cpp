@@ -111,6 +111,22 @@ TEST(PackedAtlas, UnionOfVisibilitiesIsVisibleWhereAnyTimeStepIs) {
               (std::vector<std::uint8_t>{0, 255, 0, 255}));
 }
 
+TEST(PackedAtlas, GroupMasksNameTheGroupsVisibleInEachBrick) {
+    // Ten time-steps in groups 0-3, 4-7, 8-9; three bricks. Brick 0: time-step 5 visible (group 1);
+    // brick 1: none; brick 2: time-steps 0, 3 and 9 (groups 0 and 2).
+    std::vector<std::vector<std::uint8_t>> visibilities(10, std::vector<std::uint8_t>(3, 0));
+    visibilities[5][0] = 255;
+    visibilities[0][2] = 255;
+    visibilities[3][2] = 255;
+    visibilities[9][2] = 255;
+    EXPECT_EQ(groupVisibilityMasks(visibilities), (std::vector<std::uint32_t>{0b010u, 0u, 0b101u}));
+    // Groups past the 32 a mask names have no bit: time-step 4 * 32 is in group 32.
+    std::vector<std::vector<std::uint8_t>> many(4 * 33, std::vector<std::uint8_t>(1, 0));
+    many[4 * 31][0] = 255;
+    many[4 * 32][0] = 255;
+    EXPECT_EQ(groupVisibilityMasks(many), (std::vector<std::uint32_t>{1u << 31}));
+}
+
 // The column-block scenes look down z at the whole 24x4 grid, in a 96x96 image.
 constexpr int kColumnImageSize = 96;
 constexpr double kGridWidth = 23 * kSpacing;

@@ -55,6 +55,14 @@ std::vector<std::uint16_t> validityTexels(const TimeStep& step);
 // is. All have the same length.
 std::vector<std::uint8_t> unionOfVisibilities(const std::vector<std::vector<std::uint8_t>>& visibilities);
 
+// Groups of four time-steps that a brick's mask can name: the walk over the visible groups of a
+// brick (PACKED_GROUP_MASKS) takes series of up to 4 * 32 time-steps.
+inline constexpr int kMaxMaskedGroups = 32;
+
+// Per brick: bit g set where a time-step of group g (time-steps 4g .. 4g + 3) is visible (its
+// brick visibility, 0 or 255, is not 0). Groups from kMaxMaskedGroups on have no bit. GL-free.
+std::vector<std::uint32_t> groupVisibilityMasks(const std::vector<std::vector<std::uint8_t>>& visibilities);
+
 class PackedAlignedAtlas {
 public:
     // Uploads every group of four time-steps; the series must suit (suitsPackedAtlas). Throws
@@ -68,9 +76,13 @@ public:
     glm::ivec3 sharedValiditySize() const { return sharedValiditySize_; }
     std::size_t textureBytes() const;
 
-    // The union of the time-steps' brick visibilities, per transfer-function change; the texture
-    // holds how far the empty bricks reach (emptyBrickReach).
-    void updateOccupancy(const std::vector<std::uint8_t>& unionVisibility);
+    // Whether each brick's groups can be named in a mask (groupCount() <= kMaxMaskedGroups).
+    bool hasGroupMasks() const { return groupCount() <= kMaxMaskedGroups; }
+
+    // Per transfer-function change, from the time-steps' brick visibilities: the occupancy texture
+    // holds how far the empty bricks of their union reach (emptyBrickReach), and the group-mask
+    // texture which groups each brick shows (groupVisibilityMasks).
+    void updateOccupancy(const std::vector<std::vector<std::uint8_t>>& visibilities);
     // Binds the packed atlas, its validities, its occupancy and the table of group origins.
     void bind() const;
 
@@ -83,6 +95,7 @@ private:
     // PerGroup: RGBA16 in atlas_'s layout; Shared: R16 of the grid's dims; None: one texel.
     Texture validityTexture_;
     Texture occupancy_;
+    Texture groupMasks_;  // R32UI, one texel per brick (hasGroupMasks)
     Buffer groupOrigins_;
 };
 

@@ -39,6 +39,9 @@ struct RaycastVariant {
     bool evenBeams = false;        // every beam grid has evenly spaced beams on both axes
     // PackedGroups with missing values: how the packed validities are held.
     PackedValidity packedValidity = PackedValidity::None;
+    // PackedGroups: each brick's mask names the groups visible in it (PackedAlignedAtlas::hasGroupMasks),
+    // and compositors that leave transparent time-steps out read only those groups.
+    bool packedGroupMasks = false;
     // Capacity of the shader's per-ray arrays of time-steps (timeStepCapacityFor).
     int timeStepCapacity = 8;
     bool collectStatistics = false;
