@@ -1,7 +1,8 @@
 // The walk over the time-steps of a fully aligned series (packed_time_steps.glsl): every time-step
 // contains every sample of the ray (they share one interval), read in groups of four with one fetch
-// per group, with one occupancy test for all of them. Packed series are rectilinear and have no
-// masks, so every sample in the interval is in every grid.
+// per group, with one occupancy test for all of them and, with PACKED_GROUP_MASKS, only the groups
+// visible in the sample's brick for compositors that leave transparent time-steps out. Packed series
+// are rectilinear and have no masks, so every sample in the interval is in every grid.
 #include "variant_switches.glsl"
 #include "ray.glsl"
 #include "overlap_extraction.glsl"

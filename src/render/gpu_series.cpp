@@ -297,7 +297,7 @@ std::size_t GpuSeries::textureBytes() const {
 void GpuSeries::updateOccupancy(const std::vector<glm::vec4>& stfTable) {
     const OpacityRangeMaximum opacity(stfTable);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    std::vector<std::vector<std::uint8_t>> visibilities;  // kept for the packed atlas' union only
+    std::vector<std::vector<std::uint8_t>> visibilities;  // kept for the packed atlas only
     std::size_t bricks = 0, emptyBricks = 0;
     for (std::size_t index = 0; index < brickGrids_.size(); ++index) {
         const std::vector<std::uint8_t> visible = brickVisibility(brickGrids_[index], opacity);
@@ -311,14 +311,7 @@ void GpuSeries::updateOccupancy(const std::vector<glm::vec4>& stfTable) {
                             GL_RED_INTEGER, GL_UNSIGNED_BYTE, reach.data());
     }
     emptyBrickFraction_ = bricks ? double(emptyBricks) / double(bricks) : 0.0;
-    if (packedAtlas_) {
-        const std::vector<std::uint8_t> anyVisible = unionOfVisibilities(visibilities);
-        packedAtlas_->updateOccupancy(visibilities);
-        packedEmptyBrickFraction_ =
-            anyVisible.empty() ? 0.0
-                               : double(std::count(anyVisible.begin(), anyVisible.end(), std::uint8_t(0))) /
-                                     double(anyVisible.size());
-    }
+    if (packedAtlas_) packedEmptyBrickFraction_ = packedAtlas_->updateOccupancy(visibilities);
 }
 
 void GpuSeries::bind() const {

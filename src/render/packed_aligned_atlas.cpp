@@ -154,15 +154,19 @@ std::size_t PackedAlignedAtlas::textureBytes() const {
            groupMasks_.allocatedBytes();
 }
 
-void PackedAlignedAtlas::updateOccupancy(const std::vector<std::vector<std::uint8_t>>& visibilities) {
+double PackedAlignedAtlas::updateOccupancy(const std::vector<std::vector<std::uint8_t>>& visibilities) {
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    const std::vector<std::uint8_t> reach = emptyBrickReach(unionOfVisibilities(visibilities), brickCounts_);
+    const std::vector<std::uint8_t> anyVisible = unionOfVisibilities(visibilities);
+    const std::vector<std::uint8_t> reach = emptyBrickReach(anyVisible, brickCounts_);
     glTextureSubImage3D(occupancy_.id(), 0, 0, 0, 0, brickCounts_.x, brickCounts_.y, brickCounts_.z, GL_RED_INTEGER,
                         GL_UNSIGNED_BYTE, reach.data());
-    if (!hasGroupMasks()) return;
-    const std::vector<std::uint32_t> masks = groupVisibilityMasks(visibilities);
-    glTextureSubImage3D(groupMasks_.id(), 0, 0, 0, 0, brickCounts_.x, brickCounts_.y, brickCounts_.z, GL_RED_INTEGER,
-                        GL_UNSIGNED_INT, masks.data());
+    if (hasGroupMasks()) {
+        const std::vector<std::uint32_t> masks = groupVisibilityMasks(visibilities);
+        glTextureSubImage3D(groupMasks_.id(), 0, 0, 0, 0, brickCounts_.x, brickCounts_.y, brickCounts_.z,
+                            GL_RED_INTEGER, GL_UNSIGNED_INT, masks.data());
+    }
+    if (anyVisible.empty()) return 0.0;
+    return double(std::count(anyVisible.begin(), anyVisible.end(), std::uint8_t(0))) / double(anyVisible.size());
 }
 
 void PackedAlignedAtlas::bind() const {

@@ -81,8 +81,9 @@ public:
 
     // Per transfer-function change, from the time-steps' brick visibilities: the occupancy texture
     // holds how far the empty bricks of their union reach (emptyBrickReach), and the group-mask
-    // texture which groups each brick shows (groupVisibilityMasks).
-    void updateOccupancy(const std::vector<std::vector<std::uint8_t>>& visibilities);
+    // texture which groups each brick shows (groupVisibilityMasks). Returns the share of bricks
+    // empty in every time-step.
+    double updateOccupancy(const std::vector<std::vector<std::uint8_t>>& visibilities);
     // Binds the packed atlas, its validities, its occupancy and the table of group origins.
     void bind() const;
 
