@@ -17,7 +17,8 @@
 
 layout(binding = PACKED_ATLAS_UNIT) uniform sampler3D packedAtlas;
 layout(binding = PACKED_OCCUPANCY_UNIT) uniform usampler3D packedOccupancy;
-// Per brick: bit g set where a time-step of group g is visible under the STF (PACKED_GROUP_MASKS).
+// Per brick (PACKED_GROUP_MASKS): r, the occupancy texel (as packedOccupancy's); g, bit g set where
+// a time-step of group g is visible under the STF. One fetch gives a sample both.
 layout(binding = PACKED_GROUP_MASK_UNIT) uniform usampler3D packedGroupMasks;
 layout(binding = PACKED_VALIDITY_UNIT) uniform sampler3D packedValidity;
 uniform vec3 inversePackedAtlasSize;
@@ -30,11 +31,21 @@ layout(std430, binding = PACKED_GROUP_BUFFER) readonly buffer PackedGroups {
 
 // The sample in the grid every time-step shares (slot 0 is filled whenever the ray takes a
 // sample): `gridLocal` in worldToVoxel's space, `voxel` after the node lookup along uneven axes
-// (one lookup for all time-steps), clamped to the grid.
+// (one lookup for all time-steps), clamped to the grid; `brick`: the texel of packedGroupMasks of
+// the brick it lies in (PACKED_GROUP_MASKS).
 struct AlignedSample {
     vec3 gridLocal;
     vec3 voxel;
+    uvec2 brick;
 };
+
+uvec2 brickTexelAt(vec3 voxel) {
+#if PACKED_GROUP_MASKS
+    return texelFetch(packedGroupMasks, ivec3(brickOf(0, voxel)), 0).rg;
+#else
+    return uvec2(0u);
+#endif
+}
 
 #if UNEVEN_AXES
 // The shared grid's uneven-axis lookup and node counts, read once per ray (prepareAlignedSamples)
@@ -55,14 +66,15 @@ AlignedSample alignedSampleAt(float t) {
     vec3 gridLocal = gridLocalAtSample(0, t);
 #if ALL_AFFINE
     vec3 voxel = clamp(gridLocal, vec3(0.0), slotVoxelUpper(0));
-    return AlignedSample(voxel, voxel);
+    return AlignedSample(voxel, voxel, brickTexelAt(voxel));
 #else
 #if UNEVEN_AXES
     vec3 voxel = applyUnevenAxesIn(alignedUnevenAxes, alignedNodes, gridLocal);
 #else
     vec3 voxel = gridLocal;
 #endif
-    return AlignedSample(gridLocal, clamp(voxel, vec3(0.0), slotVoxelUpper(0)));
+    voxel = clamp(voxel, vec3(0.0), slotVoxelUpper(0));
+    return AlignedSample(gridLocal, voxel, brickTexelAt(voxel));
 #endif
 }
 
@@ -87,9 +99,9 @@ vec4 packedDensities(int group, vec3 voxel, float sharedValidity) {
     return mix(densities / validity, vec4(MISSING_DENSITY), lessThan(validity, vec4(0.5)));
 }
 
-// The groups with a time-step visible in the brick of the voxel position (PACKED_GROUP_MASKS).
-uint visibleGroupsAt(vec3 voxel) {
-    return texelFetch(packedGroupMasks, ivec3(brickOf(0, voxel)), 0).r;
+// The groups with a time-step visible in the sample's brick (PACKED_GROUP_MASKS).
+uint visibleGroupsAt(AlignedSample aligned) {
+    return aligned.brick.y;
 }
 
 // Empty-space skipping for all time-steps at once: -1 when any time-step's brick at the sample is
@@ -98,7 +110,11 @@ float packedEmptySpaceUntil(AlignedSample aligned, float t) {
 #if !SKIP_EMPTY_BRICKS
     return -1.0;
 #endif
+#if PACKED_GROUP_MASKS
+    int reach = emptyReachOfTexel(aligned.brick.x);
+#else
     int reach = emptyReachOfTexel(texelFetch(packedOccupancy, ivec3(brickOf(0, aligned.voxel)), 0).r);
+#endif
     if (reach < 0) return -1.0;
     return brickExit(0, aligned.voxel, aligned.gridLocal, t, slotVoxelDirection(0), reach);
 }

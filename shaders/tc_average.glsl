@@ -12,6 +12,7 @@
 
 const int COMPOSITOR_READS = READS_COMPOSITED;
 const bool COMPOSITOR_IGNORES_TRANSPARENT = true;
+const bool COMPOSITOR_READS_TRANSPARENT_COLOUR = false;
 
 // The styled time-steps added so far: the sum of their premultiplied colours and opacities, and
 // how many have some opacity.

@@ -4,6 +4,7 @@
 
 const int COMPOSITOR_READS = READS_INDEX_TSTF;
 const bool COMPOSITOR_IGNORES_TRANSPARENT = false;
+const bool COMPOSITOR_READS_TRANSPARENT_COLOUR = false;
 
 uniform float compositorThreshold;
 

@@ -7,6 +7,11 @@
 //   const bool COMPOSITOR_IGNORES_TRANSPARENT
 //                                      true when compositorAccumulate leaves out every time-step
 //                                      whose STF opacity is 0: the walks may then not hand those over
+//   const bool COMPOSITOR_READS_TRANSPARENT_COLOUR
+//                                      true when the STF colour of a time-step whose STF opacity
+//                                      is 0 may change the result; false lets a walk that knows a
+//                                      time-step is transparent hand it over with a zero STF,
+//                                      unclassified (the packed walk's hidden groups)
 //   struct CompositorState
 //   CompositorState compositorInit()
 //   void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 position, inout int fetches)

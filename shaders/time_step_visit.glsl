@@ -34,3 +34,15 @@ void visitTimeStep(inout CompositorState state, int step, AtlasSample atlasSampl
     vec4 stf = classifyStf(atlasSample.density);
     compositorAccumulate(state, TimeStepSample(step, atlasSample.density, stf, atlasSample.inMask), position, result.fetches);
 }
+
+// A time-step the walk knows to be transparent under the STF here (a packed group whose bit the
+// brick's group mask lacks), for a compositor that needs its density but not the colour of its
+// transparent STF (!COMPOSITOR_READS_TRANSPARENT_COLOUR): handed over with a zero STF, without
+// the lookup.
+void visitTransparentTimeStep(inout CompositorState state, int step, AtlasSample atlasSample, vec3 position,
+                              inout TemporalSample result) {
+    result.contributing += 1;
+    if (isMissingDensity(atlasSample.density)) return;
+    compositorAccumulate(state, TimeStepSample(step, atlasSample.density, vec4(0.0), atlasSample.inMask), position,
+                         result.fetches);
+}

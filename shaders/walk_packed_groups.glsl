@@ -1,8 +1,9 @@
 // The walk over the time-steps of a fully aligned series (packed_time_steps.glsl): every time-step
 // contains every sample of the ray (they share one interval), read in groups of four with one fetch
 // per group, with one occupancy test for all of them and, with PACKED_GROUP_MASKS, only the groups
-// visible in the sample's brick for compositors that leave transparent time-steps out. Packed series
-// are rectilinear and have no masks, so every sample in the interval is in every grid.
+// visible in the sample's brick for compositors that leave transparent time-steps out, and for the
+// others the groups outside it without STF lookups. Packed series are rectilinear and have no
+// masks, so every sample in the interval is in every grid.
 #include "variant_switches.glsl"
 #include "ray.glsl"
 #include "overlap_extraction.glsl"
@@ -63,16 +64,31 @@ void visitGroup(inout CompositorState state, SamplePoint point, int group, float
     }
 }
 
+// A group whose time-steps are all transparent in the sample's brick, for a compositor that needs
+// their densities but not their (transparent) STF colours: one fetch, no STF lookups.
+void visitTransparentGroup(inout CompositorState state, SamplePoint point, int group, float sharedValidity,
+                           inout TemporalSample result) {
+    vec4 groupDensities = packedDensities(group, point.aligned.voxel, sharedValidity);
+    result.fetches += PACKED_FETCHES_PER_GROUP;
+    int lanes = lanesOfGroup(group);
+    for (int lane = 0; lane < lanes; ++lane) {
+        int step = 4 * group + lane;
+        if (step < exposedSteps.x || step > exposedSteps.y) continue;
+        visitTransparentTimeStep(state, step, AtlasSample(groupDensities[lane], true), point.position, result);
+    }
+}
+
 void accumulateTimeSteps(inout CompositorState state, SamplePoint point, inout TemporalSample result) {
     float sharedValidity = sharedValidityAt(point.aligned.voxel);
     result.fetches += PACKED_FETCHES_PER_SAMPLE;
 #if PACKED_GROUP_MASKS
+    uint visibleGroups = visibleGroupsAt(point.aligned);
     if (COMPOSITOR_IGNORES_TRANSPARENT) {
         // Only the groups with a time-step visible in the sample's brick: every time-step of the
         // others is transparent here, which such a compositor leaves out (they count as met). The
         // loop runs as often as the pixel of the 8 with the most visible groups needs, where a loop
         // over all groups fetched every group (llvmpipe runs a loop's body for all 8, masked).
-        uint groups = visibleGroupsAt(point.aligned.voxel);
+        uint groups = visibleGroups;
         int unvisitedLanes = timeStepCount;
         while (groups != 0u) {
             int group = findLSB(groups);
@@ -81,6 +97,24 @@ void accumulateTimeSteps(inout CompositorState state, SamplePoint point, inout T
             visitGroup(state, point, group, sharedValidity, result);
         }
         result.contributing += unvisitedLanes;
+        return;
+    }
+    if (!COMPOSITOR_READS_TRANSPARENT_COLOUR) {
+        // Every density counts (a change, a spread, a time of maximum), but the groups outside the
+        // mask need no STF lookups: first those, then the visible ones in time order (the
+        // compositors break ties by time-step, or only among visible time-steps).
+        uint hiddenGroups = ~visibleGroups & (packedGroupCount >= 32 ? ~0u : (1u << packedGroupCount) - 1u);
+        while (hiddenGroups != 0u) {
+            int group = findLSB(hiddenGroups);
+            hiddenGroups &= hiddenGroups - 1u;
+            visitTransparentGroup(state, point, group, sharedValidity, result);
+        }
+        uint groups = visibleGroups;
+        while (groups != 0u) {
+            int group = findLSB(groups);
+            groups &= groups - 1u;
+            visitGroup(state, point, group, sharedValidity, result);
+        }
         return;
     }
 #endif

@@ -144,7 +144,7 @@ PackedAlignedAtlas::PackedAlignedAtlas(const Series& series, glm::ivec3 brickCou
     occupancy_.setClampToEdge();
     // Without masks (more groups than a mask names) one texel, bound but never read.
     const glm::ivec3 maskSize = hasGroupMasks() ? brickCounts : glm::ivec3(1);
-    glTextureStorage3D(groupMasks_.id(), 1, GL_R32UI, maskSize.x, maskSize.y, maskSize.z);
+    glTextureStorage3D(groupMasks_.id(), 1, GL_RG32UI, maskSize.x, maskSize.y, maskSize.z);
     groupMasks_.setFilter(GL_NEAREST, GL_NEAREST);
     groupMasks_.setClampToEdge();
 }
@@ -161,9 +161,15 @@ double PackedAlignedAtlas::updateOccupancy(const std::vector<std::vector<std::ui
     glTextureSubImage3D(occupancy_.id(), 0, 0, 0, 0, brickCounts_.x, brickCounts_.y, brickCounts_.z, GL_RED_INTEGER,
                         GL_UNSIGNED_BYTE, reach.data());
     if (hasGroupMasks()) {
+        // Beside each mask its brick's occupancy texel, so that a sample reads both in one fetch.
         const std::vector<std::uint32_t> masks = groupVisibilityMasks(visibilities);
+        std::vector<std::uint32_t> texels(2 * masks.size());
+        for (std::size_t brick = 0; brick < masks.size(); ++brick) {
+            texels[2 * brick] = reach[brick];
+            texels[2 * brick + 1] = masks[brick];
+        }
         glTextureSubImage3D(groupMasks_.id(), 0, 0, 0, 0, brickCounts_.x, brickCounts_.y, brickCounts_.z,
-                            GL_RED_INTEGER, GL_UNSIGNED_INT, masks.data());
+                            GL_RG_INTEGER, GL_UNSIGNED_INT, texels.data());
     }
     if (anyVisible.empty()) return 0.0;
     return double(std::count(anyVisible.begin(), anyVisible.end(), std::uint8_t(0))) / double(anyVisible.size());

@@ -195,6 +195,43 @@ TEST(PackedAlignedRender, MissingValuesOnUnevenLevelsAreLeftOut) {
     }
 }
 
+// The max density change needs every density, also of the groups the group masks name as
+// transparent in a brick (read there without STF lookups): time-steps 0-3 are 0 everywhere,
+// transparent under the STF in every brick, time-step 4 is 1 and 5 is 0.6, both opaque. The change
+// is 1 - 0 = 1 (0.4 if the transparent group were left out), orange on the gradient TSTF.
+TEST(PackedAlignedRender, MaxDensityChangeCountsTheGroupTransparentInEveryBrick) {
+    std::vector<BoxSpec> boxes;
+    for (int k = 0; k < kSteps; ++k) {
+        BoxSpec box;
+        box.dims = {24, 4, 4};
+        box.spacing = glm::dvec3(kSpacing);
+        const float density = k == 4 ? 1.0f : k == 5 ? 0.6f : 0.0f;
+        box.density = [density](glm::ivec3) { return density; };
+        boxes.push_back(box);
+    }
+    const Series series = makeSeries(boxes);
+    Scene scene = columnBlockScene({{0.0, 0.0}, {0.5, 0.0}, {0.55, 1.0}, {1.0, 1.0}});
+    scene.compositor = TemporalCompositor::MaxDensityChange;
+    scene.gradientTstf.curve.opacity = {{0.0, 1.0}};
+    scene.gradientTstf.curve.color = {{0.0, {0, 1, 0}}, {1.0, {1, 0.5, 0}}};  // green to orange
+    scene.gradientTstf.rangeLow = 0.0;
+    scene.gradientTstf.rangeHigh = 1.0;
+    for (const bool packed : {true, false}) {
+        FrameOptions options;
+        options.packAligned = packed;
+        const Image image = renderSeries(series, scene, options);
+        for (const double x : {0.5, 1.2, 2.0}) {
+            const glm::ivec2 pixel = pixelOf({x, kColumnViewCentre.y}, kColumnViewCentre, kColumnViewHeight,
+                                             kColumnImageSize);
+            const glm::vec4 actual = image.at(pixel.x, pixel.y);
+            const glm::vec4 orange(1.0f, 0.5f, 0.0f, 1.0f);
+            for (int channel = 0; channel < 4; ++channel)
+                EXPECT_NEAR(actual[channel], orange[channel], 2.0 / 255.0)
+                    << (packed ? "packed" : "general path") << ", x " << x << ", channel " << channel;
+        }
+    }
+}
+
 // Packed and general path differ only in how a density is fetched (one RGBA16 texel for four
 // time-steps instead of one R16 or RG16 texel each, the same 16-bit values and filter weights) and
 // in the order in which equal intervals are visited; the images must agree to rounding.

@@ -81,7 +81,7 @@ public:
 
     // Per transfer-function change, from the time-steps' brick visibilities: the occupancy texture
     // holds how far the empty bricks of their union reach (emptyBrickReach), and the group-mask
-    // texture which groups each brick shows (groupVisibilityMasks). Returns the share of bricks
+    // texture which groups each brick shows (groupVisibilityMasks) beside the same reach. Returns the share of bricks
     // empty in every time-step.
     double updateOccupancy(const std::vector<std::vector<std::uint8_t>>& visibilities);
     // Binds the packed atlas, its validities, its occupancy and the table of group origins.
@@ -96,7 +96,8 @@ private:
     // PerGroup: RGBA16 in atlas_'s layout; Shared: R16 of the grid's dims; None: one texel.
     Texture validityTexture_;
     Texture occupancy_;
-    Texture groupMasks_;  // R32UI, one texel per brick (hasGroupMasks)
+    // RG32UI, one texel per brick (hasGroupMasks): the occupancy texel and the group mask.
+    Texture groupMasks_;
     Buffer groupOrigins_;
 };
 
