@@ -16,8 +16,9 @@
 #include "voxel_rays.glsl"
 
 layout(binding = PACKED_ATLAS_UNIT) uniform sampler3D packedAtlas;
+// Per brick without PACKED_GROUP_MASKS: how far the empty bricks reach (emptyReachOfTexel).
 layout(binding = PACKED_OCCUPANCY_UNIT) uniform usampler3D packedOccupancy;
-// Per brick (PACKED_GROUP_MASKS): r, the occupancy texel (as packedOccupancy's); g, bit g set where
+// Per brick with PACKED_GROUP_MASKS: r, the occupancy texel; g, bit g set where
 // a time-step of group g is visible under the STF. One fetch gives a sample both.
 layout(binding = PACKED_GROUP_MASK_UNIT) uniform usampler3D packedGroupMasks;
 layout(binding = PACKED_VALIDITY_UNIT) uniform sampler3D packedValidity;

@@ -139,10 +139,12 @@ PackedAlignedAtlas::PackedAlignedAtlas(const Series& series, glm::ivec3 brickCou
     }
     groupOrigins_.setData(std::as_bytes(std::span(origins)), GL_STATIC_DRAW);
 
-    glTextureStorage3D(occupancy_.id(), 1, GL_R8UI, brickCounts.x, brickCounts.y, brickCounts.z);
+    // With masks the occupancy sits beside each mask, and the occupancy texture is one texel, bound
+    // but never read; without masks (more groups than a mask names) the other way round.
+    const glm::ivec3 occupancySize = hasGroupMasks() ? glm::ivec3(1) : brickCounts;
+    glTextureStorage3D(occupancy_.id(), 1, GL_R8UI, occupancySize.x, occupancySize.y, occupancySize.z);
     occupancy_.setFilter(GL_NEAREST, GL_NEAREST);
     occupancy_.setClampToEdge();
-    // Without masks (more groups than a mask names) one texel, bound but never read.
     const glm::ivec3 maskSize = hasGroupMasks() ? brickCounts : glm::ivec3(1);
     glTextureStorage3D(groupMasks_.id(), 1, GL_RG32UI, maskSize.x, maskSize.y, maskSize.z);
     groupMasks_.setFilter(GL_NEAREST, GL_NEAREST);
@@ -158,9 +160,10 @@ double PackedAlignedAtlas::updateOccupancy(const std::vector<std::vector<std::ui
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     const std::vector<std::uint8_t> anyVisible = unionOfVisibilities(visibilities);
     const std::vector<std::uint8_t> reach = emptyBrickReach(anyVisible, brickCounts_);
-    glTextureSubImage3D(occupancy_.id(), 0, 0, 0, 0, brickCounts_.x, brickCounts_.y, brickCounts_.z, GL_RED_INTEGER,
-                        GL_UNSIGNED_BYTE, reach.data());
-    if (hasGroupMasks()) {
+    if (!hasGroupMasks()) {
+        glTextureSubImage3D(occupancy_.id(), 0, 0, 0, 0, brickCounts_.x, brickCounts_.y, brickCounts_.z,
+                            GL_RED_INTEGER, GL_UNSIGNED_BYTE, reach.data());
+    } else {
         // Beside each mask its brick's occupancy texel, so that a sample reads both in one fetch.
         const std::vector<std::uint32_t> masks = groupVisibilityMasks(visibilities);
         std::vector<std::uint32_t> texels(2 * masks.size());

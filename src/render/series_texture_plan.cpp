@@ -91,9 +91,10 @@ std::vector<PlannedTexture> SeriesTexturePlan::textures() const {
         const bool perGroup = packedValidity == PackedValidity::PerGroup;
         result.push_back({"packed atlas", packed->size, 8});
         result.push_back({"packed validity", perGroup ? packed->size : sharedValiditySize, perGroup ? 8u : 2u});
-        result.push_back({"packed occupancy", packedBricks, 1});
+        // With group masks the occupancy sits beside each mask (RG32UI), else in a texture of its own.
         const bool masked = packed->brickOrigins.size() <= std::size_t(kMaxMaskedGroups);
-        result.push_back({"packed group masks", masked ? packedBricks : glm::ivec3(1), 4});
+        result.push_back({"packed occupancy", masked ? glm::ivec3(1) : packedBricks, 1});
+        result.push_back({"packed group masks", masked ? packedBricks : glm::ivec3(1), 8});
     }
     return result;
 }

@@ -232,6 +232,58 @@ TEST(PackedAlignedRender, MaxDensityChangeCountsTheGroupTransparentInEveryBrick)
     }
 }
 
+// More groups than a mask names (33 groups, 132 time-steps): the packed walk reads the occupancy
+// from its own texture and visits every group. Every time-step is dense in block 0 only, so the
+// rays over blocks 1-5 meet empty bricks alone: skipping them takes samples away, and the picture
+// is the general path's.
+TEST(PackedAlignedRender, WithMoreGroupsThanAMaskNamesTheOccupancyStillSkipsEmptyBricks) {
+    constexpr int kManySteps = 4 * (kMaxMaskedGroups + 1);
+    std::vector<BoxSpec> boxes;
+    for (int k = 0; k < kManySteps; ++k) {
+        BoxSpec box;
+        box.dims = {24, 4, 4};
+        box.spacing = glm::dvec3(kSpacing);
+        box.density = [](glm::ivec3 voxel) { return voxel.x < 4 ? 1.0f : 0.0f; };
+        boxes.push_back(box);
+    }
+    const Series series = makeSeries(boxes);
+    ASSERT_TRUE(suitsPackedAtlas(series));
+    const Scene scene = columnBlockScene({{0.0, 0.0}, {0.5, 0.0}, {0.51, 1.0}, {1.0, 1.0}});
+    Renderer& renderer = testRenderer();
+    renderer.setSeries(series);
+    const View view = resolveView(scene.camera, series.worldBounds(), scene.width, scene.height);
+    auto draw = [&](bool packed, bool emptyBrickTest) {
+        FrameOptions options;
+        options.size = {scene.width, scene.height};
+        options.collectStatistics = true;
+        options.packAligned = packed;
+        options.emptyBrickTest = emptyBrickTest;
+        renderer.draw(scene, view, options);
+        return std::make_pair(renderer.readFrame(), renderer.lastStatistics());
+    };
+    const auto [skipped, skippedCounts] = draw(true, true);
+    const auto [unskipped, unskippedCounts] = draw(true, false);
+    const auto [general, generalCounts] = draw(false, true);
+    EXPECT_LT(double(skippedCounts.samples), 0.5 * double(unskippedCounts.samples));
+    for (const double x : {0.15, 1.2, 2.0}) {
+        const glm::ivec2 pixel =
+            pixelOf({x, kColumnViewCentre.y}, kColumnViewCentre, kColumnViewHeight, kColumnImageSize);
+        for (int channel = 0; channel < 4; ++channel) {
+            EXPECT_NEAR(skipped.at(pixel.x, pixel.y)[channel], general.at(pixel.x, pixel.y)[channel], 2.0 / 255.0)
+                << "x " << x << ", channel " << channel;
+            EXPECT_NEAR(skipped.at(pixel.x, pixel.y)[channel], unskipped.at(pixel.x, pixel.y)[channel], 2.0 / 255.0)
+                << "x " << x << ", channel " << channel;
+        }
+    }
+    // Block 0 shows time-step 0 (the earliest wins the tie), the rest is transparent.
+    const glm::ivec2 inBlockZero =
+        pixelOf({0.15, kColumnViewCentre.y}, kColumnViewCentre, kColumnViewHeight, kColumnImageSize);
+    EXPECT_NEAR(skipped.at(inBlockZero.x, inBlockZero.y).a, 1.0f, 2.0 / 255.0);
+    const glm::ivec2 inBlockThree =
+        pixelOf({1.5, kColumnViewCentre.y}, kColumnViewCentre, kColumnViewHeight, kColumnImageSize);
+    EXPECT_NEAR(skipped.at(inBlockThree.x, inBlockThree.y).a, 0.0f, 2.0 / 255.0);
+}
+
 // Packed and general path differ only in how a density is fetched (one RGBA16 texel for four
 // time-steps instead of one R16 or RG16 texel each, the same 16-bit values and filter weights) and
 // in the order in which equal intervals are visited; the images must agree to rounding.

@@ -79,10 +79,10 @@ public:
     // Whether each brick's groups can be named in a mask (groupCount() <= kMaxMaskedGroups).
     bool hasGroupMasks() const { return groupCount() <= kMaxMaskedGroups; }
 
-    // Per transfer-function change, from the time-steps' brick visibilities: the occupancy texture
-    // holds how far the empty bricks of their union reach (emptyBrickReach), and the group-mask
-    // texture which groups each brick shows (groupVisibilityMasks) beside the same reach. Returns the share of bricks
-    // empty in every time-step.
+    // Per transfer-function change, from the time-steps' brick visibilities: how far the empty
+    // bricks of their union reach (emptyBrickReach) and, with group masks, which groups each brick
+    // shows (groupVisibilityMasks), the two side by side in the group-mask texture; without masks
+    // the reach goes to the occupancy texture. Returns the share of bricks empty in every time-step.
     double updateOccupancy(const std::vector<std::vector<std::uint8_t>>& visibilities);
     // Binds the packed atlas, its validities, its occupancy and the table of group origins.
     void bind() const;
@@ -95,7 +95,7 @@ private:
     Texture atlas_;
     // PerGroup: RGBA16 in atlas_'s layout; Shared: R16 of the grid's dims; None: one texel.
     Texture validityTexture_;
-    Texture occupancy_;
+    Texture occupancy_;  // R8UI, one texel per brick without group masks, else one texel
     // RG32UI, one texel per brick (hasGroupMasks): the occupancy texel and the group mask.
     Texture groupMasks_;
     Buffer groupOrigins_;
