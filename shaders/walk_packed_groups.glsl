@@ -78,6 +78,21 @@ void visitTransparentGroup(inout CompositorState state, SamplePoint point, int g
     }
 }
 
+// The groups whose bits `groups` sets, in time order; returns how many time-steps they hold. A loop
+// over set bits runs as often as the pixel of the 8 with the most groups needs, where a loop over
+// all groups fetched every group (llvmpipe runs a loop's body for all 8, masked).
+int visitGroupsIn(uint groups, inout CompositorState state, SamplePoint point, float sharedValidity,
+                  inout TemporalSample result) {
+    int lanes = 0;
+    while (groups != 0u) {
+        int group = findLSB(groups);
+        groups &= groups - 1u;
+        lanes += lanesOfGroup(group);
+        visitGroup(state, point, group, sharedValidity, result);
+    }
+    return lanes;
+}
+
 void accumulateTimeSteps(inout CompositorState state, SamplePoint point, inout TemporalSample result) {
     float sharedValidity = sharedValidityAt(point.aligned.voxel);
     result.fetches += PACKED_FETCHES_PER_SAMPLE;
@@ -85,18 +100,9 @@ void accumulateTimeSteps(inout CompositorState state, SamplePoint point, inout T
     uint visibleGroups = visibleGroupsAt(point.aligned);
     if (COMPOSITOR_IGNORES_TRANSPARENT) {
         // Only the groups with a time-step visible in the sample's brick: every time-step of the
-        // others is transparent here, which such a compositor leaves out (they count as met). The
-        // loop runs as often as the pixel of the 8 with the most visible groups needs, where a loop
-        // over all groups fetched every group (llvmpipe runs a loop's body for all 8, masked).
-        uint groups = visibleGroups;
-        int unvisitedLanes = timeStepCount;
-        while (groups != 0u) {
-            int group = findLSB(groups);
-            groups &= groups - 1u;
-            unvisitedLanes -= lanesOfGroup(group);
-            visitGroup(state, point, group, sharedValidity, result);
-        }
-        result.contributing += unvisitedLanes;
+        // others is transparent here, which such a compositor leaves out (they count as met).
+        int visitedLanes = visitGroupsIn(visibleGroups, state, point, sharedValidity, result);
+        result.contributing += timeStepCount - visitedLanes;
         return;
     }
     if (!COMPOSITOR_READS_TRANSPARENT_COLOUR) {
@@ -109,12 +115,7 @@ void accumulateTimeSteps(inout CompositorState state, SamplePoint point, inout T
             hiddenGroups &= hiddenGroups - 1u;
             visitTransparentGroup(state, point, group, sharedValidity, result);
         }
-        uint groups = visibleGroups;
-        while (groups != 0u) {
-            int group = findLSB(groups);
-            groups &= groups - 1u;
-            visitGroup(state, point, group, sharedValidity, result);
-        }
+        visitGroupsIn(visibleGroups, state, point, sharedValidity, result);
         return;
     }
 #endif
