@@ -43,8 +43,11 @@ float emptySpaceUntil(SamplePoint point) {
     return packedEmptySpaceUntil(point.aligned, point.t);
 }
 
-// One group of four time-steps at the sample: one fetch, then each exposed time-step to the compositor.
-void visitGroup(inout CompositorState state, SamplePoint point, int group, float sharedValidity,
+// One group of four time-steps at the sample: one fetch, then each exposed time-step to the
+// compositor. `knownTransparent` (a constant at every call, so only one kind of visit is in the
+// program there): the brick's group mask lacks the group, every time-step of it is transparent, and
+// the compositor needs their densities but not their STF colours, so they skip the STF lookup.
+void visitGroup(inout CompositorState state, SamplePoint point, int group, bool knownTransparent, float sharedValidity,
                 inout TemporalSample result) {
     vec4 groupDensities = packedDensities(group, point.aligned.voxel, sharedValidity);
     result.fetches += PACKED_FETCHES_PER_GROUP;
@@ -60,35 +63,25 @@ void visitGroup(inout CompositorState state, SamplePoint point, int group, float
         int step = 4 * group + lane;
         if (step < exposedSteps.x || step > exposedSteps.y) continue;
         // No masks in a packed series.
-        visitTimeStep(state, step, AtlasSample(groupDensities[lane], true), point.position, result);
-    }
-}
-
-// A group whose time-steps are all transparent in the sample's brick, for a compositor that needs
-// their densities but not their (transparent) STF colours: one fetch, no STF lookups.
-void visitTransparentGroup(inout CompositorState state, SamplePoint point, int group, float sharedValidity,
-                           inout TemporalSample result) {
-    vec4 groupDensities = packedDensities(group, point.aligned.voxel, sharedValidity);
-    result.fetches += PACKED_FETCHES_PER_GROUP;
-    int lanes = lanesOfGroup(group);
-    for (int lane = 0; lane < lanes; ++lane) {
-        int step = 4 * group + lane;
-        if (step < exposedSteps.x || step > exposedSteps.y) continue;
-        visitTransparentTimeStep(state, step, AtlasSample(groupDensities[lane], true), point.position, result);
+        AtlasSample atlasSample = AtlasSample(groupDensities[lane], true);
+        if (knownTransparent)
+            visitTransparentTimeStep(state, step, atlasSample, point.position, result);
+        else
+            visitTimeStep(state, step, atlasSample, point.position, result);
     }
 }
 
 // The groups whose bits `groups` sets, in time order; returns how many time-steps they hold. A loop
 // over set bits runs as often as the pixel of the 8 with the most groups needs, where a loop over
 // all groups fetched every group (llvmpipe runs a loop's body for all 8, masked).
-int visitGroupsIn(uint groups, inout CompositorState state, SamplePoint point, float sharedValidity,
-                  inout TemporalSample result) {
+int visitGroupsIn(uint groups, bool knownTransparent, inout CompositorState state, SamplePoint point,
+                  float sharedValidity, inout TemporalSample result) {
     int lanes = 0;
     while (groups != 0u) {
         int group = findLSB(groups);
         groups &= groups - 1u;
         lanes += lanesOfGroup(group);
-        visitGroup(state, point, group, sharedValidity, result);
+        visitGroup(state, point, group, knownTransparent, sharedValidity, result);
     }
     return lanes;
 }
@@ -101,7 +94,7 @@ void accumulateTimeSteps(inout CompositorState state, SamplePoint point, inout T
     if (COMPOSITOR_IGNORES_TRANSPARENT) {
         // Only the groups with a time-step visible in the sample's brick: every time-step of the
         // others is transparent here, which such a compositor leaves out (they count as met).
-        int visitedLanes = visitGroupsIn(visibleGroups, state, point, sharedValidity, result);
+        int visitedLanes = visitGroupsIn(visibleGroups, false, state, point, sharedValidity, result);
         result.contributing += timeStepCount - visitedLanes;
         return;
     }
@@ -109,15 +102,12 @@ void accumulateTimeSteps(inout CompositorState state, SamplePoint point, inout T
         // Every density counts (a change, a spread, a time of maximum), but the groups outside the
         // mask need no STF lookups: first those, then the visible ones in time order (the
         // compositors break ties by time-step, or only among visible time-steps).
-        uint hiddenGroups = ~visibleGroups & (packedGroupCount >= 32 ? ~0u : (1u << packedGroupCount) - 1u);
-        while (hiddenGroups != 0u) {
-            int group = findLSB(hiddenGroups);
-            hiddenGroups &= hiddenGroups - 1u;
-            visitTransparentGroup(state, point, group, sharedValidity, result);
-        }
-        visitGroupsIn(visibleGroups, state, point, sharedValidity, result);
+        uint allGroups = packedGroupCount >= 32 ? ~0u : (1u << packedGroupCount) - 1u;
+        visitGroupsIn(allGroups & ~visibleGroups, true, state, point, sharedValidity, result);
+        visitGroupsIn(visibleGroups, false, state, point, sharedValidity, result);
         return;
     }
 #endif
-    for (int group = 0; group < packedGroupCount; ++group) visitGroup(state, point, group, sharedValidity, result);
+    for (int group = 0; group < packedGroupCount; ++group)
+        visitGroup(state, point, group, false, sharedValidity, result);
 }
