@@ -13,6 +13,8 @@ packages=(
   libfreetype-dev fonts-dejavu-core
   pybind11-dev python3-dev python3-numpy python3-xarray python3-netcdf4 python3-pytest
   libopenmpi-dev openmpi-bin
+  libtiff-dev libpugixml-dev libblosc-dev libzstd-dev liblz4-dev liblzma-dev libgdcm-dev
+  python3-tifffile python3-zarr python3-pydicom python3-vtk9
 )
 
 missing=()

@@ -107,6 +107,10 @@ SharedSeries openFiles(const std::vector<std::filesystem::path>& inputs, const p
     if (const auto range = text("range")) read.valueRange = parseValueRange(*range, "--range");
     if (const auto resample = text("resample")) read.resampleTo = parseDims(*resample, "--resample");
     if (const auto dims = text("dims")) read.rawDims = parseDims(*dims, "--dims");
+    if (options.contains("channel") && !options["channel"].is_none()) read.channel = options["channel"].cast<int>();
+    read.seriesChoice = text("series").value_or("");
+    read.pageAxes = text("axes").value_or("");
+    if (options.contains("level") && !options["level"].is_none()) read.level = options["level"].cast<int>();
     if (const auto precision = text("precision")) read.precision = parseDensityPrecision(*precision, "--precision");
     if (const auto memory = text("max_memory")) read.maxMemoryBytes = parseMemorySize(*memory, "--max-memory");
     if (const auto fit = text("fit")) {

@@ -238,8 +238,10 @@ def _steps_text(steps):
 
 
 def open(path, *, var=None, steps=None, time_dim=None, index_axes=False, value_range=None, resample=None,
-         dims=None, precision=None, max_memory=None, fit=None, solution=(), block=0, gamma=1.4):
-    """Opens any dataset the executable reads (manifest, NetCDF, NIfTI, NRRD, Plot3D, Isabel files).
+         dims=None, precision=None, max_memory=None, fit=None, solution=(), block=0, gamma=1.4, channel=None,
+         series=None, axes=None, level=None):
+    """Opens any dataset the executable reads (manifest, NetCDF, NIfTI, NRRD, Plot3D, Isabel files; TIFF,
+    OME-Zarr, DICOM, VTK XML).
 
     The options are those of `tstyles render`/`info` (docs/readers.md): var=--var, steps=--steps
     ("0:48:5" or slice(0, 48, 5)), value_range=--range (low, high), resample=--resample (nx, ny, nz),
@@ -254,5 +256,7 @@ def open(path, *, var=None, steps=None, time_dim=None, index_axes=False, value_r
         "precision": None if precision is None else str(precision),
         "max_memory": None if max_memory is None else str(max_memory), "fit": fit,
         "solution": [os.fspath(p) for p in solution], "block": int(block), "gamma": float(gamma),
+        "channel": None if channel is None else int(channel), "series": None if series is None else str(series),
+        "axes": axes, "level": None if level is None else int(level),
     }
     return Series._wrap(_native.open_series(paths, options))

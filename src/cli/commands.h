@@ -42,6 +42,10 @@ struct DatasetOptions {
     std::optional<std::string> range;      // --range LO:HI
     std::optional<std::string> resample;   // --resample NXxNYxNZ
     std::optional<std::string> rawDims;    // --dims NXxNYxNZ
+    std::optional<int> channel;            // --channel (TIFF, OME-Zarr)
+    std::string series;                    // --series (DICOM)
+    std::string axes;                      // --axes (plain TIFF)
+    std::optional<int> level;              // --level (OME-Zarr)
     std::optional<std::string> precision;  // --precision 8|16|32
     std::optional<std::string> maxMemory;  // --max-memory SIZE
     std::optional<std::string> fit;        // --fit refuse|resolution|steps

@@ -35,7 +35,19 @@ void addDatasetOptions(CLI::App& command, DatasetOptions& options) {
                        "Time-steps FIRST:END:STRIDE (END exclusive, may be empty), e.g. 0:48:5");
     command.add_option("--range", options.range, "Raw values LO:HI map to density 0 and 1 (default: the data's)");
     command.add_option("--resample", options.resample, "Resample every time-step to NXxNYxNZ (rectilinear grids)");
-    command.add_option("--dims", options.rawDims, "Hurricane Isabel raw files: samples per file NXxNYxNZ (default 500x500x100)");
+    command.add_option("--dims", options.rawDims,
+                       "Hurricane Isabel raw files: samples per file NXxNYxNZ (default 500x500x100); plain TIFF: "
+                       "the samples of one volume");
+    command.add_option("--channel", options.channel, "TIFF, OME-Zarr: which channel of a multi-channel image (from 0)")
+        ->check(CLI::NonNegativeNumber);
+    command.add_option("--series", options.series,
+                       "DICOM: which series of the folder, by its instance UID or its number in `tstyles info` "
+                       "(default: the largest)");
+    command.add_option("--axes", options.axes,
+                       "Plain TIFF: what the pages are, slowest axis first: TZYX (default) or ZTYX");
+    command.add_option("--level", options.level, "OME-Zarr: the resolution level, 0 the finest (default: the "
+                       "finest that fits the memory limits)")
+        ->check(CLI::NonNegativeNumber);
     command.add_option("--precision", options.precision, "Bits per density on the GPU: 8, 16 (default) or 32");
     command.add_option("--max-memory", options.maxMemory,
                        "Memory the series may take (host + GPU copy), e.g. 512M, 2G; more is refused or fitted");
@@ -61,6 +73,10 @@ ReadOptions toReadOptions(const DatasetOptions& options) {
     if (options.range) read.valueRange = parseValueRange(*options.range, "--range");
     if (options.resample) read.resampleTo = parseDims(*options.resample, "--resample");
     if (options.rawDims) read.rawDims = parseDims(*options.rawDims, "--dims");
+    read.channel = options.channel;
+    read.seriesChoice = options.series;
+    read.pageAxes = options.axes;
+    read.level = options.level;
     if (options.precision) read.precision = parseDensityPrecision(*options.precision, "--precision");
     if (options.maxMemory) read.maxMemoryBytes = parseMemorySize(*options.maxMemory, "--max-memory");
     if (options.fit) {

@@ -19,6 +19,7 @@ std::string whyNotInBlocks(const std::vector<std::filesystem::path>& dataset, co
         return "only a tstyles manifest is read in blocks (`tstyles convert` makes one)";
     const bool readingOptions = !options.variable.empty() || !options.timeDimension.empty() || options.indexAxes ||
                                 options.steps || options.range || options.resample || options.rawDims || options.fit ||
+                                options.channel || !options.series.empty() || !options.axes.empty() || options.level ||
                                 !options.solutions.empty() || options.block != 0;
     if (readingOptions) return "a reader's options were given";
     return "";

@@ -171,6 +171,7 @@ Series withoutTimeSteps(const Series& series) {
     result.valueUnit = series.valueUnit;
     result.precision = series.precision;
     result.sourceFormat = series.sourceFormat;
+    result.readingNotes = series.readingNotes;
     result.axes = series.axes;
     result.time = series.time;
     return result;

@@ -235,6 +235,7 @@ std::string describeSeries(const Series& series) {
     out << (series.sourceFormat == "tstyles manifest" ? "Manifest: " : "File: ") << series.manifestPath.string()
         << "\n";
     out << "Format: " << series.sourceFormat << "\n";
+    for (const std::string& note : series.readingNotes) out << "Read: " << note << "\n";
     out << "Time-steps: " << series.size() << "\n";
     out << "Value range: [" << number(series.valueRange[0]) << ", " << number(series.valueRange[1])
         << "] maps to density [0, 1]\n";

@@ -19,7 +19,9 @@ InputKind classifyInput(const std::filesystem::path& path) {
     while (stream.get(first) && std::isspace(static_cast<unsigned char>(first))) {
     }
     // Not JSON (which starts with an object or a comment): a data file, left to the opener.
-    if (!isManifestInput(path) && (!stream || (first != '{' && first != '/'))) return InputKind::Dataset;
+    // A ParaView .series file is JSON too: its name says what it is.
+    if (!isManifestInput(path) && (isNamedLikeSeriesFile(path) || !stream || (first != '{' && first != '/')))
+        return InputKind::Dataset;
     stream.clear();
     stream.seekg(0);
     std::stringstream text;

@@ -35,7 +35,11 @@ struct ReadOptions {
     std::optional<StepSelection> steps;            // --steps first:end:stride
     std::optional<std::array<double, 2>> valueRange;  // --range lo:hi; default: from the data
     std::optional<glm::ivec3> resampleTo;          // --resample NXxNYxNZ
-    std::optional<glm::ivec3> rawDims;             // Isabel raw files: dims (default 500x500x100)
+    std::optional<glm::ivec3> rawDims;             // Isabel raw files: dims (default 500x500x100); plain TIFF: one volume
+    std::optional<int> channel;                    // TIFF, OME-Zarr: which channel of a multi-channel image (--channel)
+    std::string seriesChoice;                      // DICOM: the series, by instance UID or number in `info` (--series)
+    std::string pageAxes;                          // plain TIFF: what the pages are, slowest first, e.g. TZYX (--axes)
+    std::optional<int> level;                      // OME-Zarr: the resolution level, 0 the finest (--level)
     std::optional<std::uint64_t> maxMemoryBytes;   // --max-memory
     MemoryFit fit = MemoryFit::Refuse;             // --fit
     DensityPrecision precision = DensityPrecision::Bits16;  // --precision

@@ -179,6 +179,9 @@ struct Series {
     DensityPrecision precision = DensityPrecision::Bits16;
     // The file format it was read from ("tstyles manifest", "NetCDF-4", "NRRD", ...).
     std::string sourceFormat = "tstyles manifest";
+    // How the reader read it, a line each, where the file left a choice ("ImageJ hyperstack: 5 frames
+    // x 12 slices x 2 channels, channel 0 taken", "series 2 of 3 (the largest)"). `info` prints them.
+    std::vector<std::string> readingNotes;
     // What world x, y and z mean, in that order, as far as the source says.
     std::array<SpatialAxis, 3> axes;
     // What TimeStep::time means: its unit and, where the file gives one, the date it counts from.

@@ -25,7 +25,11 @@ Series openRawSeries(const std::vector<std::filesystem::path>& inputs, const Rea
 // when it knows none.
 std::string seriesFormatName(const std::filesystem::path& input);
 
-// True for inputs that are our manifest form (a folder, or a .json file).
+// True for inputs that are our manifest form (a .json file, or a folder that no format reads as a
+// whole: OME-Zarr stores, DICOM folders and folders of TIFF files are not manifests).
 bool isManifestInput(const std::filesystem::path& input);
+
+// True for a file whose name ends like a format's files (".nc", ".pvd", ".series", ...).
+bool isNamedLikeSeriesFile(const std::filesystem::path& input);
 
 }  // namespace tstyles

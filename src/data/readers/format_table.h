@@ -19,6 +19,9 @@ struct SeriesFormat {
     std::function<bool(const std::filesystem::path&)> sniff;    // recognises the content; may be empty
     // Opens one file, or several that form one series.
     std::function<SourceSeries(const std::vector<std::filesystem::path>&, const ReadOptions&)> open;
+    // Recognises a folder the format reads as one series (an OME-Zarr store, a DICOM folder, a folder
+    // of TIFF files); empty for formats read from files only. A folder no format claims is a manifest's.
+    std::function<bool(const std::filesystem::path&)> claimsFolder;
 };
 
 inline constexpr const char* kPlot3DFormatName = "Plot3D";

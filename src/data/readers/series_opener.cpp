@@ -37,11 +37,23 @@ const SeriesFormat* formatByExtension(const std::filesystem::path& input) {
     return nullptr;
 }
 
+// The format that reads this folder as a whole, or null (a manifest's folder, or none).
+const SeriesFormat* formatClaimingFolder(const std::filesystem::path& folder) {
+    for (const SeriesFormat& format : seriesFormats())
+        if (format.claimsFolder && format.claimsFolder(folder)) return &format;
+    return nullptr;
+}
+
 // Solution files say the input is a Plot3D grid, whatever its name (unless it is named like
-// another format); otherwise the extension decides, then the content.
+// another format); otherwise the extension decides, then the content. A folder is a format's when
+// the format claims it.
 const SeriesFormat& formatOf(const std::filesystem::path& input, const ReadOptions& options) {
     std::error_code error;
     if (!std::filesystem::exists(input, error)) throwInputError(input, "", "no such file or folder");
+    if (std::filesystem::is_directory(input, error)) {
+        if (const SeriesFormat* format = formatClaimingFolder(input)) return *format;
+        throwInputError(input, "", "is a folder that holds no series.json and no series of a format this program reads");
+    }
     // Sniffing reads the first bytes: a FIFO or device would block or never end.
     requireRegularFile(input, "data file");
     const SeriesFormat* byExtension = formatByExtension(input);
@@ -73,6 +85,10 @@ void rejectReadingOptions(const std::filesystem::path& manifest, const ReadOptio
     reject(options.valueRange.has_value(), "--range");
     reject(options.resampleTo.has_value(), "--resample");
     reject(options.rawDims.has_value(), "--dims");
+    reject(options.channel.has_value(), "--channel");
+    reject(!options.seriesChoice.empty(), "--series");
+    reject(!options.pageAxes.empty(), "--axes");
+    reject(options.level.has_value(), "--level");
     reject(options.fit != MemoryFit::Refuse, "--fit");
     reject(!options.solutionFiles.empty(), "--solution");
     reject(options.block != 0, "--block");
@@ -86,6 +102,10 @@ std::vector<std::string> formatOnlyOptionsGiven(const ReadOptions& options) {
     if (!options.timeDimension.empty()) given.push_back("--time-dim");
     if (options.indexAxes) given.push_back("--index-axes");
     if (options.rawDims) given.push_back("--dims");
+    if (options.channel) given.push_back("--channel");
+    if (!options.seriesChoice.empty()) given.push_back("--series");
+    if (!options.pageAxes.empty()) given.push_back("--axes");
+    if (options.level) given.push_back("--level");
     if (!options.solutionFiles.empty()) given.push_back("--solution");
     if (options.block != 0) given.push_back("--block");
     if (options.gamma != ReadOptions{}.gamma) given.push_back("--gamma");
@@ -118,8 +138,11 @@ SourceSeries openSource(const std::vector<std::filesystem::path>& inputs, const 
 
 bool isManifestInput(const std::filesystem::path& input) {
     std::error_code error;
-    return std::filesystem::is_directory(input, error) || endsWith(lowercaseName(input), ".json");
+    if (std::filesystem::is_directory(input, error)) return formatClaimingFolder(input) == nullptr;
+    return endsWith(lowercaseName(input), ".json");
 }
+
+bool isNamedLikeSeriesFile(const std::filesystem::path& input) { return formatByExtension(input) != nullptr; }
 
 std::string seriesFormatName(const std::filesystem::path& input) {
     return isManifestInput(input) ? "tstyles manifest" : formatOf(input, {}).name;
@@ -134,6 +157,7 @@ Series openRawSeries(const std::vector<std::filesystem::path>& inputs, const Rea
     Series series = assembleRawSeries(source, options);
     series.precision = options.precision;
     series.sourceFormat = source.format;
+    series.readingNotes.insert(series.readingNotes.end(), source.notes.begin(), source.notes.end());
     return series;
 }
 

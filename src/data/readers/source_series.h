@@ -31,6 +31,7 @@ struct SourceSeries {
     std::array<SpatialAxis, 3> axes;
     TimeAxis time;  // Series::time
     std::string valueUnit;  // Series::valueUnit
+    std::vector<std::string> notes;  // Series::readingNotes: how it was read, where the file left a choice
     // The raw values of a time-step, x fastest, after the file's scale and offset; declared missing
     // values are missingDensity() (NaN). Undeclared NaN or Inf is an InputError naming the file.
     std::function<std::vector<float>(std::size_t step)> readStep;
