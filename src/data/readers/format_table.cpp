@@ -8,6 +8,7 @@
 #include "netcdf_reader.h"
 #include "nifti_reader.h"
 #include "nrrd_reader.h"
+#include "ome_zarr_reader.h"
 #include "plot3d_source.h"
 #include "stacked_files.h"
 #include "tstyles/core/errors.h"
@@ -40,6 +41,15 @@ const std::vector<SeriesFormat>& seriesFormats() {
          [](const std::vector<std::filesystem::path>& files, const ReadOptions& options) {
              return openIsabel(files, options.rawDims);
          }},
+        // A store is a folder; its zarr.json or .zattrs names it too.
+        {"OME-Zarr", {"zarr.json", ".zattrs"}, "a .zarr store folder, or its zarr.json or .zattrs", {"--channel", "--level"},
+         {},
+         [](const std::vector<std::filesystem::path>& files, const ReadOptions& options) {
+             if (files.size() > 1)
+                 throwInputError(files[1], "", "an OME-Zarr store holds its whole series: give the store alone");
+             return openOmeZarr(files.front(), options);
+         },
+         isOmeZarrFolder},
         // Last: its content sniff reads the whole file to find a layout that fits.
         {kPlot3DFormatName, {".xyz", ".x", ".g", ".grd"}, ".xyz .x .g .grd, with --solution",
          {"--var", "--solution", "--block", "--gamma"}, looksLikePlot3DGrid,

@@ -139,7 +139,8 @@ SourceSeries openSource(const std::vector<std::filesystem::path>& inputs, const 
 bool isManifestInput(const std::filesystem::path& input) {
     std::error_code error;
     if (std::filesystem::is_directory(input, error)) return formatClaimingFolder(input) == nullptr;
-    return endsWith(lowercaseName(input), ".json");
+    // A Zarr v3 store's metadata file is JSON but names the store, not a manifest.
+    return endsWith(lowercaseName(input), ".json") && lowercaseName(input) != "zarr.json";
 }
 
 bool isNamedLikeSeriesFile(const std::filesystem::path& input) { return formatByExtension(input) != nullptr; }

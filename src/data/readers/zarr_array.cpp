@@ -1,0 +1,214 @@
+// Zarr v2 `.zarray` and v3 `zarr.json` array metadata to one ZarrArray; the v3 codec pipeline
+// (transpose, bytes or sharding_indexed, compressors, crc32c) in zarr_codec_pipeline.cpp.
+#include "zarr_array.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <set>
+
+#include "tstyles/core/errors.h"
+#include "tstyles/core/input_limits.h"
+#include "zarr_codec_pipeline.h"
+#include "zarr_json.h"
+
+namespace tstyles {
+namespace {
+
+const char* const kReadableTypes = "bool, int8, uint8, int16, uint16, int32, float32 and float64";
+
+// numpy's spelling in v2 ("<u2", ">f4", "|u1", "|b1"): byte order, kind, size.
+void readV2DataType(const nlohmann::json& value, const std::filesystem::path& file, ZarrArray& array) {
+    if (!value.is_string())
+        throwInputError(file, "dtype", "must be a string such as \"<u2\"; structured types (" + value.dump() +
+                                           ") are not supported");
+    const std::string text = value.get<std::string>();
+    array.dataTypeText = text;
+    struct Known { const char* body; ValueType type; };
+    static constexpr Known kKnown[] = {{"b1", ValueType::UInt8}, {"u1", ValueType::UInt8},  {"i1", ValueType::Int8},
+                                       {"u2", ValueType::UInt16}, {"i2", ValueType::Int16}, {"i4", ValueType::Int32},
+                                       {"f4", ValueType::Float32}, {"f8", ValueType::Float64}};
+    if (text.size() >= 2 && (text[0] == '<' || text[0] == '>' || text[0] == '|'))
+        for (const Known& known : kKnown)
+            if (text.substr(1) == known.body) {
+                array.type = known.type;
+                array.byteOrder = text[0] == '>' ? ByteOrder::Big : ByteOrder::Little;
+                return;
+            }
+    throwInputError(file, "dtype", "\"" + text + "\" is not a data type this reader stores (readable: " +
+                                       std::string(kReadableTypes) + ", as \"<u2\", \">f4\", \"|u1\")");
+}
+
+ValueType v3DataType(const std::string& name, const std::filesystem::path& file) {
+    struct Known { const char* name; ValueType type; };
+    static constexpr Known kKnown[] = {{"bool", ValueType::UInt8},     {"uint8", ValueType::UInt8},
+                                       {"int8", ValueType::Int8},     {"uint16", ValueType::UInt16},
+                                       {"int16", ValueType::Int16},   {"int32", ValueType::Int32},
+                                       {"float32", ValueType::Float32}, {"float64", ValueType::Float64}};
+    for (const Known& known : kKnown)
+        if (name == known.name) return known.type;
+    throwInputError(file, "data_type", "\"" + name + "\" is not a data type this reader stores (readable: " +
+                                           std::string(kReadableTypes) + ")");
+}
+
+// Numbers, "NaN", "Infinity", "-Infinity", booleans; v3 also a float's bits in hex ("0x7fc00000");
+// null (v2: no fill value) reads as 0.
+double readFillValue(const nlohmann::json& value, const ZarrArray& array, const std::filesystem::path& file) {
+    const bool isFloat = array.type == ValueType::Float32 || array.type == ValueType::Float64;
+    if (value.is_null()) return 0.0;
+    if (value.is_boolean()) return value.get<bool>() ? 1.0 : 0.0;
+    if (value.is_number()) return value.get<double>();
+    if (value.is_string() && isFloat) {
+        const std::string text = value.get<std::string>();
+        if (text == "NaN") return std::numeric_limits<double>::quiet_NaN();
+        if (text == "Infinity") return std::numeric_limits<double>::infinity();
+        if (text == "-Infinity") return -std::numeric_limits<double>::infinity();
+        if (text.size() == 10 && text.rfind("0x", 0) == 0 && array.type == ValueType::Float32) {
+            std::uint32_t bits = 0;
+            const auto [end, problem] = std::from_chars(text.data() + 2, text.data() + text.size(), bits, 16);
+            if (problem == std::errc() && end == text.data() + text.size()) {
+                float number;
+                std::memcpy(&number, &bits, sizeof number);
+                return number;
+            }
+        }
+    }
+    throwInputError(file, "fill_value", value.dump() + " is not a fill value of a " + array.dataTypeText + " array");
+}
+
+void requireKnownKeys(const nlohmann::json& json, const std::set<std::string>& known, const std::filesystem::path& file) {
+    for (const auto& [key, value] : json.items()) {
+        if (known.count(key)) continue;
+        // v3 lets extensions add keys that a reader may ignore when they say so.
+        if (value.is_object() && value.value("must_understand", true) == false) continue;
+        throwInputError(file, key, "is not a key of Zarr array metadata");
+    }
+}
+
+void readV2Compressor(const nlohmann::json& value, const std::filesystem::path& file, ZarrArray& array) {
+    if (value.is_null()) return;
+    const std::string id = requireString(requireMember(value, "id", file, "compressor"), file, "compressor.id");
+    static const std::pair<const char*, ZarrByteCodec> kKnown[] = {{"blosc", ZarrByteCodec::Blosc},
+                                                                   {"zlib", ZarrByteCodec::Zlib},
+                                                                   {"gzip", ZarrByteCodec::Gzip},
+                                                                   {"zstd", ZarrByteCodec::Zstd},
+                                                                   {"lz4", ZarrByteCodec::Lz4}};
+    for (const auto& [name, codec] : kKnown)
+        if (id == name) {
+            array.codecs.push_back(codec);
+            return;
+        }
+    throwInputError(file, "compressor.id", "\"" + id + "\" is not a compressor this reader knows (blosc, zlib, gzip, zstd, lz4)");
+}
+
+void readV2(const nlohmann::json& json, const std::filesystem::path& file, ZarrArray& array) {
+    requireKnownKeys(json, {"zarr_format", "shape", "chunks", "dtype", "compressor", "fill_value", "order", "filters",
+                            "dimension_separator"},
+                     file);
+    const auto& format = requireMember(json, "zarr_format", file, "");
+    if (format != 2) throwInputError(file, "zarr_format", "is " + format.dump() + ", a .zarray file is Zarr format 2");
+    array.shape = requireCounts(requireMember(json, "shape", file, ""), 0, file, "shape");
+    array.chunkShape = requireCounts(requireMember(json, "chunks", file, ""), 1, file, "chunks");
+    readV2DataType(requireMember(json, "dtype", file, ""), file, array);
+    readV2Compressor(requireMember(json, "compressor", file, ""), file, array);
+    array.fillValue = readFillValue(requireMember(json, "fill_value", file, ""), array, file);
+    const std::string order = requireString(requireMember(json, "order", file, ""), file, "order");
+    if (order != "C" && order != "F") throwInputError(file, "order", "is \"" + order + "\", not \"C\" or \"F\"");
+    array.fortranOrder = order == "F";
+    const auto filters = json.find("filters");
+    if (filters != json.end() && !filters->is_null() && !(filters->is_array() && filters->empty()))
+        throwInputError(file, "filters", filters->dump() + ": filters (delta, shuffle, ...) are not supported; "
+                                         "rewrite the array without them");
+    const std::string separator = json.contains("dimension_separator")
+                                      ? requireString(json["dimension_separator"], file, "dimension_separator")
+                                      : ".";
+    if (separator != "." && separator != "/")
+        throwInputError(file, "dimension_separator", "is \"" + separator + "\", not \".\" or \"/\"");
+    array.keySeparator = separator[0];
+}
+
+void readV3ChunkKeys(const nlohmann::json& json, const std::filesystem::path& file, ZarrArray& array) {
+    const auto& encoding = requireMember(json, "chunk_key_encoding", file, "");
+    const std::string name = requireString(requireMember(encoding, "name", file, "chunk_key_encoding"), file,
+                                           "chunk_key_encoding.name");
+    if (name != "default" && name != "v2")
+        throwInputError(file, "chunk_key_encoding.name", "is \"" + name + "\", not \"default\" or \"v2\"");
+    array.v2ChunkKeys = name == "v2";
+    std::string separator = array.v2ChunkKeys ? "." : "/";
+    if (encoding.contains("configuration") && encoding["configuration"].contains("separator"))
+        separator = requireString(encoding["configuration"]["separator"], file, "chunk_key_encoding.configuration.separator");
+    if (separator != "." && separator != "/")
+        throwInputError(file, "chunk_key_encoding.configuration.separator", "is \"" + separator + "\", not \".\" or \"/\"");
+    array.keySeparator = separator[0];
+}
+
+void readV3(const nlohmann::json& json, const std::filesystem::path& file, ZarrArray& array) {
+    requireKnownKeys(json, {"zarr_format", "node_type", "shape", "data_type", "chunk_grid", "chunk_key_encoding",
+                            "fill_value", "codecs", "attributes", "dimension_names", "storage_transformers"},
+                     file);
+    const auto& format = requireMember(json, "zarr_format", file, "");
+    if (format != 3) throwInputError(file, "zarr_format", "is " + format.dump() + ", a zarr.json file is Zarr format 3");
+    const std::string node = requireString(requireMember(json, "node_type", file, ""), file, "node_type");
+    if (node != "array") throwInputError(file, "node_type", "is \"" + node + "\" where an array was expected");
+    if (json.contains("storage_transformers") && !json["storage_transformers"].empty())
+        throwInputError(file, "storage_transformers", "are not supported");
+    array.shape = requireCounts(requireMember(json, "shape", file, ""), 0, file, "shape");
+    array.dataTypeText = requireString(requireMember(json, "data_type", file, ""), file, "data_type");
+    array.type = v3DataType(array.dataTypeText, file);
+    const auto& grid = requireMember(json, "chunk_grid", file, "");
+    if (requireString(requireMember(grid, "name", file, "chunk_grid"), file, "chunk_grid.name") != "regular")
+        throwInputError(file, "chunk_grid.name", "only a \"regular\" chunk grid is supported");
+    const auto& gridConfiguration = requireMember(grid, "configuration", file, "chunk_grid");
+    array.chunkShape = requireCounts(requireMember(gridConfiguration, "chunk_shape", file, "chunk_grid.configuration"), 1,
+                                     file, "chunk_grid.configuration.chunk_shape");
+    readV3ChunkKeys(json, file, array);
+    array.fillValue = readFillValue(requireMember(json, "fill_value", file, ""), array, file);
+    readCodecPipeline(requireMember(json, "codecs", file, ""), file, array);
+}
+
+// Chunks of a size that cannot be read into memory are refused here, before any chunk is read.
+void checkChunking(const std::filesystem::path& file, const ZarrArray& array, std::uint64_t memoryCap) {
+    const char* field = array.zarrFormat == 2 ? "chunks" : "chunk_grid.configuration.chunk_shape";
+    if (array.shape.size() != array.chunkShape.size())
+        throwInputError(file, field, "has " + std::to_string(array.chunkShape.size()) + " dimensions, the shape " +
+                                         std::to_string(array.shape.size()));
+    if (array.sharding && array.sharding->shardShape.size() != array.shape.size())
+        throwInputError(file, "codecs", "the shards' chunk_shape has " + std::to_string(array.chunkShape.size()) +
+                                            " dimensions, the shape " + std::to_string(array.shape.size()));
+    double bytes = double(bytesPerValue(array.type));
+    for (std::uint64_t size : array.chunkShape) bytes *= double(size);
+    const std::uint64_t cap = std::min<std::uint64_t>(memoryCap, std::uint64_t(1) << 31);
+    requireMemory(file, field, bytes, cap, "one chunk");
+}
+
+}  // namespace
+
+std::size_t ZarrArray::chunkValues() const {
+    std::size_t values = 1;
+    for (std::uint64_t size : chunkShape) values *= std::size_t(size);
+    return values;
+}
+
+ZarrArray readZarrArray(const std::filesystem::path& folder, int zarrFormat, std::uint64_t memoryCap) {
+    ZarrArray array;
+    array.folder = folder;
+    array.zarrFormat = zarrFormat;
+    array.metadataFile = folder / (zarrFormat == 2 ? ".zarray" : "zarr.json");
+    std::error_code error;
+    if (!std::filesystem::exists(array.metadataFile, error))
+        throwInputError(array.metadataFile, "", "is missing: the multiscales name this level, but it holds no Zarr array");
+    const nlohmann::json json = readZarrJson(array.metadataFile);
+    try {
+        if (zarrFormat == 2)
+            readV2(json, array.metadataFile, array);
+        else
+            readV3(json, array.metadataFile, array);
+    } catch (const nlohmann::json::exception& problem) {
+        throwInputError(array.metadataFile, "", std::string("holds a value of the wrong kind: ") + problem.what());
+    }
+    checkChunking(array.metadataFile, array, memoryCap);
+    return array;
+}
+
+}  // namespace tstyles
