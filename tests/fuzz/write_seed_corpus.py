@@ -92,9 +92,66 @@ def png_seed(data):
                     str(CORPUS / "style_image" / "seed-grey.png")], check=True)
 
 
+def zarr_seed(version, attributes, metadata, chunk):
+    """fuzz_zarr's input: '2' or '3', then the group attributes, the level-0 array metadata and one chunk."""
+    return version.encode() + json.dumps(attributes).encode() + b"\0" + json.dumps(metadata).encode() + b"\0" + chunk
+
+
+def zarr_seeds():
+    import numcodecs
+    import numpy as np
+
+    space = [{"name": n, "type": "space", "unit": "micrometer"} for n in "zyx"]
+    timed = [{"name": "t", "type": "time", "unit": "second"}, {"name": "c", "type": "channel"}] + space
+    scale = [{"type": "scale", "scale": [2.0, 0.5, 0.5]}, {"type": "translation", "translation": [1.0, 0.0, 0.0]}]
+    zyx = {"multiscales": [{"version": "0.4", "axes": space, "datasets": [{"path": "0", "coordinateTransformations": scale}]}]}
+    tczyx = {"multiscales": [{"version": "0.4", "axes": timed, "datasets": [
+        {"path": "0", "coordinateTransformations": [{"type": "scale", "scale": [5.0, 1.0, 2.0, 0.5, 0.5]}]}]}]}
+    values = (np.arange(2 * 3 * 4 * 4) % 251).astype("<u2")
+
+    def zarray(shape, dtype, compressor, order="C", fill=0):
+        return {"zarr_format": 2, "shape": shape, "chunks": shape, "dtype": dtype, "compressor": compressor,
+                "fill_value": fill, "order": order, "filters": None, "dimension_separator": "."}
+
+    put("zarr", "v2-zlib-tczyx", zarr_seed("2", tczyx, zarray([2, 1, 3, 4, 4], "<u2", {"id": "zlib", "level": 5}),
+                                           numcodecs.Zlib(5).encode(values.tobytes())))
+    put("zarr", "v2-blosc-big-endian", zarr_seed("2", zyx, zarray([3, 4, 4], ">u2", {"id": "blosc", "cname": "lz4"}),
+                                                 numcodecs.Blosc("lz4").encode(values[:48].astype(">u2").tobytes())))
+    put("zarr", "v2-lz4-fortran", zarr_seed("2", zyx, zarray([3, 4, 4], "|u1", {"id": "lz4"}, order="F"),
+                                            numcodecs.LZ4().encode(values[:48].astype("u1").tobytes())))
+    put("zarr", "v2-zstd-float-nan", zarr_seed("2", zyx, zarray([3, 4, 4], "<f4", {"id": "zstd"}, fill="NaN"),
+                                               numcodecs.Zstd().encode(values[:48].astype("<f4").tobytes())))
+    put("zarr", "v2-raw", zarr_seed("2", zyx, zarray([3, 4, 4], "<i2", None), values[:48].astype("<i2").tobytes()))
+    group = {"zarr_format": 3, "node_type": "group",
+             "attributes": {"ome": {"version": "0.5", "multiscales": [
+                 {"axes": space, "datasets": [{"path": "0", "coordinateTransformations": scale}]}]}}}
+    raw = values[:48].tobytes()
+    gzipped = gzip.compress(raw, mtime=0)
+    array = {"zarr_format": 3, "node_type": "array", "shape": [3, 4, 4], "data_type": "uint16",
+             "chunk_grid": {"name": "regular", "configuration": {"chunk_shape": [3, 4, 4]}},
+             "chunk_key_encoding": {"name": "default"}, "fill_value": 0,
+             "codecs": [{"name": "bytes", "configuration": {"endian": "little"}}, {"name": "gzip"}, {"name": "crc32c"}]}
+    checksum = struct.pack("<I", crc32c(gzipped))
+    put("zarr", "v3-gzip-crc32c", zarr_seed("3", group, array, gzipped + checksum))
+    sharded = dict(array, codecs=[{"name": "sharding_indexed", "configuration": {
+        "chunk_shape": [3, 4, 4], "codecs": [{"name": "bytes", "configuration": {"endian": "little"}}, {"name": "gzip"}],
+        "index_codecs": [{"name": "bytes", "configuration": {"endian": "little"}}, {"name": "crc32c"}]}}])
+    index = struct.pack("<QQ", 0, len(gzipped))
+    put("zarr", "v3-sharded", zarr_seed("3", group, sharded, gzipped + index + struct.pack("<I", crc32c(index))))
+
+
+def crc32c(data):
+    crc = 0xFFFFFFFF
+    for byte in data:
+        crc ^= byte
+        for _ in range(8):
+            crc = (crc >> 1) ^ (0x82F63B78 if crc & 1 else 0)
+    return crc ^ 0xFFFFFFFF
+
+
 def main():
     samples, data = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
-    for target in ["manifest", "scene", "nrrd", "netcdf", "netcdf_header", "nifti", "isabel", "plot3d", "style_image"]:
+    for target in ["manifest", "scene", "nrrd", "netcdf", "netcdf_header", "nifti", "isabel", "plot3d", "style_image", "zarr"]:
         for seed in (CORPUS / target).glob("seed-*"):
             seed.unlink()
     manifest_seeds()
@@ -114,6 +171,7 @@ def main():
     plot3d_seeds()
     png_seed(data)
     put("style_image", "huge-header.png", (samples / "huge.png").read_bytes())
+    zarr_seeds()
 
 
 if __name__ == "__main__":

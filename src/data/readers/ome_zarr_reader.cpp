@@ -27,6 +27,12 @@ struct OmeLayout {
     std::optional<std::size_t> channel;
 };
 
+std::string numberText(double value) {
+    std::ostringstream text;
+    text << value;
+    return text.str();
+}
+
 std::string axisNames(const OmeMultiscales& image) {
     std::string names;
     for (const OmeAxis& axis : image.axes) names += (names.empty() ? "" : ", ") + axis.name;
@@ -257,7 +263,7 @@ SourceSeries openOmeZarr(const std::filesystem::path& input, const ReadOptions& 
         if (!(spacing[int(axis)] > 0.0))
             throwInputError(image.attributesFile, "multiscales[0].datasets[" + std::to_string(level) + "].coordinateTransformations",
                             "the scale of axis \"" + image.axes[dimension].name + "\" is " +
-                                std::to_string(spacing[int(axis)]) + ": a spacing must be positive");
+                                numberText(spacing[int(axis)]) + ": a spacing must be positive");
         source.axes[axis] = {kWorldNames[axis], omeLengthUnit(image.axes[dimension].unit), AxisDirection::Unknown};
     }
     // Image viewers (napari, Fiji) draw row 0 at the top: turning the volume 180 degrees about x
@@ -272,7 +278,7 @@ SourceSeries openOmeZarr(const std::filesystem::path& input, const ReadOptions& 
     if (stepCount == 0) throwInputError(array.metadataFile, "shape", "the time axis holds no time-step");
     if (stepCount > 1 && !(transform.scale[*layout.time] > 0.0))
         throwInputError(image.attributesFile, "multiscales[0].datasets[" + std::to_string(level) + "].coordinateTransformations",
-                        "the scale of the time axis is " + std::to_string(transform.scale[*layout.time]) +
+                        "the scale of the time axis is " + numberText(transform.scale[*layout.time]) +
                             ": time-steps must follow one another");
     if (layout.time) source.time = omeTimeAxis(image.axes[*layout.time].unit, timeFactor, source.notes);
     const glm::ivec3 dims(int(array.shape[layout.space[0]]), int(array.shape[layout.space[1]]), int(array.shape[layout.space[2]]));

@@ -147,7 +147,7 @@ std::vector<std::uint8_t> decodeChunkBytes(std::vector<std::uint8_t> stored, con
         }
     }
     if (stored.size() != expected)
-        throwInputError(chunkFile, "", "the chunk holds " + sizeText(stored.size(), expected) +
+        throwInputError(chunkFile, "", "decodes to " + sizeText(stored.size(), expected) +
                                            (stored.size() < expected ? " (cut short)" : ""));
     return stored;
 }
