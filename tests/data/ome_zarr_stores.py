@@ -201,6 +201,57 @@ def write_v3(folder, compression, shard=None):
     return values
 
 
+# --- A realistic time-lapse, for trying the reader as a user (docs/readers/ome-zarr.md) -------------
+
+def write_timelapse(folder):
+    """Cells drifting and growing over 8 time points (2 min apart): nuclei (channel 0) and membranes
+    (channel 1), 8 x 2 x 32 x 96 x 128 uint16, 0.4 um pixels and 1 um planes, camera noise, Blosc-zstd
+    chunks of one plane stack, two levels. The cells sit in the top half of the image (small y), the
+    largest at the left: a picture shows at once whether it is upside down or mirrored."""
+    import numcodecs
+    import zarr
+
+    if os.path.exists(folder):
+        shutil.rmtree(folder)
+    os.makedirs(folder)
+    shape = (8, 2, 32, 96, 128)
+    rng = np.random.default_rng(7)
+    z, y, x = np.indices(shape[2:]).astype(np.float32)
+    # (x, y, z) centre at t = 0 in pixels, drift per time point, radius at t = 0 in pixels, growth.
+    cells = [((28, 24, 16), (3.0, 0.5), 14, 0.8), ((70, 30, 14), (2.0, -0.5), 10, 0.6),
+             ((100, 22, 18), (1.5, 1.0), 7, 0.5)]
+    values = np.empty(shape, dtype="<u2")
+    for t in range(shape[0]):
+        nuclei = np.zeros(shape[2:], np.float32)
+        membranes = np.zeros(shape[2:], np.float32)
+        for (cx, cy, cz), (vx, vy), radius, growth in cells:
+            r = radius + growth * t
+            # Planes are 2.5 times as far apart as pixels: the cell is round in micrometres.
+            d = np.sqrt((x - cx - vx * t) ** 2 + (y - cy - vy * t) ** 2 + ((z - cz) * 2.5) ** 2) / r
+            nuclei += 3000 * np.exp(-(d / 0.45) ** 2)
+            membranes += 2000 * np.exp(-((d - 1.0) / 0.08) ** 2)
+        for c, signal in enumerate((nuclei, membranes)):
+            values[t, c] = np.clip(100 + signal + rng.normal(0, 20, shape[2:]), 0, 65535).astype("<u2")
+    pyramid = (values, np.ascontiguousarray(values[..., ::2, ::2]))
+    datasets = []
+    for level, data in enumerate(pyramid):
+        array = zarr.open_array(os.path.join(folder, str(level)), mode="w", shape=data.shape,
+                                chunks=(1, 1, 32, 64, 64), dtype="<u2", fill_value=0,
+                                compressor=numcodecs.Blosc(cname="zstd", clevel=5, shuffle=numcodecs.Blosc.BITSHUFFLE),
+                                dimension_separator="/")
+        array[...] = data
+        step = 0.4 * 2**level
+        datasets.append({"path": str(level), "coordinateTransformations": [
+            {"type": "scale", "scale": [120.0, 1.0, 1.0, step, step]}]})
+    axes = [{"name": "t", "type": "time", "unit": "second"}, {"name": "c", "type": "channel"}]
+    axes += [{"name": n, "type": "space", "unit": "micrometer"} for n in "zyx"]
+    with open(os.path.join(folder, ".zgroup"), "w") as out:
+        json.dump({"zarr_format": 2}, out)
+    with open(os.path.join(folder, ".zattrs"), "w") as out:
+        json.dump({"multiscales": [{"version": "0.4", "name": "drifting cells", "axes": axes, "datasets": datasets}],
+                   "omero": {"channels": [{"label": "H2B-GFP"}, {"label": "membrane-mCherry"}]}}, out, indent=1)
+
+
 # Shards of 2 x 2 inner chunks along y and x: the empty block is a missing inner chunk.
 SHARD = (1, 1, 3, 8, 8)
 
@@ -214,6 +265,7 @@ STORES = {
     "v3_gzip": lambda folder: write_v3(folder, "gzip"),
     "v3_blosc": lambda folder: write_v3(folder, "blosc"),
     "v3_sharded": lambda folder: write_v3(folder, "gzip", shard=SHARD),
+    "timelapse": write_timelapse,
 }
 
 if __name__ == "__main__":

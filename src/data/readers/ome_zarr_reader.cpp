@@ -254,7 +254,7 @@ SourceSeries openOmeZarr(const std::filesystem::path& input, const ReadOptions& 
     for (ZarrByteCodec codec : array.codecs) codecs += " " + toString(codec);
     source.notes.push_back("array " + image.levels[level].path + ": " + array.dataTypeText +
                            (codecs.empty() ? ", uncompressed" : ", codecs" + codecs) + (array.sharding ? ", sharded" : ""));
-    glm::dvec3 spacing, origin;
+    glm::dvec3 spacing(1.0), origin(0.0);
     static constexpr const char* kWorldNames[] = {"x", "y", "z"};
     for (std::size_t axis = 0; axis < 3; ++axis) {
         const std::size_t dimension = layout.space[axis];
