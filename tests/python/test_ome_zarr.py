@@ -36,7 +36,7 @@ def store_folder(tmp_path_factory):
     return write
 
 
-@pytest.mark.parametrize("kind", sorted(stores.STORES))
+@pytest.mark.parametrize("kind", sorted(stores.KNOWN_STORES))
 def test_values_axes_and_times_come_back(store_folder, kind):
     path, written = store_folder(kind)
     series = tstyles.open(path, value_range=(0, RANGE), precision=32)
