@@ -18,7 +18,10 @@
 namespace tstyles {
 namespace {
 
-constexpr double kMostChunksPerVolume = double(1 << 20);
+// Each chunk read costs a file look-up: a series cut into millions of tiny chunks would take
+// minutes of them. Any number of chunks of 64 values or more is read; smaller ones up to 2^16.
+constexpr double kFewestValuesPerChunk = 64.0;
+constexpr double kTinyChunksRead = double(1 << 16);
 
 // Which array dimension is which: x, y, z, and the time and channel axes where the image has them.
 struct OmeLayout {
@@ -126,13 +129,6 @@ ZarrArray openLevel(const OmeMultiscales& image, std::size_t level, const OmeLay
             throwInputError(array.metadataFile, "shape",
                             "space axis \"" + image.axes[axis].name + "\" has " + std::to_string(array.shape[axis]) +
                                 " samples, more than a volume can hold");
-    // Each chunk costs a file look-up: a volume cut into millions of them would take minutes to read.
-    double chunks = 1.0;
-    for (std::size_t axis : layout.space) chunks *= std::ceil(double(array.shape[axis]) / double(array.chunkShape[axis]));
-    if (chunks > kMostChunksPerVolume)
-        throwInputError(array.metadataFile, array.zarrFormat == 2 ? "chunks" : "chunk_grid",
-                        "cut one volume into " + std::to_string(std::uint64_t(chunks)) + " chunks, more than the " +
-                            std::to_string(std::uint64_t(kMostChunksPerVolume)) + " this reader reads; rechunk the store");
     for (std::size_t axis : layout.space)
         if (array.shape[axis] < 2)
             throwInputError(array.metadataFile, "shape",
@@ -195,6 +191,18 @@ std::size_t chooseChannel(const OmeMultiscales& image, const OmeLayout& layout, 
                         (options.channel ? " (--channel)" : " (--channel picks another)"));
     }
     return std::size_t(asked);
+}
+
+void requireChunksWorthReading(const ZarrArray& array, const OmeLayout& layout, const ReadOptions& options,
+                               std::size_t stepCount) {
+    double chunks = double(selectedSteps(options.steps, stepCount).size());
+    for (std::size_t axis : layout.space) chunks *= std::ceil(double(array.shape[axis]) / double(array.chunkShape[axis]));
+    const double values = double(selectedSteps(options.steps, stepCount).size()) * double(stepVoxels(array, layout));
+    if (chunks > kTinyChunksRead && chunks * kFewestValuesPerChunk > values)
+        throwInputError(array.metadataFile, array.zarrFormat == 2 ? "chunks" : "chunk_grid",
+                        "reading the time-steps means looking for " + std::to_string(std::uint64_t(chunks)) +
+                            " chunks of fewer than " + numberText(kFewestValuesPerChunk) +
+                            " values each, too many file look-ups; rechunk the store");
 }
 
 // NaN is the missing value where the fill value is NaN; infinities are never values.
@@ -280,6 +288,7 @@ SourceSeries openOmeZarr(const std::filesystem::path& input, const ReadOptions& 
         throwInputError(image.attributesFile, "multiscales[0].datasets[" + std::to_string(level) + "].coordinateTransformations",
                         "the scale of the time axis is " + numberText(transform.scale[*layout.time]) +
                             ": time-steps must follow one another");
+    requireChunksWorthReading(array, layout, options, stepCount);
     if (layout.time) source.time = omeTimeAxis(image.axes[*layout.time].unit, timeFactor, source.notes);
     const glm::ivec3 dims(int(array.shape[layout.space[0]]), int(array.shape[layout.space[1]]), int(array.shape[layout.space[2]]));
     for (std::size_t index = 0; index < stepCount; ++index) {
