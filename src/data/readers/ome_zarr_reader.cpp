@@ -30,7 +30,7 @@ struct OmeLayout {
     std::optional<std::size_t> channel;
 };
 
-std::string numberText(double value) {
+std::string shortNumber(double value) {
     std::ostringstream text;
     text << value;
     return text.str();
@@ -201,7 +201,7 @@ void requireChunksWorthReading(const ZarrArray& array, const OmeLayout& layout, 
     if (chunks > kTinyChunksRead && chunks * kFewestValuesPerChunk > values)
         throwInputError(array.metadataFile, array.zarrFormat == 2 ? "chunks" : "chunk_grid",
                         "reading the time-steps means looking for " + std::to_string(std::uint64_t(chunks)) +
-                            " chunks of fewer than " + numberText(kFewestValuesPerChunk) +
+                            " chunks of fewer than " + shortNumber(kFewestValuesPerChunk) +
                             " values each, too many file look-ups; rechunk the store");
 }
 
@@ -220,6 +220,59 @@ std::filesystem::path storeOf(const std::filesystem::path& input) {
     if (std::filesystem::is_directory(input, error)) return input;
     const std::filesystem::path parent = input.parent_path();
     return parent.empty() ? std::filesystem::path(".") : parent;
+}
+
+// The spacing, placement and meaning of x, y and z from the level's transforms.
+struct OmeFrame {
+    glm::dvec3 spacing{1.0};
+    Placement placement;
+    std::array<SpatialAxis, 3> axes;
+};
+
+OmeFrame frameOf(const OmeMultiscales& image, const OmeLayout& layout, std::size_t level) {
+    const OmeLevel& transform = image.levels[level];
+    OmeFrame frame;
+    glm::dvec3 origin(0.0);
+    static constexpr const char* kWorldNames[] = {"x", "y", "z"};
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+        const std::size_t dimension = layout.space[axis];
+        frame.spacing[int(axis)] = transform.scale[dimension];
+        origin[int(axis)] = transform.translation[dimension];
+        if (!(frame.spacing[int(axis)] > 0.0))
+            throwInputError(image.attributesFile, "multiscales[0].datasets[" + std::to_string(level) + "].coordinateTransformations",
+                            "the scale of axis \"" + image.axes[dimension].name + "\" is " +
+                                shortNumber(frame.spacing[int(axis)]) + ": a spacing must be positive");
+        frame.axes[axis] = {kWorldNames[axis], omeLengthUnit(image.axes[dimension].unit), AxisDirection::Unknown};
+    }
+    // Image viewers (napari, Fiji) draw row 0 at the top: turning the volume 180 degrees about x
+    // makes y point down the screen and z away from the viewer without mirroring it.
+    frame.placement.rotation = glm::angleAxis(std::numbers::pi, glm::dvec3(1.0, 0.0, 0.0));
+    frame.placement.origin = frame.placement.rotation * origin;
+    return frame;
+}
+
+// The time stamps: translation + index * scale of the t axis, in a unit TimeAxis knows.
+std::vector<double> stepTimes(const OmeMultiscales& image, const OmeLayout& layout, std::size_t level, std::size_t stepCount,
+                              SourceSeries& source) {
+    if (!layout.time) return {0.0};
+    const OmeLevel& transform = image.levels[level];
+    const double scale = transform.scale[*layout.time];
+    if (stepCount > 1 && !(scale > 0.0))
+        throwInputError(image.attributesFile, "multiscales[0].datasets[" + std::to_string(level) + "].coordinateTransformations",
+                        "the scale of the time axis is " + shortNumber(scale) + ": time-steps must follow one another");
+    double factor = 1.0;
+    source.time = omeTimeAxis(image.axes[*layout.time].unit, factor, source.notes);
+    std::vector<double> times;
+    for (std::size_t index = 0; index < stepCount; ++index)
+        times.push_back((transform.translation[*layout.time] + double(index) * scale) * factor);
+    return times;
+}
+
+std::string arrayNote(const OmeLevel& level, const ZarrArray& array) {
+    std::string codecs;
+    for (ZarrByteCodec codec : array.codecs) codecs += " " + toString(codec);
+    return "array " + level.path + ": " + array.dataTypeText + (codecs.empty() ? ", uncompressed" : ", codecs" + codecs) +
+           (array.sharding ? ", sharded" : "");
 }
 
 }  // namespace
@@ -248,58 +301,31 @@ SourceSeries openOmeZarr(const std::filesystem::path& input, const ReadOptions& 
     const OmeLayout layout = layoutOf(image);
     SourceSeries source;
     const std::string version = image.version.empty() ? "" : " " + image.version;
+    source.name = image.name.empty() ? storeOf(input).filename().string() : image.name;
+    source.file = input;
+    source.format = "OME-Zarr" + version;
     source.notes.push_back("OME-Zarr" + version + " on Zarr v" + std::to_string(image.zarrFormat) + ", axes " +
                            axisNames(image) + (image.name.empty() ? "" : ", image \"" + image.name + "\""));
     ZarrArray array;
     const std::size_t level = chooseLevel(image, layout, options, source.notes, array);
     const std::size_t channel = chooseChannel(image, layout, array, options, source.notes);
-    const OmeLevel& transform = image.levels[level];
-
-    source.name = image.name.empty() ? storeOf(input).filename().string() : image.name;
-    source.file = input;
-    source.format = "OME-Zarr" + version;
-    std::string codecs;
-    for (ZarrByteCodec codec : array.codecs) codecs += " " + toString(codec);
-    source.notes.push_back("array " + image.levels[level].path + ": " + array.dataTypeText +
-                           (codecs.empty() ? ", uncompressed" : ", codecs" + codecs) + (array.sharding ? ", sharded" : ""));
-    glm::dvec3 spacing(1.0), origin(0.0);
-    static constexpr const char* kWorldNames[] = {"x", "y", "z"};
-    for (std::size_t axis = 0; axis < 3; ++axis) {
-        const std::size_t dimension = layout.space[axis];
-        spacing[int(axis)] = transform.scale[dimension];
-        origin[int(axis)] = transform.translation[dimension];
-        if (!(spacing[int(axis)] > 0.0))
-            throwInputError(image.attributesFile, "multiscales[0].datasets[" + std::to_string(level) + "].coordinateTransformations",
-                            "the scale of axis \"" + image.axes[dimension].name + "\" is " +
-                                numberText(spacing[int(axis)]) + ": a spacing must be positive");
-        source.axes[axis] = {kWorldNames[axis], omeLengthUnit(image.axes[dimension].unit), AxisDirection::Unknown};
-    }
-    // Image viewers (napari, Fiji) draw row 0 at the top: turning the volume 180 degrees about x
-    // makes y point down the screen and z away from the viewer without mirroring it.
-    Placement placement;
-    placement.rotation = glm::angleAxis(std::numbers::pi, glm::dvec3(1.0, 0.0, 0.0));
-    placement.origin = placement.rotation * origin;
+    source.notes.push_back(arrayNote(image.levels[level], array));
+    const OmeFrame frame = frameOf(image, layout, level);
+    source.axes = frame.axes;
     source.notes.push_back("turned 180 degrees about x: y runs down the screen (row 0 at the top, as image viewers show it)");
 
-    double timeFactor = 1.0;
     const std::size_t stepCount = layout.time ? std::size_t(array.shape[*layout.time]) : 1;
     if (stepCount == 0) throwInputError(array.metadataFile, "shape", "the time axis holds no time-step");
-    if (stepCount > 1 && !(transform.scale[*layout.time] > 0.0))
-        throwInputError(image.attributesFile, "multiscales[0].datasets[" + std::to_string(level) + "].coordinateTransformations",
-                        "the scale of the time axis is " + numberText(transform.scale[*layout.time]) +
-                            ": time-steps must follow one another");
     requireChunksWorthReading(array, layout, options, stepCount);
-    if (layout.time) source.time = omeTimeAxis(image.axes[*layout.time].unit, timeFactor, source.notes);
-    const glm::ivec3 dims(int(array.shape[layout.space[0]]), int(array.shape[layout.space[1]]), int(array.shape[layout.space[2]]));
-    for (std::size_t index = 0; index < stepCount; ++index) {
+    RectilinearGrid grid;
+    grid.dims = glm::ivec3(int(array.shape[layout.space[0]]), int(array.shape[layout.space[1]]),
+                           int(array.shape[layout.space[2]]));
+    grid.spacing = frame.spacing;
+    for (double time : stepTimes(image, layout, level, stepCount, source)) {
         SourceStep step;
-        step.time = layout.time ? (transform.translation[*layout.time] + double(index) * transform.scale[*layout.time]) * timeFactor
-                                : 0.0;
-        RectilinearGrid grid;
-        grid.dims = dims;
-        grid.spacing = spacing;
+        step.time = time;
         step.grid = grid;
-        step.placement = placement;
+        step.placement = frame.placement;
         step.type = array.type;
         step.file = array.folder;
         source.steps.push_back(step);

@@ -14,7 +14,7 @@ namespace {
 // Metadata files are small; a larger one is not metadata (and would be read whole).
 constexpr std::uint64_t kLargestJsonFile = std::uint64_t(16) << 20;
 
-std::string typeName(const nlohmann::json& value) { return value.type_name(); }
+std::string jsonTypeName(const nlohmann::json& value) { return value.type_name(); }
 
 }  // namespace
 
@@ -38,20 +38,20 @@ nlohmann::json readZarrJson(const std::filesystem::path& file) {
 
 const nlohmann::json& requireMember(const nlohmann::json& object, const std::string& key,
                                     const std::filesystem::path& file, const std::string& field) {
-    if (!object.is_object()) throwInputError(file, field, "must be an object, found " + typeName(object));
+    if (!object.is_object()) throwInputError(file, field, "must be an object, found " + jsonTypeName(object));
     const auto found = object.find(key);
     if (found == object.end()) throwInputError(file, field.empty() ? key : field + "." + key, "is missing");
     return *found;
 }
 
 std::string requireString(const nlohmann::json& value, const std::filesystem::path& file, const std::string& field) {
-    if (!value.is_string()) throwInputError(file, field, "must be a string, found " + typeName(value));
+    if (!value.is_string()) throwInputError(file, field, "must be a string, found " + jsonTypeName(value));
     return value.get<std::string>();
 }
 
 std::vector<std::uint64_t> requireCounts(const nlohmann::json& value, std::uint64_t least,
                                          const std::filesystem::path& file, const std::string& field) {
-    if (!value.is_array()) throwInputError(file, field, "must be a list of whole numbers, found " + typeName(value));
+    if (!value.is_array()) throwInputError(file, field, "must be a list of whole numbers, found " + jsonTypeName(value));
     std::vector<std::uint64_t> counts;
     for (const auto& item : value) {
         if (!item.is_number_integer() || (item.is_number_integer() && !item.is_number_unsigned() && item.get<std::int64_t>() < 0))
@@ -65,7 +65,7 @@ std::vector<std::uint64_t> requireCounts(const nlohmann::json& value, std::uint6
 }
 
 std::vector<double> requireNumbers(const nlohmann::json& value, const std::filesystem::path& file, const std::string& field) {
-    if (!value.is_array()) throwInputError(file, field, "must be a list of numbers, found " + typeName(value));
+    if (!value.is_array()) throwInputError(file, field, "must be a list of numbers, found " + jsonTypeName(value));
     std::vector<double> numbers;
     for (const auto& item : value) {
         if (!item.is_number() || !std::isfinite(item.get<double>()))
