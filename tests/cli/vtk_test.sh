@@ -89,8 +89,8 @@ case_pvd_and_series() {
         done
         # The times as listed; each step's origin moves 0.25 along x.
         tr -d ' \n' <"$SCRATCH/out-$list-0/series.json" >"$SCRATCH/manifest.txt"
-        for expected in '"time":0.5' '"time":1.5' '"time":4' '"origin":[0.25,1,2]' '"origin":[0.5,1,2]' \
-            '"spacing":[0.5,1,2]'; do
+        for expected in '"time":0.5' '"time":1.5' '"time":4.0' '"origin":[0.25,1.0,2.0]' \
+            '"origin":[0.5,1.0,2.0]' '"spacing":[0.5,1.0,2.0]'; do
             grep -qF -- "$expected" "$SCRATCH/manifest.txt" || fail "$list: the manifest has no $expected"
         done
     done
@@ -99,7 +99,10 @@ case_pvd_and_series() {
     expect_exit 0
     expect_stdout_contains "Time-steps: 2"
     expect_stdout_contains "one time-step each, times 0, 1, 2, ... in the order given"
-    converted_values_equal list temperature 2 -- "$S/plume/plume_2.vti" "$S/plume/plume_0.vti"
+    run_tstyles -- convert "$S/plume/plume_2.vti" "$S/plume/plume_0.vti" -o "$SCRATCH/list"
+    expect_exit 0
+    "$VTK_PYTHON" "$SAMPLES_WRITER" check "$SCRATCH/list/t00.raw" temperature 2 || fail "list: step 0 is not plume_2"
+    "$VTK_PYTHON" "$SAMPLES_WRITER" check "$SCRATCH/list/t01.raw" temperature 0 || fail "list: step 1 is not plume_0"
 }
 
 case_frame() {
@@ -107,16 +110,16 @@ case_frame() {
     # Direction: 90 degrees about z; Origin (1, 2, 3).
     converted_values_equal rotated temperature 0 -- "$S/rotated.vti"
     tr -d ' \n' <"$SCRATCH/out-rotated/series.json" >"$SCRATCH/rotated.txt"
-    grep -qF '"origin":[1,2,3],"rotation":{"axis":[0,0,1],"angle_deg":90' "$SCRATCH/rotated.txt" ||
+    grep -qF '"origin":[1.0,2.0,3.0],"rotation":{"axis":[0.0,0.0,1.0],"angle_deg":90.0}' "$SCRATCH/rotated.txt" ||
         fail "rotated.vti: placement is not origin (1,2,3), 90 degrees about z: $(cat "$SCRATCH/rotated.txt")"
     # A reflection: x reversed, the first sample now the last (1 - 4 * 0.5 = -1 along x).
     converted_values_equal mirrored temperature 0 mirror-x -- "$S/mirrored.vti"
     tr -d ' \n' <"$SCRATCH/out-mirrored/series.json" >"$SCRATCH/mirrored.txt"
-    grep -qF '"origin":[-1,2,3]' "$SCRATCH/mirrored.txt" || fail "mirrored.vti: origin is not (-1,2,3)"
+    grep -qF '"origin":[-1.0,2.0,3.0]' "$SCRATCH/mirrored.txt" || fail "mirrored.vti: origin is not (-1,2,3)"
     # An extent from (2, 0, 1): the first point at Origin + (2 * 0.5, 0, 1 * 2).
     converted_values_equal offset temperature 0 -- "$S/offset_extent.vti"
     tr -d ' \n' <"$SCRATCH/out-offset/series.json" >"$SCRATCH/offset.txt"
-    grep -qF '"origin":[2,2,5]' "$SCRATCH/offset.txt" || fail "offset_extent.vti: origin is not (2,2,5)"
+    grep -qF '"origin":[2.0,2.0,5.0]' "$SCRATCH/offset.txt" || fail "offset_extent.vti: origin is not (2,2,5)"
 }
 
 case_structured_grid() {
@@ -197,20 +200,20 @@ case_truncated_data() {
     expect_refused "$S/cut.vti" "" "bad XML at byte"
     # Appended raw data cut short: the XML is whole, the data is not.
     head -c 1500 "$S/appended_raw.vti" >"$S/cut_appended.vti"
-    expect_refused "$S/cut_appended.vti" "DataArray 'temperature' (line" "is truncated"
+    expect_refused "$S/cut_appended.vti" "DataArray 'temperature' (line 8)" "is truncated: its offset 1644 lies beyond"
     # A compressed block cut: its compressed size no longer fits the data.
-    head -c 1000 "$S/appended_raw_zlib.vti" >"$S/cut_zlib.vti"
-    expect_refused "$S/cut_zlib.vti" "DataArray 'temperature' (line" "truncated"
+    head -c 1900 "$S/appended_raw_zlib.vti" >"$S/cut_zlib.vti"
+    expect_refused "$S/cut_zlib.vti" "DataArray 'temperature' (line 8)" "is truncated: its blocks need 162 compressed bytes"
 }
 
 case_header_disagrees_with_extent() {
     samples
     sed -e 's/Extent="0 4 0 3 0 2"/Extent="0 4 0 3 0 1"/g' "$S/binary.vti" >"$S/smaller.vti"
-    expect_refused "$S/smaller.vti" "DataArray 'temperature' (line" "its header gives 240 bytes of data, the extent and type need 160"
+    expect_refused "$S/smaller.vti" "DataArray 'temperature' (line 23)" "its header gives 240 bytes of data, the extent and type need 160"
     sed -e 's/Extent="0 4 0 3 0 2"/Extent="0 4 0 3 0 3"/g' "$S/binary_zlib.vti" >"$S/larger.vti"
-    expect_refused "$S/larger.vti" "DataArray 'temperature' (line" "disagrees with the 320 bytes the extent and type need"
+    expect_refused "$S/larger.vti" "DataArray 'temperature' (line 23)" "disagrees with the 320 bytes the extent and type need"
     sed -e 's/Extent="0 4 0 3 0 2"/Extent="0 4 0 3 0 3"/g' "$S/ascii.vti" >"$S/larger_ascii.vti"
-    expect_refused "$S/larger_ascii.vti" "DataArray 'temperature' (line" "is truncated: 60 of 80 numbers"
+    expect_refused "$S/larger_ascii.vti" "DataArray 'temperature' (line 70)" "is truncated: 60 of 80 numbers"
 }
 
 case_unknown_compressor_and_type() {
@@ -218,7 +221,7 @@ case_unknown_compressor_and_type() {
     sed -e 's/vtkZLibDataCompressor/vtkZstdDataCompressor/' "$S/binary_zlib.vti" >"$S/zstd.vti"
     expect_refused "$S/zstd.vti" "compressor" "unknown compressor 'vtkZstdDataCompressor'"
     sed -e 's/type="Float32" Name="temperature"/type="Float16" Name="temperature"/' "$S/binary.vti" >"$S/half.vti"
-    expect_refused "$S/half.vti" "DataArray 'temperature' (line" "unknown type 'Float16'"
+    expect_refused "$S/half.vti" "DataArray 'temperature' (line 23)" "unknown type 'Float16'"
 }
 
 case_not_a_volume() {

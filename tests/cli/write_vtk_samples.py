@@ -100,8 +100,8 @@ def write_all(folder):
     for name, (mode, compressor, header, encode, big, block) in VARIANTS.items():
         write(vtk.vtkXMLImageDataWriter(), image(0), os.path.join(folder, name + ".vti"), mode, compressor, header,
               encode, big, block)
-    # No active Scalars, pressure first: the first array of one component is read.
-    data = image(0, arrays=("pressure", "temperature", "label"))
+    # No active Scalars (pressure is the first array): the first array of one component is read.
+    data = image(0)
     data.GetPointData().SetActiveScalars(None)
     write(vtk.vtkXMLImageDataWriter(), data, os.path.join(folder, "no_active.vti"))
     # Only the vector: nothing of one component to pick by default.

@@ -91,7 +91,7 @@ std::vector<float> readBinary(const VtkXmlFile& file, const VtkDataArray& array,
             throwInputError(file.path, arrayField(file, array), "is appended, but the file has no <AppendedData>");
         if (array.offset > file.appended.size())
             throwInputError(file.path, arrayField(file, array),
-                            "offset " + std::to_string(array.offset) + " lies beyond the " +
+                            "is truncated: its offset " + std::to_string(array.offset) + " lies beyond the " +
                                 std::to_string(file.appended.size()) + " bytes of appended data");
         text = file.appended.substr(std::size_t(array.offset));
         encoding = file.appendedEncoding;
