@@ -30,6 +30,10 @@ std::uint64_t maxExpansion(VtkCompressor compressor) {
 // LZMA streams name a dictionary size the decoder allocates; VTK's presets need at most 65 MiB.
 constexpr std::uint64_t kLzmaMemoryLimit = std::uint64_t(96) << 20;
 
+// A block, packed or not, is handed to the decompressors whole, and LZ4 counts in int: VTK's own
+// blocks are 32 KiB.
+constexpr std::uint64_t kMaxBlockBytes = std::uint64_t(1) << 30;
+
 struct ArrayContext {
     const std::filesystem::path& file;
     const std::string& field;
@@ -80,6 +84,13 @@ void decompressBlock(VtkCompressor compressor, const std::vector<std::uint8_t>& 
                      std::to_string(size) + " bytes its header gives");
 }
 
+// blocks - 1 full blocks and the last one make exactly the bytes expected (without overflow).
+bool blockSizesAgree(std::uint64_t blocks, std::uint64_t blockSize, std::uint64_t last, std::uint64_t expected) {
+    if (blocks == 0) return expected == 0;
+    if (blockSize == 0 || blockSize > kMaxBlockBytes || last > blockSize || last > expected) return false;
+    return blocks - 1 <= (expected - last) / blockSize && (blocks - 1) * blockSize + last == expected;
+}
+
 std::vector<std::uint8_t> readCompressed(VtkByteStream& stream, const VtkBinaryLayout& layout, std::uint64_t expected,
                                          const ArrayContext& context) {
     const std::uint64_t blocks = readHeaderInteger(stream, layout, context, "block count");
@@ -90,21 +101,21 @@ std::vector<std::uint8_t> readCompressed(VtkByteStream& stream, const VtkBinaryL
                      " compressed blocks, more than the data can hold");
     // A full last block is written as size 0.
     const std::uint64_t last = lastSize == 0 ? blockSize : lastSize;
-    const bool sizesAgree = blocks == 0 ? expected == 0
-                                        : blockSize > 0 && last <= blockSize && last <= expected && blockSize <= (std::uint64_t(1) << 31) &&
-                                              (blocks - 1) <= (expected - last) / blockSize &&
-                                              (blocks - 1) * blockSize + last == expected;
-    if (!sizesAgree)
+    if (!blockSizesAgree(blocks, blockSize, last, expected))
         context.fail("its compression header (" + std::to_string(blocks) + " blocks of " + std::to_string(blockSize) +
                      " bytes, the last " + std::to_string(lastSize) + ") disagrees with the " +
                      std::to_string(expected) + " bytes the extent and type need");
     std::vector<std::uint64_t> packedSizes(blocks);
     std::uint64_t packedTotal = 0;
-    for (std::uint64_t& packed : packedSizes) {
-        packed = readHeaderInteger(stream, layout, context, "compressed block size");
-        if (packed > stream.bytesLeftAtMost() || packed * maxExpansion(layout.compressor) < std::min(blockSize, expected))
-            context.fail("is truncated or corrupt: a compressed block of " + std::to_string(packed) +
-                         " bytes cannot hold " + std::to_string(blockSize) + " bytes");
+    for (std::size_t block = 0; block < blocks; ++block) {
+        const std::uint64_t packed = readHeaderInteger(stream, layout, context, "compressed block size");
+        const std::uint64_t size = block + 1 == blocks ? last : blockSize;
+        const bool fits = packed <= stream.bytesLeftAtMost() && packed <= kMaxBlockBytes &&
+                          packed * maxExpansion(layout.compressor) >= size;
+        if (!fits)
+            context.fail("is truncated or corrupt: compressed block " + std::to_string(block) + " of " +
+                         std::to_string(packed) + " bytes cannot hold " + std::to_string(size) + " bytes");
+        packedSizes[block] = packed;
         packedTotal += packed;
     }
     if (packedTotal > stream.bytesLeftAtMost())

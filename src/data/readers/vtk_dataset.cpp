@@ -148,6 +148,15 @@ VtkDataset describeVtkDataset(const VtkXmlFile& file) {
     VtkDataset dataset;
     dataset.structured = std::string(file.dataset.name()) == "StructuredGrid";
     dataset.whole = extentIn(file, file.dataset, "WholeExtent");
+    // Each axis fits an int and the point count a double exactly; the memory cap decides the rest.
+    double points = 1.0;
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+        const std::int64_t size = dataset.whole.bounds[2 * axis + 1] - dataset.whole.bounds[2 * axis] + 1;
+        if (size > std::int64_t(std::numeric_limits<std::int32_t>::max()))
+            throwInputError(file.path, "WholeExtent", std::string("the extent along ") + "xyz"[axis] + " is too large");
+        points *= double(size);
+    }
+    if (points > 9.0e15) throwInputError(file.path, "WholeExtent", "the extent holds too many points to be read");
     const glm::ivec3 dims = dataset.whole.dims();
     if (dims.x < 2 || dims.y < 2 || dims.z < 2)
         throwInputError(file.path, "WholeExtent",
