@@ -94,6 +94,14 @@ case_pvd_and_series() {
             grep -qF -- "$expected" "$SCRATCH/manifest.txt" || fail "$list: the manifest has no $expected"
         done
     done
+    # Two parts at each time, listed out of time order: part 0 read, sorted by time, both said.
+    sed -e 's|\(.*\)part="0" file="\(.*\)"/>|\1part="1" file="\2"/>\n\1part="0" file="\2"/>|' "$S/plume.pvd" |
+        sed -e 's/timestep="0.5"/timestep="9"/' >"$S/parts.pvd"
+    run_tstyles -- info "$S/parts.pvd"
+    expect_exit 0
+    expect_stdout_contains "Time-steps: 3"
+    expect_stdout_contains "the collection has 2 parts at each time: only part 0 is read"
+    expect_stdout_contains "the list is not in time order: its data sets are read sorted by time"
     # A list of files: one time-step each, times 0, 1, 2 in the order given.
     run_tstyles -- info "$S/plume/plume_2.vti" "$S/plume/plume_0.vti"
     expect_exit 0
