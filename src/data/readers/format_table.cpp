@@ -11,6 +11,7 @@
 #include "ome_zarr_reader.h"
 #include "plot3d_source.h"
 #include "stacked_files.h"
+#include "vtk_reader.h"
 #include "tstyles/core/errors.h"
 
 namespace tstyles {
@@ -36,6 +37,9 @@ const std::vector<SeriesFormat>& seriesFormats() {
          stackedFiles([](const std::filesystem::path& file, const ReadOptions&) { return openNifti(file); })},
         {"NRRD", {".nrrd", ".nhdr"}, ".nrrd .nhdr", {}, startsWithNrrdMagic,
          stackedFiles([](const std::filesystem::path& file, const ReadOptions&) { return openNrrd(file); })},
+        // ParaView's time series: a collection (.pvd, .series) or the data sets themselves.
+        {"VTK XML", {".pvd", ".series", ".vti", ".vts"}, ".pvd .series .vti .vts", {"--var"}, hasVtkXmlSignature,
+         openVtkSeries},
         // By name only: ".bin" alone says too little.
         {"Hurricane Isabel raw", {}, "VARIABLEfHH.bin or .bin.gz", {"--dims"}, isIsabelFileName,
          [](const std::vector<std::filesystem::path>& files, const ReadOptions& options) {

@@ -1,0 +1,135 @@
+// .pvd and .series lists: the entries' times must be finite and, once sorted, distinct (a time-step
+// is one volume); every file must exist before any is read.
+#include "vtk_collection.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <set>
+
+#include <nlohmann/json.hpp>
+#include <pugixml.hpp>
+
+#include "series_assembly.h"
+#include "tstyles/core/errors.h"
+#include "tstyles/core/input_limits.h"
+
+namespace tstyles {
+namespace {
+
+// Sorted by time as ParaView shows them; two entries at one time would be two volumes in one step.
+void orderByTime(const std::filesystem::path& list, VtkCollection& collection) {
+    auto& entries = collection.entries;
+    if (entries.empty()) throwInputError(list, "", "lists no data set: there is nothing to read");
+    requireStepCount(list, "", entries.size());
+    const auto earlier = [](const VtkCollectionEntry& a, const VtkCollectionEntry& b) { return a.time < b.time; };
+    if (!std::is_sorted(entries.begin(), entries.end(), earlier)) {
+        std::stable_sort(entries.begin(), entries.end(), earlier);
+        collection.notes.push_back("the list is not in time order: its data sets are read sorted by time");
+    }
+    for (std::size_t index = 1; index < entries.size(); ++index)
+        if (entries[index].time == entries[index - 1].time)
+            throwInputError(list, entries[index].where,
+                            "time " + std::to_string(entries[index].time) + " is also the time of " +
+                                entries[index - 1].where + ": one data set per time-step");
+    for (const VtkCollectionEntry& entry : entries) {
+        std::error_code error;
+        if (!std::filesystem::is_regular_file(entry.file, error))
+            throwInputError(list, entry.where, "the file '" + entry.file.string() + "' does not exist");
+    }
+}
+
+std::size_t lineAt(const std::string& text, std::ptrdiff_t offset) {
+    if (offset < 0 || std::size_t(offset) > text.size()) return 0;
+    return 1 + std::size_t(std::count(text.begin(), text.begin() + offset, '\n'));
+}
+
+std::string readSmallText(const std::filesystem::path& path, const std::string& what) {
+    // A list of file names: even a million time-steps is far below this.
+    constexpr std::uint64_t kMaxListBytes = std::uint64_t(256) << 20;
+    const std::uint64_t size = regularFileSize(path, what);
+    if (size > kMaxListBytes)
+        throwInputError(path, "", "is " + byteCountText(double(size)) + ", too large for a " + what);
+    std::ifstream in(path, std::ios::binary);
+    std::string text(size, '\0');
+    in.read(text.data(), std::streamsize(size));
+    if (!in) throwInputError(path, "", "cannot be read");
+    return text;
+}
+
+}  // namespace
+
+VtkCollection readPvdCollection(const std::filesystem::path& pvd) {
+    const std::string text = readSmallText(pvd, "ParaView collection (.pvd)");
+    pugi::xml_document document;
+    const pugi::xml_parse_result parsed = document.load_buffer(text.data(), text.size());
+    if (!parsed)
+        throwInputError(pvd, "", std::string("bad XML at byte ") + std::to_string(parsed.offset) + ": " +
+                                     parsed.description());
+    const pugi::xml_node root = document.child("VTKFile");
+    if (!root || std::string(root.attribute("type").as_string()) != "Collection" || !root.child("Collection"))
+        throwInputError(pvd, "VTKFile", "is not a ParaView collection: <VTKFile type=\"Collection\"><Collection> expected");
+    VtkCollection collection;
+    std::set<int> parts;
+    for (const pugi::xml_node& dataSet : root.child("Collection").children("DataSet")) {
+        const std::string where = "DataSet (line " + std::to_string(lineAt(text, dataSet.offset_debug())) + ")";
+        const std::string file = dataSet.attribute("file").as_string();
+        if (file.empty()) throwInputError(pvd, where, "has no file attribute");
+        if (!dataSet.attribute("timestep")) throwInputError(pvd, where, "has no timestep attribute");
+        const char* timeText = dataSet.attribute("timestep").as_string();
+        char* timeEnd = nullptr;
+        const double time = std::strtod(timeText, &timeEnd);
+        while (timeEnd && std::isspace(static_cast<unsigned char>(*timeEnd))) ++timeEnd;
+        if (timeEnd == timeText || *timeEnd != '\0' || !std::isfinite(time))
+            throwInputError(pvd, where, "timestep '" + std::string(dataSet.attribute("timestep").as_string()) +
+                                            "' is not a finite number");
+        const int part = dataSet.attribute("part").as_int(0);
+        parts.insert(part);
+        if (part != 0) continue;
+        collection.entries.push_back({time, pvd.parent_path() / file, where});
+    }
+    if (parts.size() > 1)
+        collection.notes.push_back("the collection has " + std::to_string(parts.size()) +
+                                   " parts at each time: only part 0 is read");
+    orderByTime(pvd, collection);
+    return collection;
+}
+
+VtkCollection readFileSeries(const std::filesystem::path& series) {
+    const std::string text = readSmallText(series, "ParaView file series (.series)");
+    nlohmann::json json;
+    try {
+        json = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::exception& error) {
+        throwInputError(series, "", std::string("is not valid JSON: ") + error.what());
+    }
+    if (!json.is_object()) throwInputError(series, "", "is not a JSON object");
+    for (const auto& [key, value] : json.items())
+        if (key != "file-series-version" && key != "files")
+            throwInputError(series, key, "unknown key (a file series has \"file-series-version\" and \"files\")");
+    if (!json.contains("file-series-version") || !json["file-series-version"].is_string())
+        throwInputError(series, "file-series-version", "missing, or not a string such as \"1.0\"");
+    if (!json.contains("files") || !json["files"].is_array())
+        throwInputError(series, "files", "missing, or not a list of {\"name\", \"time\"}");
+    VtkCollection collection;
+    const auto& files = json["files"];
+    for (std::size_t index = 0; index < files.size(); ++index) {
+        const std::string where = "files[" + std::to_string(index) + "]";
+        const auto& entry = files[index];
+        if (!entry.is_object()) throwInputError(series, where, "is not an object {\"name\", \"time\"}");
+        for (const auto& [key, value] : entry.items())
+            if (key != "name" && key != "time") throwInputError(series, where + "." + key, "unknown key");
+        if (!entry.contains("name") || !entry["name"].is_string() || entry["name"].get<std::string>().empty())
+            throwInputError(series, where + ".name", "missing, or not a file name");
+        if (!entry.contains("time") || !entry["time"].is_number() || !std::isfinite(entry["time"].get<double>()))
+            throwInputError(series, where + ".time", "missing, or not a finite number");
+        collection.entries.push_back(
+            {entry["time"].get<double>(), series.parent_path() / entry["name"].get<std::string>(), where});
+    }
+    orderByTime(series, collection);
+    return collection;
+}
+
+}  // namespace tstyles

@@ -1,0 +1,211 @@
+// Extents, pieces and frames of VTK ImageData and StructuredGrid files, and the assembly of a
+// whole-extent array from the pieces that hold it (the parallel writers split a volume this way).
+#include "vtk_dataset.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+#include "tstyles/core/errors.h"
+#include "tstyles/core/input_limits.h"
+
+namespace tstyles {
+namespace {
+
+std::vector<double> numbersIn(const VtkXmlFile& file, const pugi::xml_node& node, const char* attribute,
+                              std::size_t count) {
+    const std::string text = node.attribute(attribute).as_string();
+    const std::string field = std::string(node.name()) + " " + attribute;
+    std::vector<double> numbers;
+    const char* position = text.data();
+    const char* end = text.data() + text.size();
+    while (position < end) {
+        if (std::isspace(static_cast<unsigned char>(*position))) {
+            ++position;
+            continue;
+        }
+        double value = 0.0;
+        const auto [next, error] = std::from_chars(position, end, value);
+        if (error != std::errc() || !std::isfinite(value) || numbers.size() == count)
+            throwInputError(file.path, field, "'" + text + "' is not " + std::to_string(count) + " finite numbers");
+        numbers.push_back(value);
+        position = next;
+    }
+    if (numbers.size() != count)
+        throwInputError(file.path, field, "'" + text + "' is not " + std::to_string(count) + " finite numbers");
+    return numbers;
+}
+
+VtkExtent extentIn(const VtkXmlFile& file, const pugi::xml_node& node, const char* attribute) {
+    const std::vector<double> numbers = numbersIn(file, node, attribute, 6);
+    VtkExtent extent;
+    for (std::size_t index = 0; index < 6; ++index) {
+        const double value = numbers[index];
+        if (value != std::floor(value) || std::abs(value) > double(std::numeric_limits<std::int32_t>::max()))
+            throwInputError(file.path, std::string(node.name()) + " " + attribute,
+                            "extent bounds must be whole numbers of at most 2^31 - 1 in size");
+        extent.bounds[index] = std::int64_t(value);
+    }
+    for (std::size_t axis = 0; axis < 3; ++axis)
+        if (extent.bounds[2 * axis] > extent.bounds[2 * axis + 1])
+            throwInputError(file.path, std::string(node.name()) + " " + attribute,
+                            std::string("the extent along ") + "xyz"[axis] + " ends before it starts");
+    return extent;
+}
+
+bool contains(const VtkExtent& outer, const VtkExtent& inner) {
+    for (std::size_t axis = 0; axis < 3; ++axis)
+        if (inner.bounds[2 * axis] < outer.bounds[2 * axis] || inner.bounds[2 * axis + 1] > outer.bounds[2 * axis + 1])
+            return false;
+    return true;
+}
+
+void describeFrame(const VtkXmlFile& file, VtkDataset& dataset) {
+    const pugi::xml_node node = file.dataset;
+    if (node.attribute("Origin")) {
+        const auto origin = numbersIn(file, node, "Origin", 3);
+        dataset.origin = {origin[0], origin[1], origin[2]};
+    }
+    if (node.attribute("Spacing")) {
+        const auto spacing = numbersIn(file, node, "Spacing", 3);
+        dataset.spacing = {spacing[0], spacing[1], spacing[2]};
+    }
+    if (node.attribute("Direction")) {
+        const auto direction = numbersIn(file, node, "Direction", 9);
+        std::copy(direction.begin(), direction.end(), dataset.direction.begin());
+    }
+}
+
+VtkPiece describePiece(const VtkXmlFile& file, const VtkDataset& dataset, const pugi::xml_node& node) {
+    VtkPiece piece;
+    piece.node = node;
+    piece.extent = extentIn(file, node, "Extent");
+    if (!contains(dataset.whole, piece.extent))
+        throwInputError(file.path, "Piece Extent", "the piece reaches outside the WholeExtent");
+    piece.pointArrays = describeArrays(file, node.child("PointData"));
+    return piece;
+}
+
+std::string arrayList(const std::vector<VtkDataArray>& arrays) {
+    std::string list;
+    for (const VtkDataArray& array : arrays)
+        list += (list.empty() ? "" : ", ") + array.name +
+                (array.components > 1 ? " (" + std::to_string(array.components) + " components)" : "");
+    return list.empty() ? "none" : list;
+}
+
+// Fills the whole extent from the pieces, `width` floats per point, each piece's values read by
+// `readPiece`; a point no piece holds is an error (the values would be made up).
+std::vector<float> assemble(const VtkXmlFile& file, const VtkDataset& dataset, std::size_t width,
+                            std::uint64_t memoryCap, const std::function<std::vector<float>(const VtkPiece&)>& readPiece) {
+    if (dataset.pieces.size() == 1 && dataset.pieces.front().extent.bounds == dataset.whole.bounds)
+        return readPiece(dataset.pieces.front());
+    const std::uint64_t points = dataset.whole.pointCount();
+    requireMemory(file.path, "WholeExtent", double(points) * double(width * 4 + 1), memoryCap,
+                  "the values of one time-step");
+    std::vector<float> whole(points * width, 0.0f);
+    std::vector<bool> covered(points, false);
+    const glm::ivec3 dims = dataset.whole.dims();
+    for (const VtkPiece& piece : dataset.pieces) {
+        const std::vector<float> values = readPiece(piece);
+        const glm::ivec3 size = piece.extent.dims();
+        std::size_t source = 0;
+        for (int z = 0; z < size.z; ++z)
+            for (int y = 0; y < size.y; ++y)
+                for (int x = 0; x < size.x; ++x, ++source) {
+                    const std::size_t target =
+                        std::size_t(piece.extent.bounds[0] - dataset.whole.bounds[0] + x) +
+                        std::size_t(dims.x) * (std::size_t(piece.extent.bounds[2] - dataset.whole.bounds[2] + y) +
+                                               std::size_t(dims.y) * std::size_t(piece.extent.bounds[4] -
+                                                                                 dataset.whole.bounds[4] + z));
+                    std::copy_n(values.begin() + std::ptrdiff_t(source * width), width,
+                                whole.begin() + std::ptrdiff_t(target * width));
+                    covered[target] = true;
+                }
+    }
+    for (std::size_t point = 0; point < points; ++point)
+        if (!covered[point])
+            throwInputError(file.path, "Piece",
+                            "the pieces do not cover the WholeExtent: point " + std::to_string(point) +
+                                " (x fastest) is in none of them");
+    return whole;
+}
+
+}  // namespace
+
+glm::ivec3 VtkExtent::dims() const {
+    return {int(bounds[1] - bounds[0] + 1), int(bounds[3] - bounds[2] + 1), int(bounds[5] - bounds[4] + 1)};
+}
+
+std::uint64_t VtkExtent::pointCount() const {
+    const glm::ivec3 size = dims();
+    return std::uint64_t(size.x) * std::uint64_t(size.y) * std::uint64_t(size.z);
+}
+
+VtkDataset describeVtkDataset(const VtkXmlFile& file) {
+    VtkDataset dataset;
+    dataset.structured = std::string(file.dataset.name()) == "StructuredGrid";
+    dataset.whole = extentIn(file, file.dataset, "WholeExtent");
+    // Each axis fits an int and the point count a double exactly; the memory cap decides the rest.
+    double points = 1.0;
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+        const std::int64_t size = dataset.whole.bounds[2 * axis + 1] - dataset.whole.bounds[2 * axis] + 1;
+        if (size > std::int64_t(std::numeric_limits<std::int32_t>::max()))
+            throwInputError(file.path, "WholeExtent", std::string("the extent along ") + "xyz"[axis] + " is too large");
+        points *= double(size);
+    }
+    if (points > 9.0e15) throwInputError(file.path, "WholeExtent", "the extent holds too many points to be read");
+    const glm::ivec3 dims = dataset.whole.dims();
+    if (dims.x < 2 || dims.y < 2 || dims.z < 2)
+        throwInputError(file.path, "WholeExtent",
+                        "a volume needs at least 2 samples along x, y and z, found " + std::to_string(dims.x) + " x " +
+                            std::to_string(dims.y) + " x " + std::to_string(dims.z));
+    if (!dataset.structured) describeFrame(file, dataset);
+    for (const pugi::xml_node& node : file.dataset.children("Piece"))
+        dataset.pieces.push_back(describePiece(file, dataset, node));
+    if (dataset.pieces.empty()) throwInputError(file.path, "Piece", "the file has no <Piece>: there is no data");
+    const pugi::xml_node pointData = dataset.pieces.front().node.child("PointData");
+    dataset.activeScalars = pointData.attribute("Scalars").as_string();
+    for (const pugi::xml_node& array : dataset.pieces.front().node.child("CellData").children("DataArray"))
+        dataset.cellArrays.push_back(array.attribute("Name").as_string());
+    return dataset;
+}
+
+const VtkDataArray& pointArrayNamed(const VtkXmlFile& file, const VtkDataset& dataset, const std::string& name) {
+    const auto& arrays = dataset.pieces.front().pointArrays;
+    for (const VtkDataArray& array : arrays)
+        if (array.name == name) return array;
+    std::string problem = "no point array named '" + name + "'; the point arrays are: " + arrayList(arrays);
+    if (std::find(dataset.cellArrays.begin(), dataset.cellArrays.end(), name) != dataset.cellArrays.end())
+        problem = "'" + name + "' is a cell array: only point arrays are read (values at the grid's points); " +
+                  "the point arrays are: " + arrayList(arrays);
+    throwInputError(file.path, "--var", problem);
+}
+
+std::vector<float> readVtkPointArray(const VtkXmlFile& file, const VtkDataset& dataset, const std::string& name,
+                                     std::uint64_t memoryCap) {
+    return assemble(file, dataset, 1, memoryCap, [&](const VtkPiece& piece) {
+        for (const VtkDataArray& array : piece.pointArrays)
+            if (array.name == name) return readPointValues(file, array, piece.extent.pointCount(), memoryCap);
+        throwInputError(file.path, "Piece (line " + std::to_string(lineOf(file, piece.node)) + ")",
+                        "has no point array '" + name + "' though the first piece has");
+    });
+}
+
+std::vector<glm::vec3> readVtkPoints(const VtkXmlFile& file, const VtkDataset& dataset, std::uint64_t memoryCap) {
+    const std::vector<float> coordinates = assemble(file, dataset, 3, memoryCap, [&](const VtkPiece& piece) {
+        const std::vector<VtkDataArray> arrays = describeArrays(file, piece.node.child("Points"));
+        if (arrays.size() != 1 || arrays.front().components != 3)
+            throwInputError(file.path, "Points (line " + std::to_string(lineOf(file, piece.node)) + ")",
+                            "a structured grid's piece needs one <Points> DataArray of 3 components");
+        return readPointComponents(file, arrays.front(), piece.extent.pointCount(), memoryCap);
+    });
+    std::vector<glm::vec3> points(coordinates.size() / 3);
+    for (std::size_t point = 0; point < points.size(); ++point)
+        points[point] = {coordinates[3 * point], coordinates[3 * point + 1], coordinates[3 * point + 2]};
+    return points;
+}
+
+}  // namespace tstyles

@@ -1,0 +1,57 @@
+// One .vti (ImageData) or .vts (StructuredGrid) file as a volume: its extent and pieces, its frame
+// (origin, spacing, direction) and its point arrays; the values of one array, or the grid's points,
+// assembled from the pieces that cover the extent.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "vtk_data_array.h"
+#include "vtk_xml_file.h"
+
+namespace tstyles {
+
+struct VtkExtent {
+    std::array<std::int64_t, 6> bounds{};  // x0 x1 y0 y1 z0 z1, inclusive
+    glm::ivec3 dims() const;
+    std::uint64_t pointCount() const;
+};
+
+struct VtkPiece {
+    pugi::xml_node node;
+    VtkExtent extent;
+    std::vector<VtkDataArray> pointArrays;
+};
+
+struct VtkDataset {
+    bool structured = false;  // StructuredGrid (.vts) rather than ImageData (.vti)
+    VtkExtent whole;
+    glm::dvec3 origin{0.0};
+    glm::dvec3 spacing{1.0};
+    std::array<double, 9> direction{1, 0, 0, 0, 1, 0, 0, 0, 1};  // row by row, as VTK writes it
+    std::string activeScalars;  // <PointData Scalars="...">, may be empty
+    std::vector<VtkPiece> pieces;
+    std::vector<std::string> cellArrays;  // named only: they are not read
+};
+
+// Checks the extents (a volume of at least 2 points along each axis; pieces inside the whole
+// extent) and the frame's numbers; arrays are described, not read.
+VtkDataset describeVtkDataset(const VtkXmlFile& file);
+
+// The first piece's point array named `name` (the same name in every piece), or an InputError that
+// lists the arrays there are.
+const VtkDataArray& pointArrayNamed(const VtkXmlFile& file, const VtkDataset& dataset, const std::string& name);
+
+// The values of a point array over the whole extent, x fastest (one per point: vectors as
+// magnitudes). The pieces must cover the extent.
+std::vector<float> readVtkPointArray(const VtkXmlFile& file, const VtkDataset& dataset, const std::string& name,
+                                     std::uint64_t memoryCap);
+
+// A structured grid's node positions over the whole extent, x fastest.
+std::vector<glm::vec3> readVtkPoints(const VtkXmlFile& file, const VtkDataset& dataset, std::uint64_t memoryCap);
+
+}  // namespace tstyles

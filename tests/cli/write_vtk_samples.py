@@ -1,0 +1,196 @@
+#!/usr/bin/env python3
+"""VTK XML files for the vtk reader's tests, written by VTK's own writers (python3-vtk9), and a
+check of the raw values `tstyles convert` wrote against the values the files hold.
+
+  write_vtk_samples.py write FOLDER
+  write_vtk_samples.py check RAW_FILE ARRAY STEP [mirror-x]   (exits 1 naming the first difference)
+
+Known values on a 5 x 4 x 3 grid (i, j, k from 0, x fastest), time-step t:
+  temperature (Float32) = 0.5 i + 2 j + 10 k + 100 t
+  pressure    (Int16)   = i j - 7 k - 3 t
+  label       (UInt8)   = i + j + k + t
+  velocity    (Float64, 3 components) = (i, j, k + t): read as its magnitude
+"""
+import json
+import os
+import sys
+
+import numpy as np
+import vtk
+from vtk.util import numpy_support
+
+DIMS = (5, 4, 3)  # x, y, z
+
+
+def known(array, step):
+    k, j, i = np.meshgrid(*(np.arange(n) for n in DIMS[::-1]), indexing="ij")
+    if array == "temperature":
+        return (0.5 * i + 2 * j + 10 * k + 100 * step).astype(np.float32)
+    if array == "pressure":
+        return (i * j - 7 * k - 3 * step).astype(np.int16)
+    if array == "label":
+        return (i + j + k + step).astype(np.uint8)
+    if array == "velocity":
+        return np.stack([i, j, k + step], axis=-1).astype(np.float64)
+    if array == "velocity-magnitude":
+        return np.sqrt(i * i + j * j + (k + step) ** 2.0).astype(np.float32)
+    raise SystemExit(f"no known array {array}")
+
+
+def add_array(data, name, values, active=False):
+    flat = values.reshape(-1, values.shape[-1]) if values.ndim == 4 else values.reshape(-1)
+    array = numpy_support.numpy_to_vtk(np.ascontiguousarray(flat), deep=True)
+    array.SetName(name)
+    if active:
+        data.GetPointData().SetScalars(array)
+    else:
+        data.GetPointData().AddArray(array)
+
+
+def image(step, origin=(0.0, 0.0, 0.0), spacing=(0.5, 1.0, 2.0), arrays=("temperature", "pressure", "label")):
+    data = vtk.vtkImageData()
+    data.SetDimensions(*DIMS)
+    data.SetOrigin(*origin)
+    data.SetSpacing(*spacing)
+    # The active Scalars is the last array: the reader must follow the attribute, not the order.
+    for name in arrays[1:]:
+        add_array(data, name, known(name, step))
+    add_array(data, "velocity", known("velocity", step))
+    add_array(data, arrays[0], known(arrays[0], step), active=True)
+    return data
+
+
+def write(writer, data, path, mode="Binary", compressor="None", header="UInt32", encode=True, big=False,
+          block=None):
+    writer.SetFileName(path)
+    writer.SetInputData(data)
+    getattr(writer, "SetDataModeTo" + mode)()
+    getattr(writer, "SetCompressorTypeTo" + compressor)()
+    getattr(writer, "SetHeaderTypeTo" + header)()
+    writer.SetEncodeAppendedData(encode)
+    if big:
+        writer.SetByteOrderToBigEndian()
+    if block:
+        writer.SetBlockSize(block)
+    if writer.Write() != 1:
+        raise SystemExit(f"VTK could not write {path}")
+
+
+# name: (data mode, compressor, header type, encode appended data, big-endian, block size)
+VARIANTS = {
+    "ascii": ("Ascii", "None", "UInt32", True, False, None),
+    "binary": ("Binary", "None", "UInt32", True, False, None),
+    "binary_uint64": ("Binary", "None", "UInt64", True, False, None),
+    "binary_zlib": ("Binary", "ZLib", "UInt32", True, False, None),
+    "binary_zlib_blocks": ("Binary", "ZLib", "UInt64", True, False, 64),
+    "binary_lz4": ("Binary", "LZ4", "UInt64", True, False, None),
+    "binary_lzma": ("Binary", "LZMA", "UInt32", True, False, None),
+    "appended_raw": ("Appended", "None", "UInt64", False, False, None),
+    "appended_raw_zlib": ("Appended", "ZLib", "UInt32", False, False, 96),
+    "appended_raw_lz4": ("Appended", "LZ4", "UInt32", False, False, None),
+    "appended_base64": ("Appended", "None", "UInt32", True, False, None),
+    "appended_base64_lzma": ("Appended", "LZMA", "UInt64", True, False, 128),
+    "big_endian": ("Binary", "None", "UInt32", True, True, None),
+    "big_endian_appended_zlib": ("Appended", "ZLib", "UInt64", False, True, None),
+}
+
+
+def write_all(folder):
+    os.makedirs(folder, exist_ok=True)
+    for name, (mode, compressor, header, encode, big, block) in VARIANTS.items():
+        write(vtk.vtkXMLImageDataWriter(), image(0), os.path.join(folder, name + ".vti"), mode, compressor, header,
+              encode, big, block)
+    # No active Scalars (pressure is the first array): the first array of one component is read.
+    data = image(0)
+    data.GetPointData().SetActiveScalars(None)
+    write(vtk.vtkXMLImageDataWriter(), data, os.path.join(folder, "no_active.vti"))
+    # Only the vector: nothing of one component to pick by default.
+    vector_only = vtk.vtkImageData()
+    vector_only.SetDimensions(*DIMS)
+    add_array(vector_only, "velocity", known("velocity", 0))
+    write(vtk.vtkXMLImageDataWriter(), vector_only, os.path.join(folder, "vector_only.vti"))
+    # A rotation (90 degrees about z) and a reflection (x reversed) in the Direction matrix.
+    rotated = image(0, origin=(1.0, 2.0, 3.0))
+    rotated.SetDirectionMatrix(0, -1, 0, 1, 0, 0, 0, 0, 1)
+    write(vtk.vtkXMLImageDataWriter(), rotated, os.path.join(folder, "rotated.vti"), compressor="ZLib")
+    mirrored = image(0, origin=(1.0, 2.0, 3.0))
+    mirrored.SetDirectionMatrix(-1, 0, 0, 0, 1, 0, 0, 0, 1)
+    write(vtk.vtkXMLImageDataWriter(), mirrored, os.path.join(folder, "mirrored.vti"))
+    # An extent that does not start at 0: the first point sits at Origin + Spacing * start.
+    offset = image(0, origin=(1.0, 2.0, 3.0))
+    offset.SetExtent(2, 6, 0, 3, 1, 3)
+    write(vtk.vtkXMLImageDataWriter(), offset, os.path.join(folder, "offset_extent.vti"))
+    write_series(folder)
+    write_structured(folder)
+    write_pieces(folder)
+
+
+def write_series(folder):
+    """plume.pvd and plume.vti.series: three time-steps whose origins move along x."""
+    os.makedirs(os.path.join(folder, "plume"), exist_ok=True)
+    times = [0.5, 1.5, 4.0]
+    entries = []
+    for step, time in enumerate(times):
+        name = f"plume/plume_{step}.vti"
+        write(vtk.vtkXMLImageDataWriter(), image(step, origin=(0.25 * step, 1.0, 2.0)), os.path.join(folder, name),
+              mode="Appended", compressor="ZLib", encode=False)
+        entries.append((time, name))
+    with open(os.path.join(folder, "plume.pvd"), "w") as pvd:
+        pvd.write('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1" byte_order="LittleEndian">\n'
+                  "  <Collection>\n")
+        for time, name in entries:
+            pvd.write(f'    <DataSet timestep="{time}" group="" part="0" file="{name}"/>\n')
+        pvd.write("  </Collection>\n</VTKFile>\n")
+    with open(os.path.join(folder, "plume.vti.series"), "w") as series:
+        json.dump({"file-series-version": "1.0", "files": [{"name": n, "time": t} for t, n in entries]}, series)
+
+
+def write_structured(folder):
+    """grid.vts: a sheared but valid curvilinear grid (x leans with y), temperature on its points."""
+    grid = vtk.vtkStructuredGrid()
+    grid.SetDimensions(*DIMS)
+    points = vtk.vtkPoints()
+    for k in range(DIMS[2]):
+        for j in range(DIMS[1]):
+            for i in range(DIMS[0]):
+                points.InsertNextPoint(i + 0.25 * j, j, 2.0 * k)
+    grid.SetPoints(points)
+    add_array(grid, "temperature", known("temperature", 0), active=True)
+    write(vtk.vtkXMLStructuredGridWriter(), grid, os.path.join(folder, "grid.vts"), compressor="ZLib")
+
+
+def write_pieces(folder):
+    """pieces.vti: VTK's analytic source written in 3 pieces (each its own extent), and whole.vti in one."""
+    for name, pieces in (("pieces.vti", 3), ("whole.vti", 1)):
+        source = vtk.vtkRTAnalyticSource()
+        source.SetWholeExtent(0, 9, 0, 7, 0, 5)
+        writer = vtk.vtkXMLImageDataWriter()
+        writer.SetFileName(os.path.join(folder, name))
+        writer.SetInputConnection(source.GetOutputPort())
+        writer.SetNumberOfPieces(pieces)
+        writer.SetDataModeToBinary()
+        if writer.Write() != 1:
+            raise SystemExit(f"VTK could not write {name}")
+
+
+def check(raw_file, array, step, order="as-written"):
+    expected = known(array, int(step)).astype(np.float32)
+    if order == "mirror-x":
+        expected = expected[:, :, ::-1]
+    expected = expected.reshape(-1)
+    actual = np.fromfile(raw_file, dtype="<f4")
+    if actual.size != expected.size:
+        raise SystemExit(f"{raw_file}: {actual.size} values, expected {expected.size}")
+    differ = np.nonzero(actual != expected)[0]
+    if differ.size:
+        first = differ[0]
+        raise SystemExit(f"{raw_file}: value {first} is {actual[first]}, expected {expected[first]}")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) == 3 and sys.argv[1] == "write":
+        write_all(sys.argv[2])
+    elif len(sys.argv) in (5, 6) and sys.argv[1] == "check":
+        check(*sys.argv[2:])
+    else:
+        raise SystemExit(__doc__)
