@@ -153,7 +153,9 @@ case_desktop_entry_and_mime_types_valid() {
     mkdir -p "$mime/packages"
     cp "$SOURCE_DIR/packaging/tstyles-mime.xml" "$mime/packages/tstyles.xml"
     xmllint --noout "$mime/packages/tstyles.xml" || fail "tstyles-mime.xml is not well-formed XML"
-    update-mime-database "$mime" 2>"$SCRATCH/mime.log" || fail "update-mime-database: $(cat "$SCRATCH/mime.log")"
+    # Our temporary share/ on the search path, or update-mime-database warns that nothing will look there.
+    XDG_DATA_DIRS="$SCRATCH" XDG_DATA_HOME="$SCRATCH" update-mime-database "$mime" 2>"$SCRATCH/mime.log" ||
+        fail "update-mime-database: $(cat "$SCRATCH/mime.log")"
     [ ! -s "$SCRATCH/mime.log" ] || fail "update-mime-database warns: $(cat "$SCRATCH/mime.log")"
     local type
     for type in x-nifti x-nrrd x-tstyles-series x-tstyles-scene; do
