@@ -174,4 +174,29 @@ case_desktop_entry_and_mime_types_valid() {
     done
 }
 
+# The .deb (`cpack -G DEB`, tools/cmake/Packaging.cmake), written into the scratch folder: what is
+# in it, and the dependencies dpkg-shlibdeps found beside the ones named by hand.
+case_deb_package_contents() {
+    command -v dpkg-shlibdeps >/dev/null || fail "dpkg-shlibdeps missing (dpkg-dev): the .deb cannot be built"
+    "${CPACK_COMMAND:-cpack}" --config "$BUILD_DIR/CPackConfig.cmake" -G DEB -B "$SCRATCH/deb" >"$SCRATCH/cpack.log" 2>&1 ||
+        fail "cpack failed: $(tail -5 "$SCRATCH/cpack.log")"
+    local deb
+    deb=$(find "$SCRATCH/deb" -maxdepth 1 -name 'tstyles_*_*.deb')
+    [ -f "$deb" ] || fail "no tstyles_*.deb in $SCRATCH/deb"
+    dpkg-deb -c "$deb" | awk '{print $6}' >"$SCRATCH/contents.txt"
+    local path
+    for path in ./usr/bin/tstyles ./usr/share/man/man1/tstyles.1 ./usr/share/applications/tstyles.desktop \
+        ./usr/share/mime/packages/tstyles.xml ./usr/share/icons/hicolor/48x48/apps/tstyles.png \
+        ./usr/share/tstyles/styles/styles.json ./usr/share/tstyles/scenes/figure1-styled-focus-step3.json \
+        ./usr/share/tstyles/superellipsoid/series.json ./usr/lib/python3/dist-packages/tstyles/__init__.py; do
+        grep -qxF "$path" "$SCRATCH/contents.txt" || fail "the .deb lacks $path"
+    done
+    grep -q '^./usr/lib/python3/dist-packages/tstyles/_native\..*\.so$' "$SCRATCH/contents.txt" ||
+        fail "the .deb lacks the Python extension module"
+    if grep -qE 'build|/work/|/home/' "$SCRATCH/contents.txt"; then fail "the .deb holds paths of the build machine"; fi
+    local depends
+    depends=$(dpkg-deb -f "$deb" Depends)
+    case "$depends" in *fonts-dejavu-core*libegl1*) ;; *) fail "Depends lacks the font or libegl1: $depends" ;; esac
+}
+
 "case_$CASE"

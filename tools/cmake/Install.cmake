@@ -2,6 +2,9 @@
 # beside itself in share/tstyles, the man page written from its own help, the desktop entry, MIME
 # types and icons, and the Python package. Nothing installed refers back to the source or build tree.
 include(GNUInstallDirs)
+# `make install` and `cpack` install what is built, without building `all` first: `all` holds the
+# tests, most of the build's time, and none of them is installed. Build, then install or pack.
+set(CMAKE_SKIP_INSTALL_ALL_DEPENDENCY ON)
 
 install(TARGETS tstyles RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
