@@ -121,7 +121,7 @@ std::optional<FileChoice> FileDialog::draw() {
     ImGui::SameLine();
     if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE)) ImGui::CloseCurrentPopup();
     if (purpose_ == FilePurpose::Open)
-        ImGui::TextDisabled("A scene (.json), or a dataset: a file of a format shown, a manifest or its folder.");
+        ImGui::TextDisabled("A scene (.json), or a dataset: a file or folder shown with its format.");
     ImGui::EndPopup();
     return choice;
 }
