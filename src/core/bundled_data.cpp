@@ -29,7 +29,8 @@ DataDirectoryChoice chooseDataDirectory(const char* environmentValue, const std:
         std::filesystem::path prefix = binary.parent_path();
         for (int up = 0; up < kMostFoldersUpToThePrefix && prefix.has_relative_path(); ++up) {
             prefix = prefix.parent_path();
-            if (isDirectory(prefix / "share" / "tstyles")) return {prefix / "share" / "tstyles", DataDirectorySource::Installed};
+            const std::filesystem::path installed = prefix / "share" / "tstyles";
+            if (isDirectory(installed)) return {installed, DataDirectorySource::Installed};
         }
     }
     return {sourceTreeData, DataDirectorySource::SourceTree};

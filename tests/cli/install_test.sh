@@ -178,8 +178,8 @@ case_desktop_entry_and_mime_types_valid() {
 # in it, and the dependencies dpkg-shlibdeps found beside the ones named by hand.
 case_deb_package_contents() {
     command -v dpkg-shlibdeps >/dev/null || fail "dpkg-shlibdeps missing (dpkg-dev): the .deb cannot be built"
-    "${CPACK_COMMAND:-cpack}" --config "$BUILD_DIR/CPackConfig.cmake" -G DEB -B "$SCRATCH/deb" >"$SCRATCH/cpack.log" 2>&1 ||
-        fail "cpack failed: $(tail -5 "$SCRATCH/cpack.log")"
+    "${CPACK_COMMAND:-cpack}" --config "$BUILD_DIR/CPackConfig.cmake" -G DEB -B "$SCRATCH/deb" \
+        >"$SCRATCH/cpack.log" 2>&1 || fail "cpack failed: $(tail -5 "$SCRATCH/cpack.log")"
     local deb
     deb=$(find "$SCRATCH/deb" -maxdepth 1 -name 'tstyles_*_*.deb')
     [ -f "$deb" ] || fail "no tstyles_*.deb in $SCRATCH/deb"
