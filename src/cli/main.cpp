@@ -5,6 +5,8 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.h"
+#include "manual_page.h"
+#include "version_text.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/distributed/mpi_session.h"
 
@@ -12,11 +14,13 @@ int main(int argc, char** argv) {
     using namespace tstyles;
     CLI::App app{"Temporal Styles: time-varying volume rendering with temporal style transfer functions"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", [] { return cli::versionText(); },
+                         "Print the version, the OpenGL renderer `render` would use and where the bundled data is");
     const std::vector<cli::Command> commands = {cli::addRenderCommand(app), cli::addInfoCommand(app),
                                                 cli::addBenchCommand(app), cli::addViewCommand(app),
                                                 cli::addConvertCommand(app), cli::addSceneCommand(app),
                                                 cli::addAnimateCommand(app), cli::addCompareCommand(app),
-                                                cli::addCheckCommand(app)};
+                                                cli::addCheckCommand(app), cli::addManualPageCommand(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {

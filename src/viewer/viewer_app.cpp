@@ -52,6 +52,7 @@ ViewerApp::ViewerApp(const ViewerOptions& options)
       lastRenderable_(document_.scene),
       savedScene_(document_.scene) {
     uploadSeries(*document_.series);
+    if (options.inputs.size() == 1) recentFiles_.remember(options.inputs.front());
 }
 
 void ViewerApp::uploadSeries(const Series& series) {
@@ -106,8 +107,10 @@ void ViewerApp::frame() {
 
 void ViewerApp::buildUi(double seconds) {
     const MenuState menu{history_.canUndo() || !(document_.scene == history_.latest()), history_.canRedo(),
-                         !editors_.focused().selection().empty(), time_.playing};
-    const float menuHeight = drawMainMenu(menu, commands_);
+                         !editors_.focused().selection().empty(), time_.playing, recentFiles_.existing()};
+    std::optional<std::filesystem::path> openRecent;
+    const float menuHeight = drawMainMenu(menu, commands_, openRecent);
+    if (openRecent) openPath(*openRecent);
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     layout_ = layoutViewer({display.x, display.y}, menuHeight);
 

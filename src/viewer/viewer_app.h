@@ -3,6 +3,7 @@
 #pragma once
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -15,6 +16,7 @@
 #include "imgui_platform.h"
 #include "movie_export.h"
 #include "progressive_frame.h"
+#include "recent_files.h"
 #include "scene_history.h"
 #include "script_player.h"
 #include "time_control.h"
@@ -109,6 +111,9 @@ private:
     std::optional<Pick> pick_;
     UiAnchors anchors_;
     FileDialog fileDialog_;
+    // Scripted sessions (tests) leave the user's list alone.
+    RecentFiles recentFiles_{options_.script ? std::filesystem::path()
+                                             : recentFilesLocation(std::getenv("XDG_STATE_HOME"), std::getenv("HOME"))};
     ErrorDialog errorDialog_;
     QuitDialog quitDialog_;
     FrameStatistics statistics_;

@@ -134,6 +134,7 @@ void ViewerApp::openPath(const std::filesystem::path& path) {
             throw;
         }
         std::cout << "opened " << path.string() << std::endl;
+        recentFiles_.remember(path);
     } catch (const InputError& error) {
         errorDialog_.show(error.what());
     } catch (const std::exception& error) {

@@ -10,6 +10,8 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include "tstyles/data/series_opener.h"
+
 namespace tstyles::viewer {
 namespace {
 
@@ -22,11 +24,22 @@ const char* titleOf(FilePurpose purpose) {
     return "###file dialog";
 }
 
-bool listed(const std::filesystem::directory_entry& entry, FilePurpose purpose) {
+// What the listing says a file or folder is ("" for nothing beside it); none: not listed. Opening
+// lists what the program reads (the format table's extensions and folders, through formatNamedBy,
+// and .json scenes and manifests); saving lists the kind of file being saved.
+std::optional<std::string> describeEntry(const std::filesystem::directory_entry& entry, FilePurpose purpose) {
     std::error_code error;
-    if (entry.is_directory(error)) return entry.path().filename().string().front() != '.';
+    const std::string name = entry.path().filename().string();
+    const bool folder = entry.is_directory(error);
+    if (folder && name.front() == '.') return std::nullopt;
     const std::string extension = entry.path().extension().string();
-    return purpose == FilePurpose::SaveScreenshot ? extension == ".png" : extension == ".json";
+    if (purpose == FilePurpose::SaveScreenshot)
+        return folder || extension == ".png" ? std::optional<std::string>("") : std::nullopt;
+    const std::string format = purpose == FilePurpose::Open ? formatNamedBy(entry.path()) : "";
+    if (!format.empty()) return format;
+    if (folder) return "";
+    if (extension == ".json") return purpose == FilePurpose::Open ? "scene or manifest" : "";
+    return std::nullopt;
 }
 
 bool enterPressed() { return ImGui::IsKeyPressed(GLFW_KEY_ENTER) || ImGui::IsKeyPressed(GLFW_KEY_KP_ENTER); }
@@ -45,14 +58,17 @@ void FileDialog::enter(const std::filesystem::path& folder) {
     entries_.clear();
     listingError_.clear();
     std::error_code error;
-    for (const auto& entry : std::filesystem::directory_iterator(folder_, error))
-        if (listed(entry, purpose_)) entries_.push_back(entry);
-    if (error) listingError_ = "cannot list " + folder_.string() + ": " + error.message();
-    std::sort(entries_.begin(), entries_.end(), [](const auto& a, const auto& b) {
+    for (const auto& entry : std::filesystem::directory_iterator(folder_, error)) {
+        const std::optional<std::string> kind = describeEntry(entry, purpose_);
+        if (!kind) continue;
         std::error_code ignored;
-        const bool aFolder = a.is_directory(ignored);
-        const bool bFolder = b.is_directory(ignored);
-        return aFolder != bFolder ? aFolder : a.path().filename() < b.path().filename();
+        const bool isFolder = entry.is_directory(ignored);
+        const std::string name = entry.path().filename().string() + (isFolder ? "/" : "");
+        entries_.push_back({entry.path(), isFolder, kind->empty() ? name : name + "   (" + *kind + ")"});
+    }
+    if (error) listingError_ = "cannot list " + folder_.string() + ": " + error.message();
+    std::sort(entries_.begin(), entries_.end(), [](const Entry& a, const Entry& b) {
+        return a.folder != b.folder ? a.folder : a.path.filename() < b.path.filename();
     });
 }
 
@@ -77,19 +93,16 @@ std::optional<FileChoice> FileDialog::draw() {
     ImGui::BeginChild("entries", {0.0f, -footer}, true);
     if (!listingError_.empty()) ImGui::TextColored({1.0f, 0.5f, 0.4f, 1.0f}, "%s", listingError_.c_str());
     std::optional<std::filesystem::path> enterFolder;
-    for (const auto& entry : entries_) {
-        std::error_code error;
-        const bool folder = entry.is_directory(error);
-        const std::string name = entry.path().filename().string();
-        const bool dataset = folder && std::filesystem::exists(entry.path() / "series.json", error);
-        const std::string label = folder ? name + "/" + (dataset ? "   (dataset)" : "") : name;
-        if (ImGui::Selectable(label.c_str(), !folder && name == name_, ImGuiSelectableFlags_AllowDoubleClick)) {
+    for (const Entry& entry : entries_) {
+        const bool folder = entry.folder;
+        const std::string name = entry.path.filename().string();
+        if (ImGui::Selectable(entry.label.c_str(), !folder && name == name_, ImGuiSelectableFlags_AllowDoubleClick)) {
             if (folder && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left))
-                enterFolder = entry.path();
+                enterFolder = entry.path;
             else if (folder)
                 name_ = name;
             else if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left))
-                choose(entry.path());
+                choose(entry.path);
             else
                 name_ = name;
         }
@@ -108,7 +121,7 @@ std::optional<FileChoice> FileDialog::draw() {
     ImGui::SameLine();
     if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE)) ImGui::CloseCurrentPopup();
     if (purpose_ == FilePurpose::Open)
-        ImGui::TextDisabled("A scene (.json) or a dataset: its folder or its series.json manifest.");
+        ImGui::TextDisabled("A scene (.json), or a dataset: a file or folder shown with its format.");
     ImGui::EndPopup();
     return choice;
 }

@@ -24,12 +24,18 @@ public:
     std::optional<FileChoice> draw();
 
 private:
+    // A line of the listing: the format beside it is worked out once, when the folder is entered.
+    struct Entry {
+        std::filesystem::path path;
+        bool folder = false;
+        std::string label;  // "ocean.nc   (NetCDF)", "bounce/   (tstyles manifest)"
+    };
     void enter(const std::filesystem::path& folder);
 
     bool openRequested_ = false;
     FilePurpose purpose_ = FilePurpose::Open;
     std::filesystem::path folder_;
-    std::vector<std::filesystem::directory_entry> entries_;
+    std::vector<Entry> entries_;
     std::string name_;
     std::string listingError_;
 };

@@ -5,13 +5,18 @@
 
 namespace tstyles::viewer {
 
-float drawMainMenu(const MenuState& state, ViewerCommands& commands) {
+float drawMainMenu(const MenuState& state, ViewerCommands& commands, std::optional<std::filesystem::path>& openRecent) {
     if (!ImGui::BeginMainMenuBar()) return 0.0f;
     auto item = [&](const char* label, const char* shortcut, ViewerCommand command, bool enabled = true) {
         if (ImGui::MenuItem(label, shortcut, false, enabled)) commands.push_back(command);
     };
     if (ImGui::BeginMenu("File")) {
         item("Open scene or dataset...", "Ctrl+O", ViewerCommand::Open);
+        if (ImGui::BeginMenu("Open recent", !state.recentFiles.empty())) {
+            for (const auto& path : state.recentFiles)
+                if (ImGui::MenuItem(path.string().c_str())) openRecent = path;
+            ImGui::EndMenu();
+        }
         item("Save scene", "Ctrl+S", ViewerCommand::Save);
         item("Save scene as...", "Ctrl+Shift+S", ViewerCommand::SaveAs);
         item("Save screenshot (PNG)...", "F12", ViewerCommand::Screenshot);

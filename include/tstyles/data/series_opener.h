@@ -29,6 +29,12 @@ std::string seriesFormatName(const std::filesystem::path& input);
 // whole: OME-Zarr stores, DICOM folders and folders of TIFF files are not manifests).
 bool isManifestInput(const std::filesystem::path& input);
 
+// The format a file or folder would be read as, judged by its name alone: a format's extension, a
+// folder a format claims, a folder holding series.json ("tstyles manifest"); empty for anything
+// else (a .json may be a scene). For file browsers: it opens nothing, and rows added to the format
+// table show up in it without a change here.
+std::string formatNamedBy(const std::filesystem::path& input);
+
 // True for a file whose name ends like a format's files (".nc", ".pvd", ".series", ...).
 bool isNamedLikeSeriesFile(const std::filesystem::path& input);
 

@@ -145,6 +145,16 @@ bool isManifestInput(const std::filesystem::path& input) {
 
 bool isNamedLikeSeriesFile(const std::filesystem::path& input) { return formatByExtension(input) != nullptr; }
 
+std::string formatNamedBy(const std::filesystem::path& input) {
+    std::error_code error;
+    if (std::filesystem::is_directory(input, error)) {
+        if (const SeriesFormat* format = formatClaimingFolder(input)) return format->name;
+        return std::filesystem::is_regular_file(input / "series.json", error) ? "tstyles manifest" : "";
+    }
+    const SeriesFormat* format = formatByExtension(input);
+    return format ? format->name : "";
+}
+
 std::string seriesFormatName(const std::filesystem::path& input) {
     return isManifestInput(input) ? "tstyles manifest" : formatOf(input, {}).name;
 }

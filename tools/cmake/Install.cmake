@@ -1,0 +1,47 @@
+# `cmake --install build --prefix DIR` (docs/install.md): the program, the run-time data it finds
+# beside itself in share/tstyles, the man page written from its own help, the desktop entry, MIME
+# types and icons, and the Python package. Nothing installed refers back to the source or build tree.
+include(GNUInstallDirs)
+# `make install` and `cpack` install what is built, without building `all` first: `all` holds the
+# tests, most of the build's time, and none of them is installed. Build, then install or pack.
+set(CMAKE_SKIP_INSTALL_ALL_DEPENDENCY ON)
+
+install(TARGETS tstyles RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+
+# The bundled data, found from the executable as ../share/tstyles (src/core/bundled_data.cpp). The
+# datasets are generated at build time into the source tree's data/; the small ones are installed
+# with the scenes that use them (sizes in docs/install.md): the partly overlapping super-ellipsoid
+# (Figures 1 and 4, the scene `view` opens by default), the hurricane (Figure 5, Figure 6 left, the
+# compositor examples) and the warped box. The sonar survey (19 MiB) and the aligned
+# super-ellipsoid (11 MiB) are test and benchmark data: they and their scenes stay out.
+set(TSTYLES_INSTALL_DATA_DIR ${CMAKE_INSTALL_DATADIR}/tstyles)
+install(DIRECTORY ${CMAKE_SOURCE_DIR}/data/styles ${CMAKE_SOURCE_DIR}/data/superellipsoid
+                  ${CMAKE_SOURCE_DIR}/data/hurricane ${CMAKE_SOURCE_DIR}/data/warped-box
+        DESTINATION ${TSTYLES_INSTALL_DATA_DIR})
+file(GLOB TSTYLES_INSTALLED_SCENES CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/data/scenes/figure1-*.json
+     ${CMAKE_SOURCE_DIR}/data/scenes/figure4-*.json ${CMAKE_SOURCE_DIR}/data/scenes/figure5-*.json
+     ${CMAKE_SOURCE_DIR}/data/scenes/figure6-left-*.json ${CMAKE_SOURCE_DIR}/data/scenes/compositors-hurricane-*.json
+     ${CMAKE_SOURCE_DIR}/data/scenes/warped-box-*.json)
+install(FILES ${TSTYLES_INSTALLED_SCENES} DESTINATION ${TSTYLES_INSTALL_DATA_DIR}/scenes)
+
+# tstyles.1 from the program's own options (the hidden `tstyles manual-page`), so it never
+# disagrees with --help; tests/cli/install_test.sh compares the two.
+set(TSTYLES_MAN_PAGE ${CMAKE_BINARY_DIR}/man/tstyles.1)
+add_custom_command(OUTPUT ${TSTYLES_MAN_PAGE}
+  COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_BINARY_DIR}/man
+  COMMAND tstyles manual-page --output ${TSTYLES_MAN_PAGE}
+  DEPENDS tstyles
+  COMMENT "Writing the man page tstyles.1 from tstyles --help"
+  VERBATIM)
+add_custom_target(tstyles_manual_page ALL DEPENDS ${TSTYLES_MAN_PAGE})
+install(FILES ${TSTYLES_MAN_PAGE} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
+
+# The desktop: the applications menu entry, MIME types for the files no shared-mime-info type
+# covers, and the icon (packaging/icons, drawn by packaging/make_icons.sh from a rendered scene).
+install(FILES ${CMAKE_SOURCE_DIR}/packaging/tstyles.desktop DESTINATION ${CMAKE_INSTALL_DATADIR}/applications)
+install(FILES ${CMAKE_SOURCE_DIR}/packaging/tstyles-mime.xml DESTINATION ${CMAKE_INSTALL_DATADIR}/mime/packages
+        RENAME tstyles.xml)
+foreach(size 48 128 256)
+  install(FILES ${CMAKE_SOURCE_DIR}/packaging/icons/tstyles-${size}.png
+          DESTINATION ${CMAKE_INSTALL_DATADIR}/icons/hicolor/${size}x${size}/apps RENAME tstyles.png)
+endforeach()
