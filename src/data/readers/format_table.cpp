@@ -10,6 +10,7 @@
 #include "nrrd_reader.h"
 #include "plot3d_source.h"
 #include "stacked_files.h"
+#include "tiff_reader.h"
 #include "tstyles/core/errors.h"
 
 namespace tstyles {
@@ -35,6 +36,9 @@ const std::vector<SeriesFormat>& seriesFormats() {
          stackedFiles([](const std::filesystem::path& file, const ReadOptions&) { return openNifti(file); })},
         {"NRRD", {".nrrd", ".nhdr"}, ".nrrd .nhdr", {}, startsWithNrrdMagic,
          stackedFiles([](const std::filesystem::path& file, const ReadOptions&) { return openNrrd(file); })},
+        // Microscopy: one file, a list of files or a folder of them, read as pages (tiff_reader.h).
+        {"TIFF", {".tif", ".tiff"}, ".tif .tiff (ImageJ, OME-TIFF, plain pages), or a folder of them",
+         {"--channel", "--dims", "--axes"}, hasTiffSignature, openTiff, isTiffFolder},
         // By name only: ".bin" alone says too little.
         {"Hurricane Isabel raw", {}, "VARIABLEfHH.bin or .bin.gz", {"--dims"}, isIsabelFileName,
          [](const std::vector<std::filesystem::path>& files, const ReadOptions& options) {
