@@ -13,7 +13,7 @@ namespace tstyles {
 namespace {
 
 // "ome:Pixels" and "Pixels" are the same element.
-bool named(const pugi::xml_node& node, const char* name) {
+bool isElementNamed(const pugi::xml_node& node, const char* name) {
     const char* full = node.name();
     const char* colon = std::strrchr(full, ':');
     return std::strcmp(colon ? colon + 1 : full, name) == 0;
@@ -22,7 +22,7 @@ bool named(const pugi::xml_node& node, const char* name) {
 std::vector<pugi::xml_node> childrenNamed(const pugi::xml_node& parent, const char* name) {
     std::vector<pugi::xml_node> found;
     for (pugi::xml_node child : parent.children())
-        if (child.type() == pugi::node_element && named(child, name)) found.push_back(child);
+        if (child.type() == pugi::node_element && isElementNamed(child, name)) found.push_back(child);
     return found;
 }
 
@@ -30,7 +30,7 @@ std::string attributeField(const char* element, const char* attribute) {
     return std::string("OME-XML ") + element + " " + attribute;
 }
 
-std::optional<double> number(const pugi::xml_node& node, const char* attribute, const std::filesystem::path& file,
+std::optional<double> omeNumber(const pugi::xml_node& node, const char* attribute, const std::filesystem::path& file,
                              bool positive) {
     const pugi::xml_attribute found = node.attribute(attribute);
     if (!found) return std::nullopt;
@@ -43,37 +43,37 @@ std::optional<double> number(const pugi::xml_node& node, const char* attribute, 
     return value;
 }
 
-std::optional<std::size_t> count(const pugi::xml_node& node, const char* attribute, const std::filesystem::path& file) {
-    const std::optional<double> value = number(node, attribute, file, false);
+std::optional<std::size_t> omeCount(const pugi::xml_node& node, const char* attribute, const std::filesystem::path& file) {
+    const std::optional<double> value = omeNumber(node, attribute, file, false);
     if (!value) return std::nullopt;
     if (*value != std::floor(*value) || *value > 1e12)
         throwInputError(file, attributeField(node.name(), attribute), "is not a count");
     return std::size_t(*value);
 }
 
-std::string text(const pugi::xml_node& node, const char* attribute, const std::string& fallback) {
+std::string omeText(const pugi::xml_node& node, const char* attribute, const std::string& fallback) {
     const pugi::xml_attribute found = node.attribute(attribute);
     return found ? std::string(found.value()) : fallback;
 }
 
 OmeTiffData readTiffData(const pugi::xml_node& node, const std::filesystem::path& file) {
     OmeTiffData data;
-    data.ifd = count(node, "IFD", file);
-    data.firstZ = count(node, "FirstZ", file).value_or(0);
-    data.firstC = count(node, "FirstC", file).value_or(0);
-    data.firstT = count(node, "FirstT", file).value_or(0);
-    data.planeCount = count(node, "PlaneCount", file);
-    for (const pugi::xml_node& uuid : childrenNamed(node, "UUID")) data.fileName = text(uuid, "FileName", "");
+    data.ifd = omeCount(node, "IFD", file);
+    data.firstZ = omeCount(node, "FirstZ", file).value_or(0);
+    data.firstC = omeCount(node, "FirstC", file).value_or(0);
+    data.firstT = omeCount(node, "FirstT", file).value_or(0);
+    data.planeCount = omeCount(node, "PlaneCount", file);
+    for (const pugi::xml_node& uuid : childrenNamed(node, "UUID")) data.fileName = omeText(uuid, "FileName", "");
     return data;
 }
 
-OmeImage readImage(const pugi::xml_node& imageNode, const pugi::xml_node& pixels, const std::filesystem::path& file) {
+OmeImage readOmeImage(const pugi::xml_node& imageNode, const pugi::xml_node& pixels, const std::filesystem::path& file) {
     OmeImage image;
-    image.id = text(imageNode, "ID", "");
-    image.name = text(imageNode, "Name", "");
-    image.dimensionOrder = text(pixels, "DimensionOrder", "XYZCT");
+    image.id = omeText(imageNode, "ID", "");
+    image.name = omeText(imageNode, "Name", "");
+    image.dimensionOrder = omeText(pixels, "DimensionOrder", "XYZCT");
     const auto size = [&](const char* attribute) {
-        const std::optional<std::size_t> value = count(pixels, attribute, file);
+        const std::optional<std::size_t> value = omeCount(pixels, attribute, file);
         if (!value || *value == 0) throwInputError(file, attributeField("Pixels", attribute), "is missing or 0");
         return *value;
     };
@@ -82,27 +82,27 @@ OmeImage readImage(const pugi::xml_node& imageNode, const pugi::xml_node& pixels
     image.sizeZ = size("SizeZ");
     image.sizeC = size("SizeC");
     image.sizeT = size("SizeT");
-    image.physicalSizeX = number(pixels, "PhysicalSizeX", file, true);
-    image.physicalSizeY = number(pixels, "PhysicalSizeY", file, true);
-    image.physicalSizeZ = number(pixels, "PhysicalSizeZ", file, true);
-    image.physicalSizeXUnit = text(pixels, "PhysicalSizeXUnit", image.physicalSizeXUnit);
-    image.physicalSizeYUnit = text(pixels, "PhysicalSizeYUnit", image.physicalSizeYUnit);
-    image.physicalSizeZUnit = text(pixels, "PhysicalSizeZUnit", image.physicalSizeZUnit);
-    image.timeIncrement = number(pixels, "TimeIncrement", file, true);
-    image.timeIncrementUnit = text(pixels, "TimeIncrementUnit", image.timeIncrementUnit);
+    image.physicalSizeX = omeNumber(pixels, "PhysicalSizeX", file, true);
+    image.physicalSizeY = omeNumber(pixels, "PhysicalSizeY", file, true);
+    image.physicalSizeZ = omeNumber(pixels, "PhysicalSizeZ", file, true);
+    image.physicalSizeXUnit = omeText(pixels, "PhysicalSizeXUnit", image.physicalSizeXUnit);
+    image.physicalSizeYUnit = omeText(pixels, "PhysicalSizeYUnit", image.physicalSizeYUnit);
+    image.physicalSizeZUnit = omeText(pixels, "PhysicalSizeZUnit", image.physicalSizeZUnit);
+    image.timeIncrement = omeNumber(pixels, "TimeIncrement", file, true);
+    image.timeIncrementUnit = omeText(pixels, "TimeIncrementUnit", image.timeIncrementUnit);
     for (const pugi::xml_node& channel : childrenNamed(pixels, "Channel")) {
-        image.samplesPerPixel = count(channel, "SamplesPerPixel", file).value_or(1);
+        image.samplesPerPixel = omeCount(channel, "SamplesPerPixel", file).value_or(1);
         if (image.samplesPerPixel == 0) throwInputError(file, attributeField("Channel", "SamplesPerPixel"), "is 0");
         break;  // the first Channel says how many samples a plane's pixel holds
     }
     for (const pugi::xml_node& data : childrenNamed(pixels, "TiffData")) image.tiffData.push_back(readTiffData(data, file));
     for (const pugi::xml_node& planeNode : childrenNamed(pixels, "Plane")) {
         OmePlane plane;
-        plane.theZ = count(planeNode, "TheZ", file).value_or(0);
-        plane.theC = count(planeNode, "TheC", file).value_or(0);
-        plane.theT = count(planeNode, "TheT", file).value_or(0);
-        plane.deltaT = number(planeNode, "DeltaT", file, false);
-        plane.deltaTUnit = text(planeNode, "DeltaTUnit", plane.deltaTUnit);
+        plane.theZ = omeCount(planeNode, "TheZ", file).value_or(0);
+        plane.theC = omeCount(planeNode, "TheC", file).value_or(0);
+        plane.theT = omeCount(planeNode, "TheT", file).value_or(0);
+        plane.deltaT = omeNumber(planeNode, "DeltaT", file, false);
+        plane.deltaTUnit = omeText(planeNode, "DeltaTUnit", plane.deltaTUnit);
         image.planes.push_back(plane);
     }
     return image;
@@ -124,12 +124,12 @@ std::vector<OmeImage> parseOmeXml(const std::string& xml, const std::filesystem:
                         std::string("does not parse: ") + parsed.description() + " at byte " + std::to_string(parsed.offset));
     pugi::xml_node root;
     for (pugi::xml_node child : document.children())
-        if (child.type() == pugi::node_element && named(child, "OME")) root = child;
+        if (child.type() == pugi::node_element && isElementNamed(child, "OME")) root = child;
     if (!root) throwInputError(file, "ImageDescription (OME-XML)", "has no OME root element");
     std::vector<OmeImage> images;
     for (const pugi::xml_node& imageNode : childrenNamed(root, "Image"))
         for (const pugi::xml_node& pixels : childrenNamed(imageNode, "Pixels")) {
-            images.push_back(readImage(imageNode, pixels, file));
+            images.push_back(readOmeImage(imageNode, pixels, file));
             break;
         }
     if (images.empty()) throwInputError(file, "ImageDescription (OME-XML)", "has no Image with Pixels");

@@ -13,27 +13,27 @@
 namespace tstyles {
 namespace {
 
-constexpr const char* kField = "ImageDescription";
+constexpr const char* kImageJField = "ImageDescription";
 
 double parsePositive(const std::string& key, const std::string& value, const std::filesystem::path& file) {
     char* end = nullptr;
     const double number = std::strtod(value.c_str(), &end);
     if (value.empty() || end != value.c_str() + value.size() || !std::isfinite(number) || number <= 0.0)
-        throwInputError(file, std::string(kField) + " " + key + "=", "\"" + value + "\" is not a positive number");
+        throwInputError(file, std::string(kImageJField) + " " + key + "=", "\"" + value + "\" is not a positive number");
     return number;
 }
 
 std::size_t parseCount(const std::string& key, const std::string& value, const std::filesystem::path& file) {
     const double number = parsePositive(key, value, file);
     if (number != std::floor(number) || number > 1e12)
-        throwInputError(file, std::string(kField) + " " + key + "=", "\"" + value + "\" is not a count");
+        throwInputError(file, std::string(kImageJField) + " " + key + "=", "\"" + value + "\" is not a count");
     return std::size_t(number);
 }
 
 // Images stored one after another from the first page's data, checked against the file's size.
 std::uint64_t contiguousRun(TiffFile& tiff, const TiffPage& first, std::size_t images) {
     const std::uint64_t offset = tiff.contiguousDataOffset(first);
-    const std::string field = std::string(kField) + " images=";
+    const std::string field = std::string(kImageJField) + " images=";
     if (offset == 0)
         throwInputError(tiff.path(), field,
                         "says " + std::to_string(images) +
@@ -83,18 +83,18 @@ TiffLayout imagejLayout(TiffFile& tiff, std::vector<TiffPage> pages, const Image
     const double product = double(description.channels) * double(description.slices) * double(description.frames);
     const std::size_t images = description.images.value_or(std::size_t(product));
     if (double(images) != product)
-        throwInputError(file, std::string(kField) + " images=",
+        throwInputError(file, std::string(kImageJField) + " images=",
                         "says " + std::to_string(images) + " images, but channels x slices x frames = " +
                             std::to_string(description.channels) + " x " + std::to_string(description.slices) + " x " +
                             std::to_string(description.frames));
-    requireStepCount(file, std::string(kField) + " frames=", description.frames);
+    requireStepCount(file, std::string(kImageJField) + " frames=", description.frames);
 
     TiffLayout layout;
     layout.format = "ImageJ hyperstack TIFF";
     layout.files = {file};
     if (images != pages.size()) {
         if (pages.size() != 1 || images < pages.size())
-            throwInputError(file, std::string(kField) + " images=",
+            throwInputError(file, std::string(kImageJField) + " images=",
                             "says " + std::to_string(images) + " images, the file has " + std::to_string(pages.size()) +
                                 " pages");
         layout.contiguousOffset = contiguousRun(tiff, pages.front(), images);
@@ -109,7 +109,7 @@ TiffLayout imagejLayout(TiffFile& tiff, std::vector<TiffPage> pages, const Image
     for (std::size_t frame = 0; frame < description.frames; ++frame)
         for (std::size_t slice = 0; slice < description.slices; ++slice)
             layout.planes.push_back({0, (frame * description.slices + slice) * description.channels + channel.planeChannel});
-    requireVolumeShape(layout, file, std::string(kField) + " slices=");
+    requireVolumeShape(layout, file, std::string(kImageJField) + " slices=");
     requireSameLayout(layout);
 
     const glm::dvec2 xy = spacingFromResolution(layout.firstPage());

@@ -20,7 +20,7 @@ std::size_t chooseImage(const std::vector<OmeImage>& images, const std::filesyst
 }
 
 // The physical sizes in the x size's unit where both units are lengths we know.
-void setSpacing(const OmeImage& image, TiffLayout& layout) {
+void setOmeSpacing(const OmeImage& image, TiffLayout& layout) {
     const std::string unitX = normalizedLengthUnit(image.physicalSizeXUnit);
     const auto inUnitX = [&](const std::optional<double>& size, const std::string& unit) {
         if (!size) return 1.0;
@@ -35,7 +35,7 @@ void setSpacing(const OmeImage& image, TiffLayout& layout) {
 }
 
 // DeltaT of plane (0, channel, t) for every t when all are given and increase; else TimeIncrement.
-void setTimes(const OmeImage& image, std::size_t planeChannel, TiffLayout& layout) {
+void setOmeTimes(const OmeImage& image, std::size_t planeChannel, TiffLayout& layout) {
     std::vector<std::optional<double>> deltas(image.sizeT);
     std::string unit;
     for (const OmePlane& plane : image.planes)
@@ -102,8 +102,8 @@ TiffLayout omeLayout(TiffFile& tiff, std::vector<TiffPage> pages, const std::vec
     requireSameLayout(layout);
     layout.notes.push_back("OME-XML: " + std::to_string(image.sizeZ) + " z x " + std::to_string(image.sizeC) + " c x " +
                            std::to_string(image.sizeT) + " t, DimensionOrder " + image.dimensionOrder);
-    setSpacing(image, layout);
-    setTimes(image, channel.planeChannel, layout);
+    setOmeSpacing(image, layout);
+    setOmeTimes(image, channel.planeChannel, layout);
     return layout;
 }
 

@@ -21,7 +21,7 @@ bool timeSlowest(const ReadOptions& options, const std::filesystem::path& file) 
 
 // x and y from the resolution tags in micrometres (inch or centimetre) or as given (no unit); z
 // from ImageJ's spacing= or else as x.
-void setSpacing(const TiffPage& page, const ImageJDescription* imagej, TiffLayout& layout) {
+void setPageSpacing(const TiffPage& page, const ImageJDescription* imagej, TiffLayout& layout) {
     const glm::dvec2 xy = spacingFromResolution(page);
     const bool resolved = page.xResolution > 0.0;
     double scale = 1.0;
@@ -89,7 +89,7 @@ TiffLayout pageLayout(const std::vector<std::filesystem::path>& files, std::vect
     requireSameLayout(layout);
     const ChannelChoice channel = chooseChannel(options, 1, layout.firstPage().samplesPerPixel, file, layout.notes);
     layout.sample = channel.sample;
-    setSpacing(layout.firstPage(), imagej, layout);
+    setPageSpacing(layout.firstPage(), imagej, layout);
     for (std::size_t t = 0; t < layout.steps; ++t) layout.times.push_back(double(t));
     if (layout.steps == 1 && total > 1)
         layout.notes.push_back(std::to_string(total) +

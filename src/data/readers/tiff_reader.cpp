@@ -18,13 +18,13 @@
 namespace tstyles {
 namespace {
 
-std::string lowercase(std::string text) {
+std::string lowercaseText(std::string text) {
     for (char& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));
     return text;
 }
 
 bool isTiffName(const std::filesystem::path& file) {
-    const std::string extension = lowercase(file.extension().string());
+    const std::string extension = lowercaseText(file.extension().string());
     return (extension == ".tif" || extension == ".tiff") && file.filename().string().front() != '.';
 }
 
