@@ -167,22 +167,27 @@ def write_nifti(path, volumes, spacing, step_seconds):
 
 
 def time_lapse_values(frames=8, slices=24, size=112):
-    """TZCYX uint16: a camera offset of 100 with noise; channel 0 the cells' bodies, channel 1
-    their nuclei; three cells drift and the middle one divides from frame 3 on."""
+    """TZCYX uint16: a camera offset of 100 with noise; channel 0 the cells' nuclei (soft-edged
+    ellipsoids), channel 1 the dimmer cytoplasm around them. Three cells: one in the image's top
+    left drifting right, one in the bottom right drifting left, and the middle one dividing from
+    frame 3 on, its daughters moving apart."""
     rng = np.random.default_rng(7)
     z, y, x = np.indices((slices, size, size)).astype(np.float64)
     z *= 2.5  # z steps of 0.5 um against 0.2 um pixels: distances in pixels of x
     data = np.zeros((frames, slices, 2, size, size))
     for t in range(frames):
-        cells = [((30 + 3 * t, 34 + 2 * t, 30.0), 16.0), ((82 - 2 * t, 80, 28 + t), 14.0)]
-        split = max(0, t - 2) * 6.0  # the daughters move apart after division
-        cells += [((56 - split * 0.8, 60 + split * 0.6, 30.0), 15.0 - min(split, 24) / 8)]
+        split = max(0, t - 2) * 5.0
+        cells = [((24 + 4 * t, 22 + t, 28.0), 9.0), ((88 - 3 * t, 90, 30.0), 8.0)]
         if split:
-            cells += [((56 + split * 0.8, 60 - split * 0.6, 30.0), 15.0 - min(split, 24) / 8)]
+            cells += [((56 - split * 0.8, 56 + split * 0.6, 30.0), 7.0),
+                      ((56 + split * 0.8, 56 - split * 0.6, 30.0), 7.0)]
+        else:
+            cells += [((56, 56, 30.0), 10.0)]
         for (cx, cy, cz), radius in cells:
-            distance2 = (x - cx) ** 2 + (y - cy) ** 2 + (z - cz) ** 2
-            data[t, :, 0] += 900 * np.exp(-distance2 / (2 * radius ** 2))
-            data[t, :, 1] += 2500 * np.exp(-distance2 / (2 * (radius * 0.45) ** 2))
+            # A nucleus longer in x than in y, so the picture shows which way is up.
+            r = np.sqrt(((x - cx) / 1.3) ** 2 + (y - cy) ** 2 + (z - cz) ** 2)
+            data[t, :, 0] += 3000 / (1 + np.exp((r - radius) / 1.2))
+            data[t, :, 1] += 600 / (1 + np.exp((r - 1.8 * radius) / 3.0))
     data += 100 + rng.normal(0, 12, data.shape)
     return np.clip(data, 0, 65535).astype(np.uint16)
 
