@@ -88,8 +88,8 @@ def test_tiled_deflate_int8_with_partial_edge_tiles(folder):
 def test_plain_pages_one_volume_or_a_series_by_dims_and_axes(folder):
     pages = samples.plain_values()
     assert_values(tstyles.open(folder / "plain.tif", precision="32"), [pages])
-    assert_values(tstyles.open(folder / "plain.tif", dims="6x5x4", precision="32"), pages.reshape(3, 4, 5, 6))
-    z_slowest = tstyles.open(folder / "plain.tif", dims="6x5x4", axes="ZTYX", precision="32")
+    assert_values(tstyles.open(folder / "plain.tif", dims=(6, 5, 4), precision="32"), pages.reshape(3, 4, 5, 6))
+    z_slowest = tstyles.open(folder / "plain.tif", dims=(6, 5, 4), axes="ZTYX", precision="32")
     assert_values(z_slowest, pages.reshape(4, 3, 5, 6).transpose(1, 0, 2, 3))
     assert list(z_slowest.times) == [0.0, 1.0, 2.0]
 
