@@ -36,14 +36,14 @@ const std::vector<SeriesFormat>& seriesFormats() {
          stackedFiles([](const std::filesystem::path& file, const ReadOptions&) { return openNifti(file); })},
         {"NRRD", {".nrrd", ".nhdr"}, ".nrrd .nhdr", {}, startsWithNrrdMagic,
          stackedFiles([](const std::filesystem::path& file, const ReadOptions&) { return openNrrd(file); })},
-        // Microscopy: one file, a list of files or a folder of them, read as pages (tiff_reader.h).
-        {"TIFF", {".tif", ".tiff"}, ".tif .tiff (ImageJ, OME-TIFF, plain pages), or a folder of them",
-         {"--channel", "--dims", "--axes"}, hasTiffSignature, openTiff, isTiffFolder},
         // By name only: ".bin" alone says too little.
         {"Hurricane Isabel raw", {}, "VARIABLEfHH.bin or .bin.gz", {"--dims"}, isIsabelFileName,
          [](const std::vector<std::filesystem::path>& files, const ReadOptions& options) {
              return openIsabel(files, options.rawDims);
          }},
+        // Microscopy: one file, a list of files or a folder of them, read as pages (tiff_reader.h).
+        {"TIFF", {".tif", ".tiff"}, ".tif .tiff (ImageJ, OME-TIFF, plain pages), or a folder of them",
+         {"--channel", "--dims", "--axes"}, hasTiffSignature, openTiff, isTiffFolder},
         // Last: its content sniff reads the whole file to find a layout that fits.
         {kPlot3DFormatName, {".xyz", ".x", ".g", ".grd"}, ".xyz .x .g .grd, with --solution",
          {"--var", "--solution", "--block", "--gamma"}, looksLikePlot3DGrid,

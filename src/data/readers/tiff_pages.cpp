@@ -1,6 +1,7 @@
 // How many pages make a volume and in which order they come, for TIFFs that do not say it.
 #include "tiff_pages.h"
 
+#include <algorithm>
 #include <cctype>
 
 #include "series_assembly.h"
@@ -36,21 +37,12 @@ void setPageSpacing(const TiffPage& page, const ImageJDescription* imagej, TiffL
     else layout.notes.push_back("the file gives no z spacing: taken as the x spacing");
 }
 
-}  // namespace
-
-TiffLayout pageLayout(const std::vector<std::filesystem::path>& files, std::vector<std::vector<TiffPage>> pages,
-                      const ImageJDescription* imagej, const ReadOptions& options) {
+// --dims' NZ (checked against the pages), one file's pages when there are several multi-page files,
+// else every page.
+std::size_t slicesPerVolume(const std::vector<std::filesystem::path>& files,
+                            const std::vector<std::vector<TiffPage>>& pages, std::size_t total,
+                            const ReadOptions& options) {
     const std::filesystem::path& file = files.front();
-    std::size_t total = 0;
-    bool multiPageFiles = false;
-    for (const auto& filePages : pages) {
-        total += filePages.size();
-        multiPageFiles = multiPageFiles || filePages.size() > 1;
-    }
-    TiffLayout layout;
-    layout.format = files.size() > 1 ? "TIFF (" + std::to_string(files.size()) + " files)" : "TIFF";
-    layout.files = files;
-    const bool slowTime = timeSlowest(options, file);
     if (!options.pageAxes.empty() && !options.rawDims)
         throwInputError(file, "--axes", "needs --dims NXxNYxNZ: how many pages (slices) make one volume");
     if (options.rawDims) {
@@ -63,18 +55,32 @@ TiffLayout pageLayout(const std::vector<std::filesystem::path>& files, std::vect
         if (dims.z < 1 || total % std::size_t(dims.z) != 0)
             throwInputError(file, "--dims",
                             std::to_string(dims.z) + " slices a volume do not divide the " + std::to_string(total) + " pages");
-        layout.slices = std::size_t(dims.z);
-    } else if (files.size() > 1 && multiPageFiles) {
-        for (std::size_t index = 0; index < files.size(); ++index)
-            if (pages[index].size() != pages.front().size())
-                throwInputError(files[index], "",
-                                "has " + std::to_string(pages[index].size()) + " pages, " + files.front().filename().string() +
-                                    " has " + std::to_string(pages.front().size()) +
-                                    ": a list of multi-page TIFFs is one volume per file, all of one size");
-        layout.slices = pages.front().size();
-    } else {
-        layout.slices = total;
+        return std::size_t(dims.z);
     }
+    const bool multiPageFiles =
+        std::any_of(pages.begin(), pages.end(), [](const auto& filePages) { return filePages.size() > 1; });
+    if (files.size() == 1 || !multiPageFiles) return total;
+    for (std::size_t index = 0; index < files.size(); ++index)
+        if (pages[index].size() != pages.front().size())
+            throwInputError(files[index], "",
+                            "has " + std::to_string(pages[index].size()) + " pages, " + files.front().filename().string() +
+                                " has " + std::to_string(pages.front().size()) +
+                                ": a list of multi-page TIFFs is one volume per file, all of one size");
+    return pages.front().size();
+}
+
+}  // namespace
+
+TiffLayout pageLayout(const std::vector<std::filesystem::path>& files, std::vector<std::vector<TiffPage>> pages,
+                      const ImageJDescription* imagej, const ReadOptions& options) {
+    const std::filesystem::path& file = files.front();
+    std::size_t total = 0;
+    for (const auto& filePages : pages) total += filePages.size();
+    TiffLayout layout;
+    layout.format = files.size() > 1 ? "TIFF (" + std::to_string(files.size()) + " files)" : "TIFF";
+    layout.files = files;
+    const bool slowTime = timeSlowest(options, file);
+    layout.slices = slicesPerVolume(files, pages, total, options);
     layout.steps = total / layout.slices;
     requireStepCount(file, "--dims", layout.steps);
     for (std::size_t t = 0; t < layout.steps; ++t)
