@@ -147,11 +147,29 @@ def crc32c(data):
         for _ in range(8):
             crc = (crc >> 1) ^ (0x82F63B78 if crc & 1 else 0)
     return crc ^ 0xFFFFFFFF
+def tiff_seeds():
+    """An ImageJ hyperstack, an OME-TIFF (deflate), plain float pages and LZMA tiles, written with
+    tifffile (python3-tifffile) as users' files are; each well under 16 KiB."""
+    import numpy as np
+    import tifffile
+    folder = CORPUS / "tiff"
+    folder.mkdir(parents=True, exist_ok=True)
+    t, z, c, y, x = np.indices((2, 2, 2, 3, 5))
+    tifffile.imwrite(folder / "seed-imagej.tif", (t * 50 + z * 20 + c * 7 + y * 3 + x).astype(np.uint8), imagej=True,
+                     resolution=(5, 5), metadata={"axes": "TZCYX", "spacing": 0.5, "unit": "um", "finterval": 30})
+    tifffile.imwrite(folder / "seed-ome.ome.tif", (np.arange(2 * 2 * 3 * 5, dtype=np.uint16) * 11).reshape(2, 2, 3, 5),
+                     compression="zlib", metadata={"axes": "TZYX", "PhysicalSizeX": 0.2, "PhysicalSizeY": 0.2,
+                                                   "PhysicalSizeZ": 0.5, "TimeIncrement": 2, "TimeIncrementUnit": "s"})
+    tifffile.imwrite(folder / "seed-plain.tif", (np.arange(3 * 3 * 5, dtype=np.float32) * 0.5).reshape(3, 3, 5),
+                     metadata=None)
+    tifffile.imwrite(folder / "seed-tiled.tif", (np.arange(3 * 20 * 18, dtype=np.int16) - 300).reshape(3, 20, 18),
+                     tile=(16, 16), compression="lzma", metadata=None)
 
 
 def main():
     samples, data = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
-    for target in ["manifest", "scene", "nrrd", "netcdf", "netcdf_header", "nifti", "isabel", "plot3d", "style_image", "zarr"]:
+    for target in ["manifest", "scene", "nrrd", "netcdf", "netcdf_header", "nifti", "isabel", "plot3d", "style_image",
+                   "zarr", "tiff"]:
         for seed in (CORPUS / target).glob("seed-*"):
             seed.unlink()
     manifest_seeds()
@@ -172,6 +190,7 @@ def main():
     png_seed(data)
     put("style_image", "huge-header.png", (samples / "huge.png").read_bytes())
     zarr_seeds()
+    tiff_seeds()
 
 
 if __name__ == "__main__":

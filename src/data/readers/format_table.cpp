@@ -12,6 +12,7 @@
 #include "plot3d_source.h"
 #include "stacked_files.h"
 #include "vtk_reader.h"
+#include "tiff_reader.h"
 #include "tstyles/core/errors.h"
 
 namespace tstyles {
@@ -54,6 +55,9 @@ const std::vector<SeriesFormat>& seriesFormats() {
              return openOmeZarr(files.front(), options);
          },
          isOmeZarrFolder},
+        // Microscopy: one file, a list of files or a folder of them, read as pages (tiff_reader.h).
+        {"TIFF", {".tif", ".tiff"}, ".tif .tiff (ImageJ, OME-TIFF, plain pages), or a folder of them",
+         {"--channel", "--dims", "--axes"}, hasTiffSignature, openTiff, isTiffFolder},
         // Last: its content sniff reads the whole file to find a layout that fits.
         {kPlot3DFormatName, {".xyz", ".x", ".g", ".grd"}, ".xyz .x .g .grd, with --solution",
          {"--var", "--solution", "--block", "--gamma"}, looksLikePlot3DGrid,
