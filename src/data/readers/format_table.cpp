@@ -4,6 +4,8 @@
 
 #include <fstream>
 
+#include "dicom_files.h"
+#include "dicom_reader.h"
 #include "isabel_reader.h"
 #include "netcdf_reader.h"
 #include "nifti_reader.h"
@@ -35,6 +37,9 @@ const std::vector<SeriesFormat>& seriesFormats() {
          stackedFiles([](const std::filesystem::path& file, const ReadOptions&) { return openNifti(file); })},
         {"NRRD", {".nrrd", ".nhdr"}, ".nrrd .nhdr", {}, startsWithNrrdMagic,
          stackedFiles([](const std::filesystem::path& file, const ReadOptions&) { return openNrrd(file); })},
+        // Files, lists of files, or folders (nested ones too) of one or more series; --series picks one.
+        {"DICOM", {".dcm", ".dicom"}, ".dcm .dicom, files with the DICM magic, or their folder", {"--series"},
+         hasDicomMagic, openDicom, isDicomFolder},
         // By name only: ".bin" alone says too little.
         {"Hurricane Isabel raw", {}, "VARIABLEfHH.bin or .bin.gz", {"--dims"}, isIsabelFileName,
          [](const std::vector<std::filesystem::path>& files, const ReadOptions& options) {
