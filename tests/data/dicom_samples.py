@@ -212,30 +212,46 @@ def ellipsoid(shape, centre, radii):
     return ((x - centre[0]) / radii[0]) ** 2 + ((y - centre[1]) / radii[1]) ** 2 + ((z - centre[2]) / radii[2]) ** 2 <= 1
 
 
-def write_cardiac_cine(folder, phases=8, size=64, slices=24):
-    """A realistic cine: a torso (ellipse, 1.5 mm pixels) with a beating, left-lying heart and a
-    spine behind it, 8 phases of one RR interval, axial slices head first, one file a slice."""
+def write_cardiac_perfusion(folder, steps=8, size=64, slices=24):
+    """A realistic first-pass perfusion series: a torso (1.5 mm pixels) with dark lungs and a spine;
+    a contrast bolus reaches the right ventricle first, then the left ventricle, then the
+    myocardium around it. 8 time-steps 3 s apart (AcquisitionTime), axial slices from the feet up,
+    one file a slice."""
     uid = UID_ROOT + "13"
     shape = (slices, size, size)
-    torso = ellipsoid(shape, (size / 2, size / 2, slices / 2), (size * 0.45, size * 0.32, slices * 0.9))
-    spine = ellipsoid(shape, (size / 2, size * 0.72, slices / 2), (4, 4, slices))
+    c = size / 2
+    torso = ellipsoid(shape, (c, c, slices / 2), (size * 0.45, size * 0.32, slices * 0.9))
+    lungs = (ellipsoid(shape, (c - 16, c - 2, slices / 2), (9, 13, slices * 0.6)) |
+             ellipsoid(shape, (c + 17, c - 2, slices / 2), (8, 13, slices * 0.6)))
+    spine = ellipsoid(shape, (c, size * 0.76, slices / 2), (4, 4, slices))
+    # The left ventricle toward the patient's left (LPS +x, higher column), the right one in front of
+    # it toward the patient's right; the myocardium a shell around the left ventricle.
+    myocardium = ellipsoid(shape, (c + 7, c - 3, slices / 2), (11, 10, 8))
+    left_pool = ellipsoid(shape, (c + 7, c - 3, slices / 2), (6, 5.5, 5))
+    right_pool = ellipsoid(shape, (c - 4, c - 9, slices / 2), (6, 4, 6)) & ~myocardium
+
+    def bolus(step, peak):
+        return math.exp(-((step - peak) / 1.2) ** 2)
+
     number = 1
-    for phase in range(phases):
-        squeeze = 0.75 + 0.25 * math.cos(2 * math.pi * phase / phases)
-        # The heart lies to the patient's left (LPS +x: higher column index) and anterior (lower row).
-        heart = ellipsoid(shape, (size * 0.6, size * 0.42, slices / 2), (9 * squeeze, 8 * squeeze, 7 * squeeze))
-        volume = np.where(torso, 300, 0) + np.where(spine, 700, 0) + np.where(heart, 600 + 200 * (1 - squeeze), 0)
+    for step in range(steps):
+        volume = np.where(torso, 60, 0)
+        volume = np.where(lungs, 10, volume)
+        volume = np.where(spine, 200, volume)
+        volume = np.where(myocardium, 150 + 450 * bolus(step, 5), volume)
+        volume = np.where(left_pool, 150 + 850 * bolus(step, 3), volume)
+        volume = np.where(right_pool, 150 + 850 * bolus(step, 1), volume)
         for z in range(slices):
-            ds = new_file(MR_IMAGE, f"{uid}.{phase}.{z}", uid, 4, "cardiac cine (phantom)", "MR")
+            ds = new_file(MR_IMAGE, f"{uid}.{step}.{z}", uid, 4, "first-pass perfusion (phantom)", "MR")
             ds.ImagePositionPatient = [ds_text(-size * 0.75), ds_text(-size * 0.75), ds_text(z * 4.0)]
             ds.ImageOrientationPatient = ["1", "0", "0", "0", "1", "0"]
             ds.PixelSpacing = ["1.5", "1.5"]
             ds.SliceThickness = "4"
-            ds.TriggerTime = ds_text(phase * 100.0)
-            ds.TemporalPositionIdentifier = phase + 1
+            ds.AcquisitionDate = "20261127"
+            ds.AcquisitionTime = f"0930{step * 3:02d}.{z * 100:06d}"  # slices 0.1 s apart within a step
             ds.InstanceNumber = number
             number += 1
-            set_pixels(ds, volume[z])
+            set_pixels(ds, volume[z].round())
             save(ds, os.path.join(folder, f"{number:05d}"))
 
 
@@ -301,10 +317,10 @@ SAMPLES = {
     "head_up": lambda out: write_head_up(os.path.join(out, "head_up")),
     "cine_nifti": lambda out: write_cine_as_nifti(os.path.join(out, "cine.nii")),
     "fuzz_seeds": lambda out: write_fuzz_seeds(out),
-    "cardiac": lambda out: write_cardiac_cine(os.path.join(out, "cardiac")),
+    "perfusion": lambda out: write_cardiac_perfusion(os.path.join(out, "perfusion")),
 }
 
 if __name__ == "__main__":
     out = sys.argv[1]
-    for name in sys.argv[2:] or [name for name in SAMPLES if name not in ("cardiac", "fuzz_seeds")]:
+    for name in sys.argv[2:] or [name for name in SAMPLES if name not in ("perfusion", "fuzz_seeds")]:
         SAMPLES[name](out)

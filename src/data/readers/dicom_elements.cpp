@@ -2,7 +2,10 @@
 // date and time to be in range, so a damaged header never becomes a wrong position or time.
 #include "dicom_elements.h"
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <cstdlib>
 
@@ -107,6 +110,45 @@ std::optional<std::uint16_t> dicomUnsignedShort(const gdcm::DataSet& data, const
         badValue(context, tag, keyword, "holds " + std::to_string(bytes->GetLength()) + " bytes, not a 2-byte number");
     const auto* raw = reinterpret_cast<const unsigned char*>(bytes->GetPointer());
     return context.bigEndian ? std::uint16_t((raw[0] << 8) | raw[1]) : std::uint16_t(raw[0] | (raw[1] << 8));
+}
+
+namespace {
+
+// The first `size` bytes of a binary element in the host's order; empty when absent.
+std::optional<std::vector<unsigned char>> binaryValue(const gdcm::DataSet& data, const gdcm::Tag& tag,
+                                                      const char* keyword, std::size_t size,
+                                                      const DicomContext& context) {
+    if (!data.FindDataElement(tag)) return std::nullopt;
+    const gdcm::ByteValue* bytes = data.GetDataElement(tag).GetByteValue();
+    if (bytes == nullptr || bytes->GetLength() == 0) return std::nullopt;
+    if (bytes->GetLength() < size || bytes->GetPointer() == nullptr)
+        badValue(context, tag, keyword,
+                 "holds " + std::to_string(bytes->GetLength()) + " bytes, not a " + std::to_string(size) + "-byte number");
+    std::vector<unsigned char> value(bytes->GetPointer(), bytes->GetPointer() + size);
+    const bool hostIsBig = std::endian::native == std::endian::big;
+    if (context.bigEndian != hostIsBig) std::reverse(value.begin(), value.end());
+    return value;
+}
+
+}  // namespace
+
+std::optional<double> dicomUnsignedLong(const gdcm::DataSet& data, const gdcm::Tag& tag, const char* keyword,
+                                        const DicomContext& context) {
+    const auto bytes = binaryValue(data, tag, keyword, 4, context);
+    if (!bytes) return std::nullopt;
+    std::uint32_t value;
+    std::memcpy(&value, bytes->data(), 4);
+    return double(value);
+}
+
+std::optional<double> dicomFloat64(const gdcm::DataSet& data, const gdcm::Tag& tag, const char* keyword,
+                                   const DicomContext& context) {
+    const auto bytes = binaryValue(data, tag, keyword, 8, context);
+    if (!bytes) return std::nullopt;
+    double value;
+    std::memcpy(&value, bytes->data(), 8);
+    if (!std::isfinite(value)) badValue(context, tag, keyword, "is not a finite number");
+    return value;
 }
 
 double dicomDateSeconds(const std::string& date, const gdcm::Tag& tag, const char* keyword, const DicomContext& context) {

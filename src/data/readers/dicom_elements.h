@@ -39,6 +39,13 @@ std::optional<double> dicomNumber(const gdcm::DataSet& data, const gdcm::Tag& ta
 std::optional<std::uint16_t> dicomUnsignedShort(const gdcm::DataSet& data, const gdcm::Tag& tag, const char* keyword,
                                                 const DicomContext& context);
 
+// A UL element (TemporalPositionIndex) or an FD element (NominalCardiacTriggerDelayTime): its first
+// value, as a double.
+std::optional<double> dicomUnsignedLong(const gdcm::DataSet& data, const gdcm::Tag& tag, const char* keyword,
+                                        const DicomContext& context);
+std::optional<double> dicomFloat64(const gdcm::DataSet& data, const gdcm::Tag& tag, const char* keyword,
+                                   const DicomContext& context);
+
 // Seconds since 0000-03-01 (a day count that needs no calendar tables) from a date (DA,
 // "YYYYMMDD"), a time (TM, "HHMMSS.FFFFFF" or the old "HH:MM:SS.frac"), or a date-time (DT,
 // "YYYYMMDDHHMMSS.FFFFFF&ZZXX"; the offset is ignored: a series is taken in one place).

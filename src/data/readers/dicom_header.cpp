@@ -52,6 +52,16 @@ std::optional<std::vector<double>> frameNumbers(const FrameSources& sources, con
     return holder ? dicomNumbers(*holder, tag, keyword, count, sources.context) : std::nullopt;
 }
 
+// A binary value (UL, FD) of the frame's macro `sequence`, read by `read`.
+template <typename Read>
+std::optional<double> frameBinary(const FrameSources& sources, const gdcm::Tag& sequence, const gdcm::Tag& tag,
+                                  const char* keyword, Read read) {
+    std::vector<gdcm::DataSet> scratch;
+    scratch.reserve(2);
+    const gdcm::DataSet* holder = holderOf(sources, sequence, tag, scratch);
+    return holder ? read(*holder, tag, keyword, sources.context) : std::nullopt;
+}
+
 std::optional<std::string> frameText(const FrameSources& sources, const gdcm::Tag& sequence, const gdcm::Tag& tag) {
     std::vector<gdcm::DataSet> scratch;
     scratch.reserve(2);
@@ -104,13 +114,13 @@ DicomFrame readFrame(const FrameSources& sources, std::size_t index) {
                              .value_or(1.0);
     frame.rescaleIntercept =
         firstOf(frameNumbers(sources, transformation, gdcm::Tag(0x0028, 0x1052), "RescaleIntercept", 1)).value_or(0.0);
-    frame.temporalPosition = firstOf(frameNumbers(sources, gdcm::Tag(0x0020, 0x9111), gdcm::Tag(0x0020, 0x9128),
-                                                  "TemporalPositionIndex", 1));
+    frame.temporalPosition = frameBinary(sources, gdcm::Tag(0x0020, 0x9111), gdcm::Tag(0x0020, 0x9128),
+                                         "TemporalPositionIndex", dicomUnsignedLong);
     if (!frame.temporalPosition)
         frame.temporalPosition = dicomNumber(sources.top, gdcm::Tag(0x0020, 0x0100), "TemporalPositionIdentifier",
                                              sources.context);
-    frame.triggerTimeMs = firstOf(frameNumbers(sources, gdcm::Tag(0x0018, 0x9118), gdcm::Tag(0x0020, 0x9153),
-                                               "NominalCardiacTriggerDelayTime", 1));
+    frame.triggerTimeMs = frameBinary(sources, gdcm::Tag(0x0018, 0x9118), gdcm::Tag(0x0020, 0x9153),
+                                      "NominalCardiacTriggerDelayTime", dicomFloat64);
     if (!frame.triggerTimeMs)
         frame.triggerTimeMs = dicomNumber(sources.top, gdcm::Tag(0x0018, 0x1060), "TriggerTime", sources.context);
     frame.acquiredSeconds = acquiredSeconds(sources);
