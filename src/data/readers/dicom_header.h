@@ -44,6 +44,8 @@ struct DicomImageFile {
     std::string photometric;        // PhotometricInterpretation
     std::string transferSyntax;     // its UID
     bool compressed = false;        // an encapsulated (compressed) transfer syntax
+    bool deflated = false;          // the whole data set deflated: file offsets say nothing of the pixels
+    std::uint64_t pixelDataOffset = 0;  // where PixelData's value starts in the file
     std::uint16_t rows = 0;
     std::uint16_t columns = 0;
     std::uint16_t samplesPerPixel = 1;

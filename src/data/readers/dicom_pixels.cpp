@@ -30,11 +30,16 @@ DicomPixelBuffer decodePixels(const DicomImageFile& image, std::uint64_t memoryC
     const double expected = double(frameBytes(image)) * double(image.frames.size());
     requireMemory(image.file, "(7FE0,0010) PixelData", expected, memoryCap,
                   "the decoded pixels of " + std::to_string(image.frames.size()) + " frames");
-    // Uncompressed pixels are in the file as they are: a file too short to hold them is cut.
-    if (!image.compressed && double(regularFileSize(image.file, "DICOM file")) < expected)
-        throwInputError(image.file, "(7FE0,0010) PixelData",
-                        "is truncated: " + std::to_string(std::uint64_t(expected)) +
-                            " bytes of pixels are needed, the whole file is shorter");
+    // Uncompressed pixels are in the file as they are: a file that ends before them is cut (GDCM
+    // would read what is there and leave the rest as it was).
+    if (!image.compressed && !image.deflated) {
+        const std::uint64_t size = regularFileSize(image.file, "DICOM file");
+        if (double(size) < double(image.pixelDataOffset) + expected)
+            throwInputError(image.file, "(7FE0,0010) PixelData",
+                            "is truncated: " + std::to_string(std::uint64_t(expected)) + " bytes of pixels from byte " +
+                                std::to_string(image.pixelDataOffset) + " are needed, the file has " +
+                                std::to_string(size) + " bytes");
+    }
     silenceGdcm();
     gdcm::ImageReader reader;
     reader.SetFileName(image.file.c_str());
