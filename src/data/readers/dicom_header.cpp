@@ -4,13 +4,13 @@
 #include "dicom_header.h"
 
 #include <cmath>
-#include <fstream>
 
 #include <gdcmException.h>
 #include <gdcmReader.h>
 #include <gdcmTrace.h>
 #include <gdcmTransferSyntax.h>
 
+#include "dicom_byte_walk.h"
 #include "dicom_elements.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/core/input_limits.h"
@@ -194,37 +194,6 @@ DicomImageFile headerOf(const gdcm::File& parsed, const std::filesystem::path& f
     return image;
 }
 
-// The file meta information (group 0002, always explicit VR little endian) walked by hand before
-// GDCM reads it: Debian's GDCM asserts (aborts) on a file cut inside this group.
-void requireWholeFileMeta(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    const std::uint64_t size = regularFileSize(file, "DICOM file");
-    std::uint64_t at = 132;  // after the preamble and "DICM"
-    unsigned char element[12];
-    while (at + 8 <= size) {
-        in.seekg(std::streamoff(at));
-        in.read(reinterpret_cast<char*>(element), 8);
-        if (!in || (element[0] | (element[1] << 8)) != 0x0002) return;  // the data set begins
-        const std::string vr(reinterpret_cast<const char*>(element) + 4, 2);
-        std::uint64_t length = 0;
-        std::uint64_t header = 8;
-        if (vr == "OB" || vr == "OW" || vr == "OF" || vr == "SQ" || vr == "UT" || vr == "UN") {
-            in.read(reinterpret_cast<char*>(element) + 8, 4);
-            if (!in) break;
-            length = std::uint64_t(element[8]) | std::uint64_t(element[9]) << 8 | std::uint64_t(element[10]) << 16 |
-                     std::uint64_t(element[11]) << 24;
-            header = 12;
-        } else {
-            length = std::uint64_t(element[6]) | std::uint64_t(element[7]) << 8;
-        }
-        if (at + header + length > size) break;
-        at += header + length;
-    }
-    if (at < size || size < 132 + 8)
-        throwInputError(file, "", "is truncated or damaged in its file meta information (group 0002, byte " +
-                                      std::to_string(at) + " of " + std::to_string(size) + ")");
-}
-
 }  // namespace
 
 void silenceGdcm() {
@@ -241,7 +210,7 @@ void silenceGdcm() {
 DicomImageFile readDicomHeader(const std::filesystem::path& file) {
     requireRegularFile(file, "DICOM file");
     silenceGdcm();
-    requireWholeFileMeta(file);
+    requireWholeDicomFile(file);
     gdcm::Reader reader;
     reader.SetFileName(file.c_str());
     // PixelData itself is skipped: the stream stops where its value starts, nothing of it is read.
