@@ -83,7 +83,7 @@ case_list_of_files() {
     printf 'plain text\n' >"$SCRATCH/notes.dcm"
     run_tstyles -- info "${files[@]}" "$SCRATCH/notes.dcm"
     expect_exit 2
-    expect_error_line "$SCRATCH/notes.dcm" "" "is not a readable DICOM file"
+    expect_error_line "$SCRATCH/notes.dcm" "" "is shorter than a DICOM preamble"
 }
 
 case_ct_uneven_slices() {
@@ -177,11 +177,11 @@ case_truncated_file() {
     expect_exit 2
     expect_error_line "$file" "(7FE0,0010) PixelData" "truncated"
     expect_no_output "$SCRATCH/out.png"
-    # Cut inside the file meta information, which is checked before GDCM reads the file.
+    # Cut inside the file meta information: every element header is walked before GDCM reads the file.
     truncate -s 200 "$file"
     run_tstyles -- info "$S/cine"
     expect_exit 2
-    expect_error_line "$file" "" "is truncated or damaged in its file meta information"
+    expect_error_line "$file" "" "is truncated or damaged at byte 192 of 200: a file meta element claims more bytes"
 }
 
 case_different_size() {

@@ -90,7 +90,8 @@ def test_ct_values_are_hounsfield_units_on_uneven_slices(written):
     step = series.step(0)
     assert step["positions"] == {"z": list(samples.CT_SLICE_Z)}
     assert step["origin"] == (5.0, 4.0, 0.0)
-    assert step["rotation"][1] == pytest.approx(0.0)
+    # Axial slices: rows toward the patient's left, columns toward the back, turned to RAS.
+    assert rotation_matrix(*step["rotation"]) == pytest.approx(LPS_TO_RAS, abs=1e-12)
 
 
 def test_the_enhanced_multiframe_file_comes_back_as_written(written):
