@@ -9,7 +9,7 @@
 # Runs under nice: the machine is shared. docs/testing.md, "Fuzzing".
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-targets_all=(manifest scene nrrd netcdf netcdf_header nifti isabel plot3d style_image zarr vtk tiff)
+targets_all=(manifest scene nrrd netcdf netcdf_header nifti isabel plot3d style_image zarr vtk tiff dicom)
 if [[ $# -ne 2 || ! $2 =~ ^[0-9]+$ ]]; then
     echo "usage: tools/fuzz.sh TARGET|all SECONDS   (targets: ${targets_all[*]})" >&2
     exit 2

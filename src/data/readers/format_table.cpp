@@ -4,6 +4,8 @@
 
 #include <fstream>
 
+#include "dicom_files.h"
+#include "dicom_reader.h"
 #include "isabel_reader.h"
 #include "netcdf_reader.h"
 #include "nifti_reader.h"
@@ -41,6 +43,9 @@ const std::vector<SeriesFormat>& seriesFormats() {
         // ParaView's time series: a collection (.pvd, .series) or the data sets themselves.
         {"VTK XML", {".pvd", ".series", ".vti", ".vts"}, ".pvd .series .vti .vts", {"--var"}, hasVtkXmlSignature,
          openVtkSeries},
+        // Files, lists of files, or folders (nested ones too) of one or more series; --series picks one.
+        {"DICOM", {".dcm", ".dicom"}, ".dcm .dicom, files with the DICM magic, or their folder", {"--series"},
+         hasDicomMagic, openDicom, isDicomFolder},
         // By name only: ".bin" alone says too little.
         {"Hurricane Isabel raw", {}, "VARIABLEfHH.bin or .bin.gz", {"--dims"}, isIsabelFileName,
          [](const std::vector<std::filesystem::path>& files, const ReadOptions& options) {

@@ -16,7 +16,7 @@
 namespace tstyles {
 namespace {
 
-std::string dimsText(const glm::ivec3& dims) {
+std::string planDimsText(const glm::ivec3& dims) {
     return std::to_string(dims.x) + " x " + std::to_string(dims.y) + " x " + std::to_string(dims.z);
 }
 
@@ -69,7 +69,7 @@ bool anyStructured(const SourceSeries& source) {
     });
     throwInputError(source.file, "--max-memory",
                     "the series needs " + byteCountText(planBytes(plan, options)) + " (" +
-                        std::to_string(plan.steps.size()) + " time-steps of up to " + dimsText(largest) +
+                        std::to_string(plan.steps.size()) + " time-steps of up to " + planDimsText(largest) +
                         " voxels, 4 bytes each in memory and " + std::to_string(bytesPerDensity(options.precision)) +
                         " on the GPU), more than the " + byteCountText(double(memoryCap(options.maxMemoryBytes))) +
                         (options.maxMemoryBytes ? " allowed: " : " allowed by default (half of this machine's memory): ") +

@@ -1,0 +1,229 @@
+// One file's header through GDCM, read up to PixelData (the pixels are read per time-step later).
+// Classic files give one frame from their top-level tags; enhanced (multi-frame) files give one per
+// item of the Per-frame Functional Groups, falling back on the Shared Functional Groups.
+#include "dicom_header.h"
+
+#include <cmath>
+
+#include <gdcmException.h>
+#include <gdcmReader.h>
+#include <gdcmTrace.h>
+#include <gdcmTransferSyntax.h>
+
+#include "dicom_byte_walk.h"
+#include "dicom_elements.h"
+#include "tstyles/core/errors.h"
+#include "tstyles/core/input_limits.h"
+
+namespace tstyles {
+namespace {
+
+const gdcm::Tag kPixelData(0x7fe0, 0x0010);
+const gdcm::Tag kSharedGroups(0x5200, 0x9229);
+const gdcm::Tag kPerFrameGroups(0x5200, 0x9230);
+
+// Where an enhanced frame's macros are found: its own per-frame item first, then the shared one,
+// then (for classic files, and tolerant writers) the top level.
+struct FrameSources {
+    const gdcm::DataSet* perFrame = nullptr;
+    const gdcm::DataSet* shared = nullptr;
+    const gdcm::DataSet& top;
+    const DicomContext& context;
+};
+
+// The first item of the macro sequence `sequence` that holds `tag`, else the top level if it does.
+const gdcm::DataSet* holderOf(const FrameSources& sources, const gdcm::Tag& sequence, const gdcm::Tag& tag,
+                              std::vector<gdcm::DataSet>& scratch) {
+    for (const gdcm::DataSet* group : {sources.perFrame, sources.shared}) {
+        if (group == nullptr) continue;
+        std::vector<gdcm::DataSet> items = dicomItems(*group, sequence, "functional group macro", 64, sources.context);
+        if (!items.empty() && items.front().FindDataElement(tag)) {
+            scratch.push_back(items.front());
+            return &scratch.back();
+        }
+    }
+    return sources.top.FindDataElement(tag) ? &sources.top : nullptr;
+}
+
+std::optional<std::vector<double>> frameNumbers(const FrameSources& sources, const gdcm::Tag& sequence,
+                                                const gdcm::Tag& tag, const char* keyword, std::size_t count) {
+    std::vector<gdcm::DataSet> scratch;
+    scratch.reserve(2);
+    const gdcm::DataSet* holder = holderOf(sources, sequence, tag, scratch);
+    return holder ? dicomNumbers(*holder, tag, keyword, count, sources.context) : std::nullopt;
+}
+
+// A binary value (UL, FD) of the frame's macro `sequence`, read by `read`.
+template <typename Read>
+std::optional<double> frameBinary(const FrameSources& sources, const gdcm::Tag& sequence, const gdcm::Tag& tag,
+                                  const char* keyword, Read read) {
+    std::vector<gdcm::DataSet> scratch;
+    scratch.reserve(2);
+    const gdcm::DataSet* holder = holderOf(sources, sequence, tag, scratch);
+    return holder ? read(*holder, tag, keyword, sources.context) : std::nullopt;
+}
+
+std::optional<std::string> frameText(const FrameSources& sources, const gdcm::Tag& sequence, const gdcm::Tag& tag) {
+    std::vector<gdcm::DataSet> scratch;
+    scratch.reserve(2);
+    const gdcm::DataSet* holder = holderOf(sources, sequence, tag, scratch);
+    return holder ? dicomText(*holder, tag) : std::nullopt;
+}
+
+// The acquisition moment: the frame's or file's date-time, else date and time, else content time.
+std::optional<double> acquiredSeconds(const FrameSources& sources) {
+    const DicomContext& context = sources.context;
+    const gdcm::Tag frameDateTime(0x0018, 0x9074), dateTime(0x0008, 0x002a);
+    if (auto text = frameText(sources, gdcm::Tag(0x0020, 0x9111), frameDateTime))
+        return dicomDateTimeSeconds(*text, frameDateTime, "FrameAcquisitionDateTime", context);
+    if (auto text = dicomText(sources.top, dateTime))
+        return dicomDateTimeSeconds(*text, dateTime, "AcquisitionDateTime", context);
+    const std::pair<gdcm::Tag, gdcm::Tag> dateAndTime[] = {{gdcm::Tag(0x0008, 0x0022), gdcm::Tag(0x0008, 0x0032)},
+                                                           {gdcm::Tag(0x0008, 0x0023), gdcm::Tag(0x0008, 0x0033)}};
+    const char* timeNames[] = {"AcquisitionTime", "ContentTime"};
+    for (int which = 0; which < 2; ++which) {
+        const auto time = dicomText(sources.top, dateAndTime[which].second);
+        if (!time) continue;
+        double seconds = dicomTimeSeconds(*time, dateAndTime[which].second, timeNames[which], context);
+        if (const auto date = dicomText(sources.top, dateAndTime[which].first))
+            seconds += dicomDateSeconds(*date, dateAndTime[which].first, "AcquisitionDate", context);
+        return seconds;
+    }
+    return std::nullopt;
+}
+
+std::optional<double> firstOf(const std::optional<std::vector<double>>& numbers) {
+    return numbers ? std::optional<double>(numbers->front()) : std::nullopt;
+}
+
+DicomFrame readFrame(const FrameSources& sources, std::size_t index) {
+    DicomFrame frame;
+    frame.file = sources.context.file;
+    frame.frameInFile = index;
+    if (auto position = frameNumbers(sources, gdcm::Tag(0x0020, 0x9113), gdcm::Tag(0x0020, 0x0032),
+                                     "ImagePositionPatient", 3))
+        frame.position = glm::dvec3((*position)[0], (*position)[1], (*position)[2]);
+    if (auto cosines = frameNumbers(sources, gdcm::Tag(0x0020, 0x9116), gdcm::Tag(0x0020, 0x0037),
+                                    "ImageOrientationPatient", 6)) {
+        frame.orientation.emplace();
+        for (std::size_t i = 0; i < 6; ++i) (*frame.orientation)[i] = (*cosines)[i];
+    }
+    if (auto spacing = frameNumbers(sources, gdcm::Tag(0x0028, 0x9110), gdcm::Tag(0x0028, 0x0030), "PixelSpacing", 2))
+        frame.pixelSpacing = std::array<double, 2>{(*spacing)[0], (*spacing)[1]};
+    const gdcm::Tag transformation(0x0028, 0x9145);
+    frame.rescaleSlope = firstOf(frameNumbers(sources, transformation, gdcm::Tag(0x0028, 0x1053), "RescaleSlope", 1))
+                             .value_or(1.0);
+    frame.rescaleIntercept =
+        firstOf(frameNumbers(sources, transformation, gdcm::Tag(0x0028, 0x1052), "RescaleIntercept", 1)).value_or(0.0);
+    frame.temporalPosition = frameBinary(sources, gdcm::Tag(0x0020, 0x9111), gdcm::Tag(0x0020, 0x9128),
+                                         "TemporalPositionIndex", dicomUnsignedLong);
+    if (!frame.temporalPosition)
+        frame.temporalPosition = dicomNumber(sources.top, gdcm::Tag(0x0020, 0x0100), "TemporalPositionIdentifier",
+                                             sources.context);
+    frame.triggerTimeMs = frameBinary(sources, gdcm::Tag(0x0018, 0x9118), gdcm::Tag(0x0020, 0x9153),
+                                      "NominalCardiacTriggerDelayTime", dicomFloat64);
+    if (!frame.triggerTimeMs)
+        frame.triggerTimeMs = dicomNumber(sources.top, gdcm::Tag(0x0018, 0x1060), "TriggerTime", sources.context);
+    frame.acquiredSeconds = acquiredSeconds(sources);
+    frame.instanceNumber = dicomNumber(sources.top, gdcm::Tag(0x0020, 0x0013), "InstanceNumber", sources.context);
+    return frame;
+}
+
+std::uint16_t requiredShort(const gdcm::DataSet& data, std::uint16_t element, const char* keyword,
+                            const DicomContext& context) {
+    const gdcm::Tag tag(0x0028, element);
+    const auto value = dicomUnsignedShort(data, tag, keyword, context);
+    if (!value) throwInputError(context.file, dicomTagName(tag, keyword), "is missing: an image needs it");
+    return *value;
+}
+
+void readPixelFormat(const gdcm::DataSet& data, const DicomContext& context, DicomImageFile& image) {
+    image.rows = requiredShort(data, 0x0010, "Rows", context);
+    image.columns = requiredShort(data, 0x0011, "Columns", context);
+    image.samplesPerPixel = dicomUnsignedShort(data, gdcm::Tag(0x0028, 0x0002), "SamplesPerPixel", context).value_or(1);
+    image.bitsAllocated = requiredShort(data, 0x0100, "BitsAllocated", context);
+    image.bitsStored = dicomUnsignedShort(data, gdcm::Tag(0x0028, 0x0101), "BitsStored", context)
+                           .value_or(image.bitsAllocated);
+    image.pixelRepresentation = requiredShort(data, 0x0103, "PixelRepresentation", context);
+    image.photometric = dicomText(data, gdcm::Tag(0x0028, 0x0004)).value_or("MONOCHROME2");
+}
+
+void readFrames(const gdcm::DataSet& data, const DicomContext& context, DicomImageFile& image) {
+    const gdcm::Tag frameCountTag(0x0028, 0x0008);
+    const double frameCount = dicomNumber(data, frameCountTag, "NumberOfFrames", context).value_or(1.0);
+    if (!(frameCount >= 1.0) || frameCount != std::floor(frameCount) || frameCount > double(kMaxDicomFrames))
+        throwInputError(context.file, dicomTagName(frameCountTag, "NumberOfFrames"),
+                        "must be a whole number from 1 to " + std::to_string(kMaxDicomFrames));
+    const std::size_t frames = std::size_t(frameCount);
+    const std::vector<gdcm::DataSet> shared = dicomItems(data, kSharedGroups, "SharedFunctionalGroupsSequence", 1, context);
+    const std::vector<gdcm::DataSet> perFrame =
+        dicomItems(data, kPerFrameGroups, "PerFrameFunctionalGroupsSequence", kMaxDicomFrames, context);
+    if (!perFrame.empty() && perFrame.size() != frames)
+        throwInputError(context.file, dicomTagName(kPerFrameGroups, "PerFrameFunctionalGroupsSequence"),
+                        "holds " + std::to_string(perFrame.size()) + " items for " + std::to_string(frames) + " frames");
+    if (frames > 1 && perFrame.empty())
+        throwInputError(context.file, dicomTagName(kPerFrameGroups, "PerFrameFunctionalGroupsSequence"),
+                        "is missing: the " + std::to_string(frames) +
+                            " frames of this multi-frame file have no positions of their own");
+    for (std::size_t index = 0; index < frames; ++index) {
+        const FrameSources sources{perFrame.empty() ? nullptr : &perFrame[index],
+                                   shared.empty() ? nullptr : &shared.front(), data, context};
+        image.frames.push_back(readFrame(sources, index));
+    }
+}
+
+DicomImageFile headerOf(const gdcm::File& parsed, const std::filesystem::path& file) {
+    const gdcm::TransferSyntax syntax = parsed.GetHeader().GetDataSetTransferSyntax();
+    const DicomContext context{file, syntax.GetSwapCode() == gdcm::SwapCode::BigEndian};
+    const gdcm::DataSet& data = parsed.GetDataSet();
+
+    DicomImageFile image;
+    image.file = file;
+    image.transferSyntax = syntax.GetString() ? syntax.GetString() : "";
+    image.compressed = syntax.IsEncapsulated();
+    image.deflated = syntax == gdcm::TransferSyntax::DeflatedExplicitVRLittleEndian;
+    image.seriesUid = dicomText(data, gdcm::Tag(0x0020, 0x000e)).value_or("");
+    image.seriesNumber = dicomNumber(data, gdcm::Tag(0x0020, 0x0011), "SeriesNumber", context);
+    image.seriesDescription = dicomText(data, gdcm::Tag(0x0008, 0x103e)).value_or("");
+    image.modality = dicomText(data, gdcm::Tag(0x0008, 0x0060)).value_or("");
+    image.rescaleType = dicomText(data, gdcm::Tag(0x0028, 0x1054)).value_or("");
+    // Rows is what every image has and nothing else: files without it (reports, DICOMDIR) hold no frames.
+    if (!data.FindDataElement(gdcm::Tag(0x0028, 0x0010))) return image;
+    readPixelFormat(data, context, image);
+    readFrames(data, context, image);
+    return image;
+}
+
+}  // namespace
+
+void silenceGdcm() {
+    // GDCM's trace switches are its own process-wide settings; set once, before the first read.
+    static const bool silenced = [] {
+        gdcm::Trace::SetDebug(false);
+        gdcm::Trace::SetWarning(false);
+        gdcm::Trace::SetError(false);
+        return true;
+    }();
+    (void)silenced;
+}
+
+DicomImageFile readDicomHeader(const std::filesystem::path& file) {
+    requireRegularFile(file, "DICOM file");
+    silenceGdcm();
+    requireWholeDicomFile(file);
+    gdcm::Reader reader;
+    reader.SetFileName(file.c_str());
+    // PixelData itself is skipped: the stream stops where its value starts, nothing of it is read.
+    if (!reader.ReadUpToTag(kPixelData, {kPixelData}))
+        throwInputError(file, "", "is not a readable DICOM file (GDCM cannot parse its header: damaged or truncated?)");
+    // GDCM throws its own exceptions on some damaged sequences: the file is bad input like any other.
+    try {
+        DicomImageFile image = headerOf(reader.GetFile(), file);
+        image.pixelDataOffset = reader.GetStreamCurrentPosition();
+        return image;
+    } catch (const gdcm::Exception& error) {
+        throwInputError(file, "", std::string("is a damaged DICOM file (GDCM: ") + error.GetDescription() + ")");
+    }
+}
+
+}  // namespace tstyles

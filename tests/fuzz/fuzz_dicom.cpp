@@ -1,0 +1,8 @@
+// Fuzz target: one DICOM file (input.dcm), classic or enhanced multi-frame, header through GDCM after
+// our checks, then its pixels decoded (GDCM's codecs: RLE, deflate, JPEG ...) and rescaled.
+#include "fuzz_series_file.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    tstyles_fuzz::openSeriesFile("input.dcm", tstyles_fuzz::asText(data, size));
+    return 0;
+}
