@@ -96,7 +96,8 @@ void requireUserFile(const PathSource& source, const std::filesystem::path& path
         case PathKind::Missing: refuse(source, path, "no such " + what);
         case PathKind::Folder: refuse(source, path, "is a folder, not " + withArticle(what));
         case PathKind::Other:
-            refuse(source, path, "is not a regular file (a device, FIFO or socket cannot be read as " + withArticle(what) + ")");
+            refuse(source, path,
+                   "is not a regular file (a device, FIFO or socket cannot be read as " + withArticle(what) + ")");
     }
 }
 
@@ -119,7 +120,8 @@ void requireOutputFile(const PathSource& source, const std::filesystem::path& pa
 void requireOutputFolder(const PathSource& source, const std::filesystem::path& path, const std::string& what) {
     requireWritableFolder(source, path);
     const PathKind kind = userPathKind(source, path);
-    if (kind != PathKind::Missing && kind != PathKind::Folder) refuse(source, path, "is a file, not " + withArticle(what));
+    if (kind != PathKind::Missing && kind != PathKind::Folder)
+        refuse(source, path, "is a file, not " + withArticle(what));
 }
 
 void throwUserPathError(const PathSource& source, const std::filesystem::path& path, const std::error_code& error) {
