@@ -7,6 +7,7 @@
 #include FT_FREETYPE_H
 
 #include "tstyles/core/errors.h"
+#include "tstyles/core/user_paths.h"
 
 namespace tstyles {
 
@@ -51,7 +52,7 @@ std::vector<char32_t> decodeUtf8(std::string_view utf8) {
 Font Font::openDefault() {
     const char* chosen = std::getenv("TSTYLES_FONT");
     const std::filesystem::path file = chosen && *chosen ? chosen : kDefaultFont;
-    if (!std::filesystem::is_regular_file(file))
+    if (userPathKind({"", chosen && *chosen ? "TSTYLES_FONT" : ""}, file) != PathKind::RegularFile)
         throwInputError(file, "", chosen && *chosen ? "the font that TSTYLES_FONT names does not exist"
                                                     : "the legend font is missing; install Debian's fonts-dejavu-core "
                                                       "(tools/install_dependencies.sh does)");
@@ -60,7 +61,7 @@ Font Font::openDefault() {
 
 Font::Font(const std::filesystem::path& file) : faces_(std::make_unique<Faces>()) {
     if (FT_Init_FreeType(&faces_->library) != 0) throwInputError(file, "", "FreeType could not start");
-    if (!std::filesystem::is_regular_file(file)) throwInputError(file, "", "no such font file");
+    if (userPathKind({}, file) != PathKind::RegularFile) throwInputError(file, "", "no such font file");
     if (FT_New_Face(faces_->library, file.c_str(), 0, &faces_->face) != 0)
         throwInputError(file, "", "FreeType cannot read it as a font");
 }

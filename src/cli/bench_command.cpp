@@ -20,6 +20,7 @@
 #include "gpu_memory_option.h"
 #include "tstyles/core/atomic_file.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/core/user_paths.h"
 #include "tstyles/data/manifest.h"
 #include "tstyles/gl/gl_api.h"
 #include "tstyles/render/renderer.h"
@@ -196,7 +197,7 @@ void runSeries(Renderer& renderer, const Series& series, const BenchDataset& dat
 void runMatrix(Renderer& renderer, const BenchOptions& options, std::vector<BenchResult>& results) {
     for (const auto& folder : options.datasets) {
         const std::filesystem::path manifest = bundledDataDirectory() / folder / "series.json";
-        if (!std::filesystem::exists(manifest)) {
+        if (userPathKind({"", "--datasets"}, manifest) == PathKind::Missing) {
             std::cerr << "note: skipping dataset " << folder << ": " << manifest.string() << " does not exist\n";
             continue;
         }

@@ -12,6 +12,7 @@
 #include "image_size_text.h"
 #include "tstyles/core/atomic_file.h"
 #include "tstyles/core/bundled_data.h"
+#include "tstyles/core/user_paths.h"
 #include "tstyles/data/manifest.h"
 #include "tstyles/distributed/distributed_rendering.h"
 #include "tstyles/scene/scene_file.h"
@@ -108,7 +109,7 @@ int runDistributedBench(const DistributedBenchOptions& options) {
     });
     std::vector<DistributedResult> results;
     for (const std::string& folder : options.datasets) {
-        if (!std::filesystem::exists(bundledDataDirectory() / folder / "series.json")) {
+        if (userPathKind({"", "--datasets"}, bundledDataDirectory() / folder / "series.json") == PathKind::Missing) {
             if (mpi.isFirst()) std::cerr << "note: skipping dataset " << folder << ": it is not under data/\n";
             continue;
         }

@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "commands.h"
+#include "tstyles/core/user_paths.h"
 #include "tstyles/image/image_io.h"
 #include "tstyles/render/annotated_rendering.h"
 
@@ -58,7 +59,7 @@ CaseResult CaseWorker::check(const CheckCase& entry, Scene scene, bool update) {
     const SceneOnSeries& fitted = fit(scene);
     AnnotatedRendering rendering(renderer_, fitted);
     Image actual = rendering.render(fitted.scene);
-    const bool haveGolden = fs::is_regular_file(entry.golden);
+    const bool haveGolden = userPathKind({{}, "golden"}, entry.golden) == PathKind::RegularFile;
     std::optional<Image> expected;
     if (haveGolden) expected = readImage(entry.golden);
     if (expected && expected->width == actual.width && expected->height == actual.height)

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "tstyles/core/errors.h"
+#include "tstyles/core/user_paths.h"
 #include "tstyles/image/image_io.h"
 
 namespace tstyles::cli {
@@ -124,9 +125,12 @@ std::string toString(CaseOutcome outcome) {
 }
 
 void requireReplaceableReportFolder(const fs::path& folder) {
-    if (!fs::exists(folder)) return;  // made, with its parents, when the report is written
-    if (!fs::is_directory(folder)) throwInputError(folder, "", "is a file, not a report folder");
-    for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
+    const PathSource source{"", "--report"};
+    const PathKind kind = userPathKind(source, folder);
+    if (kind == PathKind::Missing) return;  // made, with its parents, when the report is written
+    if (kind != PathKind::Folder) throwInputError(folder, "--report", "is a file, not a report folder");
+    const fs::directory_iterator entries = withUserPath(source, folder, [&] { return fs::directory_iterator(folder); });
+    for (const fs::directory_entry& entry : entries) {
         const std::string name = entry.path().filename().string();
         if (name != "index.html" && name != "junit.xml" && entry.path().extension() != ".png")
             throwInputError(folder, "", "holds " + name + ", which no report wrote; give a new or empty folder");
@@ -134,7 +138,7 @@ void requireReplaceableReportFolder(const fs::path& folder) {
 }
 
 void writeCheckReport(const fs::path& target, const std::string& suiteName, const std::vector<CaseResult>& results) {
-    const fs::path folder = fs::absolute(target).lexically_normal();
+    const fs::path folder = userAbsolutePath(PathSource{"", "--report"}, target);
     const fs::path partial =
         folder.parent_path() / ("." + folder.filename().string() + ".partial-" + std::to_string(getpid()));
     std::error_code error;
@@ -153,8 +157,10 @@ void writeCheckReport(const fs::path& target, const std::string& suiteName, cons
         }
         writeText(partial / "index.html", htmlPage(suiteName, results));
         writeText(partial / "junit.xml", junitXml(suiteName, results));
-        fs::remove_all(folder);
-        fs::rename(partial, folder);
+        withUserPath(PathSource{"", "--report"}, folder, [&] {
+            fs::remove_all(folder);
+            fs::rename(partial, folder);
+        });
     } catch (...) {
         fs::remove_all(partial, error);
         throw;

@@ -6,6 +6,7 @@
 
 #include "comparison_thresholds.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/core/user_paths.h"
 
 namespace tstyles::cli {
 namespace {
@@ -24,6 +25,13 @@ std::string textIn(const json& value, const fs::path& file, const std::string& f
     return value.get<std::string>();
 }
 
+// A file named in the suite: also a name the system can look up.
+std::string pathIn(const json& value, const fs::path& file, const std::string& field) {
+    std::string text = textIn(value, file, field);
+    requireUsablePathName({file, field}, text);
+    return text;
+}
+
 CheckCase readCase(const json& entry, const fs::path& file, const std::string& field, const ComparisonThresholds& base) {
     if (!entry.is_object()) throwInputError(file, field, "expected an object with at least \"scene\"");
     const fs::path folder = file.parent_path();
@@ -31,8 +39,8 @@ CheckCase readCase(const json& entry, const fs::path& file, const std::string& f
     result.thresholds = base;
     for (const auto& [key, value] : entry.items()) {
         const std::string keyField = field + "." + key;
-        if (key == "scene") result.scene = (folder / textIn(value, file, keyField)).lexically_normal();
-        else if (key == "golden") result.golden = (folder / textIn(value, file, keyField)).lexically_normal();
+        if (key == "scene") result.scene = (folder / pathIn(value, file, keyField)).lexically_normal();
+        else if (key == "golden") result.golden = (folder / pathIn(value, file, keyField)).lexically_normal();
         else if (key == "name") result.name = textIn(value, file, keyField);
         else if (key == "width") result.width = sideIn(value, file, keyField);
         else if (key == "height") result.height = sideIn(value, file, keyField);
@@ -40,7 +48,8 @@ CheckCase readCase(const json& entry, const fs::path& file, const std::string& f
         else throwInputError(file, keyField, "unknown key; allowed: scene, golden, name, width, height, thresholds");
     }
     if (result.scene.empty()) throwInputError(file, field + ".scene", "missing; every case names its scene file");
-    if (!fs::is_regular_file(result.scene)) throwInputError(file, field + ".scene", "no such scene file: " + result.scene.string());
+    if (userPathKind({file, field + ".scene"}, result.scene) != PathKind::RegularFile)
+        throwInputError(file, field + ".scene", "no such scene file: " + result.scene.string());
     if (result.name.empty()) result.name = result.scene.stem().string();
     if (result.golden.empty()) result.golden = folder / (result.name + ".png");
     return result;
@@ -66,11 +75,13 @@ CheckSuite readSuiteFile(const fs::path& file) {
 CheckSuite readSuiteFolder(const fs::path& folder) {
     CheckSuite suite{folder.filename().string(), folder, {}};
     ComparisonThresholds base;
-    if (fs::is_regular_file(folder / "thresholds.json"))
+    if (userPathKind({}, folder / "thresholds.json") == PathKind::RegularFile)
         base = thresholdsFromJson(readJsonFile(folder / "thresholds.json"), base, folder / "thresholds.json", "");
     std::vector<fs::path> scenes;
-    for (const fs::directory_entry& entry : fs::directory_iterator(folder))
-        if (entry.is_regular_file() && entry.path().extension() == ".json" && entry.path().filename() != "thresholds.json")
+    std::error_code error;
+    for (const fs::directory_entry& entry : withUserPath({}, folder, [&] { return fs::directory_iterator(folder); }))
+        if (entry.is_regular_file(error) && entry.path().extension() == ".json" &&
+            entry.path().filename() != "thresholds.json")
             scenes.push_back(entry.path());
     std::sort(scenes.begin(), scenes.end());
     if (scenes.empty()) throwInputError(folder, "", "holds no scene files (*.json) to check");
@@ -88,9 +99,10 @@ CheckSuite readSuiteFolder(const fs::path& folder) {
 }  // namespace
 
 CheckSuite loadCheckSuite(const fs::path& suitePath) {
-    if (!fs::exists(suitePath)) throwInputError(suitePath, "", "no such suite file or folder");
-    const fs::path absolute = fs::absolute(suitePath).lexically_normal();
-    CheckSuite suite = fs::is_directory(absolute) ? readSuiteFolder(absolute) : readSuiteFile(absolute);
+    const PathKind kind = userPathKind({}, suitePath);
+    if (kind == PathKind::Missing) throwInputError(suitePath, "", "no such suite file or folder");
+    const fs::path absolute = userAbsolutePath({}, suitePath);
+    CheckSuite suite = kind == PathKind::Folder ? readSuiteFolder(absolute) : readSuiteFile(absolute);
     std::set<std::string> names;
     for (const CheckCase& entry : suite.cases)
         if (!names.insert(entry.name).second)

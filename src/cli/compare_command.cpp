@@ -69,8 +69,8 @@ void printFigures(const ImageDifference& difference, const ComparisonThresholds&
 
 int runCompare(const CompareOptions& options) {
     const ComparisonThresholds thresholds = thresholdsOf(options);
-    for (const auto& output : {options.diff, options.sideBySide})
-        if (output) requireWritableImagePath(*output);
+    if (options.diff) requireWritableImagePath(*options.diff, "--diff");
+    if (options.sideBySide) requireWritableImagePath(*options.sideBySide, "--side-by-side");
     const Image expected = readImage(options.expected);
     const Image actual = readImage(options.actual);
     if (expected.width != actual.width || expected.height != actual.height)

@@ -5,11 +5,13 @@
 #include <fstream>
 
 #include "tstyles/core/errors.h"
+#include "tstyles/core/user_paths.h"
 
 namespace tstyles::cli {
 
 nlohmann::json readJsonFile(const std::filesystem::path& file) {
-    if (std::filesystem::is_directory(file)) throwInputError(file, "", "is a folder, not a JSON file");
+    // A FIFO would block the read: only a regular file is opened.
+    if (userPathKind({}, file) != PathKind::Missing) requireUserFile({}, file, "JSON file");
     std::ifstream in(file);
     if (!in) throwInputError(file, "", "cannot open it");
     try {

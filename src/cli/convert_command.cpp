@@ -6,6 +6,8 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.h"
+#include "tstyles/core/errors.h"
+#include "tstyles/core/user_paths.h"
 #include "tstyles/data/series_export.h"
 #include "tstyles/data/series_opener.h"
 
@@ -20,6 +22,10 @@ struct ConvertOptions {
 };
 
 int runConvert(const ConvertOptions& options) {
+    // Before any reading: a name the system refuses, or a file (or FIFO) where the folder would go.
+    const PathKind outputKind = userPathKind({"", "-o"}, options.output);
+    if (outputKind == PathKind::RegularFile || outputKind == PathKind::Other)
+        throwInputError(options.output, "-o", "exists and is not a folder: the output of convert is a dataset folder");
     const Series raw = openRawSeries(options.inputs, toReadOptions(options.dataset));
     writeSeriesFolder(toRawSeries(raw, options.inputs.front()), options.output, options.force);
     std::size_t voxels = 0;

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "tstyles/core/errors.h"
+#include "tstyles/core/user_paths.h"
 #include "tstyles/data/manifest.h"
 #include "tstyles/data/series_opener.h"
 #include "tstyles/distributed/block_reading.h"
@@ -45,11 +47,11 @@ DistributedSource openDistributedSource(const std::vector<std::filesystem::path>
         if (std::string reason = whyNotInBlocks(inputs, datasetOptions); !reason.empty())
             return wholeSeries(std::move(reason));
         for (const auto& input : inputs)
-            if (!std::filesystem::exists(input)) throwInputError(input, "", "no such file or folder");
+            if (userPathKind({}, input) == PathKind::Missing) throwInputError(input, "", "no such file or folder");
         Series outline = outlineFor(inputs.front(), datasetOptions);
         // The opacity window comes from the blocks' histogram (fitting_over_blocks.h).
         AutomaticScene automatic =
-            automaticScene(outline, std::filesystem::absolute(inputs.front()).lexically_normal(), OpacityWindow{});
+            automaticScene(outline, userAbsolutePath({}, inputs.front()), OpacityWindow{});
         return {SceneAndSeries{std::move(automatic.scene), std::move(outline), std::move(automatic.explanation)},
                 inputs.front(), "", true};
     }

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "tstyles/core/errors.h"
+#include "tstyles/core/user_paths.h"
 #include "tstyles/image/image_io.h"
 #include "tstyles/video/video_file.h"
 
@@ -18,7 +19,8 @@ namespace fs = std::filesystem;
 std::string framesText(int count) { return std::to_string(count) + (count == 1 ? " frame" : " frames"); }
 
 bool holdsOnlyFrames(const fs::path& folder) {
-    for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
+    const fs::directory_iterator entries = withUserPath(PathSource{"", "-o"}, folder, [&] { return fs::directory_iterator(folder); });
+    for (const fs::directory_entry& entry : entries) {
         const std::string name = entry.path().filename().string();
         if (!entry.is_regular_file() || name.rfind("frame-", 0) != 0 || entry.path().extension() != ".png") return false;
     }
@@ -88,20 +90,20 @@ std::string frameFileName(int index) {
 bool isFrameFolder(const fs::path& output) {
     const std::string text = output.string();
     return (!text.empty() && (text.back() == '/' || text.back() == fs::path::preferred_separator)) ||
-           fs::is_directory(output);
+           userPathKind(PathSource{"", "-o"}, output) == PathKind::Folder;
 }
 
 void requireWritableFrameOutput(const fs::path& output, const MovieSettings& settings) {
     if (!isFrameFolder(output)) {
-        requireWritableVideoPath(output, VideoSettings{settings.width, settings.height, settings.framesPerSecond});
+        requireWritableVideoPath(output, VideoSettings{settings.width, settings.height, settings.framesPerSecond}, "-o");
         return;
     }
-    const fs::path folder = fs::absolute(output).lexically_normal();
+    const PathSource source{"", "-o"};
+    const fs::path folder = userAbsolutePath(source, output);
     const fs::path target = folder.has_filename() ? folder : folder.parent_path();
-    if (!fs::is_directory(target.parent_path()))
-        throwInputError(output, "", "the folder it would go into does not exist");
-    if (fs::exists(target) && !holdsOnlyFrames(target))
-        throwInputError(output, "", "holds files other than frame-NNNN.png; give an empty or new folder");
+    requireOutputFolder(source, target, "frame folder");
+    if (userPathKind(source, target) == PathKind::Folder && !holdsOnlyFrames(target))
+        throwInputError(output, "-o", "holds files other than frame-NNNN.png; give an empty or new folder");
 }
 
 std::unique_ptr<FrameSink> openFrameSink(const fs::path& output, const MovieSettings& settings) {

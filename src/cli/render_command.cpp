@@ -15,6 +15,7 @@
 #include "tstyles/scene/automatic_scene.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/core/process_memory.h"
+#include "tstyles/core/user_paths.h"
 #include "tstyles/distributed/distributed_rendering.h"
 #include "tstyles/image/image_io.h"
 #include "tstyles/render/renderer.h"
@@ -48,7 +49,7 @@ void overrideStyles(Scene& scene, const std::vector<std::string>& overrides) {
         if (equals == std::string::npos || equals == 0 || equals + 1 == entry.size())
             throwInputError("", "--style", "expected NAME=FILE, got \"" + entry + "\"");
         const std::string name = entry.substr(0, equals);
-        const std::string file = std::filesystem::absolute(entry.substr(equals + 1)).lexically_normal().string();
+        const std::string file = userAbsolutePath({"", "--style"}, entry.substr(equals + 1)).string();
         bool used = false;
         for (TransferFunction1D* curve : {&scene.stf.curve, &scene.indexTstf.curve, &scene.gradientTstf.curve})
             for (ColorNode& node : curve->color)
@@ -103,7 +104,7 @@ void warnAboutCutShortRays(const RenderOptions& options, const Renderer& rendere
 }
 
 int runRender(const RenderOptions& options) {
-    requireWritableImagePath(options.output);
+    requireWritableImagePath(options.output, "-o");
     parseGpuMemoryOption(options.gpuMemory);
     SceneOnSeries fitted =
         fittedSceneFor(options, openSceneOrDataset(options.inputs, options.datasetFiles, options.dataset));
@@ -133,7 +134,7 @@ int runDistributedRender(const RenderOptions& options) {
     std::optional<SceneOnSeries> fitted;
     std::optional<SceneOnSeries> outline;  // where blocks are read: the scene on the series' outline
     mpi.together("reading the scene and the series", [&] {
-        if (mpi.isFirst()) requireWritableImagePath(options.output);
+        if (mpi.isFirst()) requireWritableImagePath(options.output, "-o");
         parseGpuMemoryOption(options.gpuMemory);
         source = openDistributedSource(options.inputs, options.datasetFiles, options.dataset);
         fitted = fittedScene(options, std::move(source->opened));

@@ -8,6 +8,7 @@
 #include "commands.h"
 #include "scene_source.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/core/user_paths.h"
 #include "tstyles/scene/automatic_scene.h"
 #include "tstyles/scene/scene_file.h"
 
@@ -28,6 +29,7 @@ int runScene(const SceneOptions& options) {
                         "and make the scene of that folder");
     if (options.output.extension() != ".json")
         throwInputError(options.output, "-o", "a scene file is JSON: give it the extension .json");
+    requireOutputFile({"", "-o"}, options.output, "scene file");
     SceneAndSeries opened = openSceneOrDataset(options.inputs, {}, options.dataset);
     if (opened.explanation.empty())
         throwInputError(options.inputs.front(), "", "is a scene file already; `tstyles scene` makes one from a dataset");

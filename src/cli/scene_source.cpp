@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "tstyles/core/errors.h"
+#include "tstyles/core/user_paths.h"
 #include "tstyles/scene/automatic_scene.h"
 #include "tstyles/scene/input_kind.h"
 #include "tstyles/scene/scene_file.h"
@@ -102,9 +103,9 @@ SceneAndSeries openSceneOrDataset(const std::vector<std::filesystem::path>& inpu
     if (!datasetFiles.empty())
         throwInputError(inputs.front(), "--dataset", "replaces a scene file's dataset, but this input is a dataset itself");
     for (const auto& input : inputs)
-        if (!std::filesystem::exists(input)) throwInputError(input, "", "no such file or folder");
+        if (userPathKind({}, input) == PathKind::Missing) throwInputError(input, "", "no such file or folder");
     Series series = openDataset(inputs, datasetOptions);
-    AutomaticScene automatic = automaticScene(series, std::filesystem::absolute(inputs.front()).lexically_normal());
+    AutomaticScene automatic = automaticScene(series, userAbsolutePath({}, inputs.front()));
     return {std::move(automatic.scene), std::move(series), std::move(automatic.explanation)};
 }
 

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "tstyles/core/errors.h"
+#include "tstyles/core/user_paths.h"
 
 namespace tstyles {
 
@@ -40,6 +41,7 @@ void requireMemory(const std::filesystem::path& file, const std::string& field, 
 }
 
 void requireRegularFile(const std::filesystem::path& file, const std::string& what) {
+    userPathKind({}, file);  // a name too long, a loop of links, no permission: said as such, not "no such file"
     std::error_code error;
     const std::filesystem::file_status status = std::filesystem::status(file, error);
     if (!std::filesystem::exists(status)) throwInputError(file, "", "no such file (" + what + ")");

@@ -13,7 +13,7 @@ namespace {
 // sides approach that plane and tan() grows without bound.
 constexpr double kMaxBeamAngleDeg = 80.0;
 
-std::string numberText(double value) {
+std::string beamNumberText(double value) {
     std::ostringstream text;
     text << value;
     return text.str();
@@ -21,7 +21,7 @@ std::string numberText(double value) {
 
 void checkAngle(const ManifestField& field, double angle) {
     if (!(angle > -kMaxBeamAngleDeg && angle < kMaxBeamAngleDeg)) {
-        field.fail("beam angle " + numberText(angle) + " deg is outside (-80, 80): beams must point ahead of the "
+        field.fail("beam angle " + beamNumberText(angle) + " deg is outside (-80, 80): beams must point ahead of the "
                    "transducer");
     }
 }
@@ -44,8 +44,8 @@ std::vector<double> readBeamAngles(const ManifestField& grid, const std::string&
         checkAngle(extent->element(0), first);
         checkAngle(extent->element(1), last);
         if (!(first < last)) {
-            extent->fail("the first beam angle must be less than the last, found [" + numberText(first) + ", " +
-                         numberText(last) + "]: the fan has no extent");
+            extent->fail("the first beam angle must be less than the last, found [" + beamNumberText(first) + ", " +
+                         beamNumberText(last) + "]: the fan has no extent");
         }
         return evenBeamAngles(first, last, count);
     }
@@ -58,8 +58,8 @@ std::vector<double> readBeamAngles(const ManifestField& grid, const std::string&
         angles.push_back(element.finiteNumber());
         checkAngle(element, angles.back());
         if (index > 0 && !(angles[std::size_t(index)] > angles[std::size_t(index) - 1])) {
-            element.fail("beam angles must increase strictly: " + numberText(angles[std::size_t(index)]) +
-                         " follows " + numberText(angles[std::size_t(index) - 1]));
+            element.fail("beam angles must increase strictly: " + beamNumberText(angles[std::size_t(index)]) +
+                         " follows " + beamNumberText(angles[std::size_t(index) - 1]));
         }
     }
     return angles;
@@ -83,10 +83,10 @@ BeamGrid readBeamGrid(const ManifestField& field) {
     if (range.arraySize() != 2) range.fail("expected [minimum, maximum] range");
     grid.minRange = range.element(0).finiteNumber();
     grid.maxRange = range.element(1).finiteNumber();
-    if (grid.minRange < 0.0) range.element(0).fail("must not be negative, found " + numberText(grid.minRange));
+    if (grid.minRange < 0.0) range.element(0).fail("must not be negative, found " + beamNumberText(grid.minRange));
     if (!(grid.minRange < grid.maxRange)) {
-        range.fail("the minimum range must be less than the maximum, found [" + numberText(grid.minRange) + ", " +
-                   numberText(grid.maxRange) + "]: the fan has no depth");
+        range.fail("the minimum range must be less than the maximum, found [" + beamNumberText(grid.minRange) + ", " +
+                   beamNumberText(grid.maxRange) + "]: the fan has no depth");
     }
     return grid;
 }

@@ -19,6 +19,7 @@
 #include "structured_grid_files.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/core/input_limits.h"
+#include "tstyles/core/user_paths.h"
 
 namespace tstyles {
 namespace {
@@ -64,8 +65,7 @@ bool looksLikeScene(const std::string& text) {
 }
 
 nlohmann::json parseManifest(const std::filesystem::path& file) {
-    std::error_code error;
-    if (!std::filesystem::exists(file, error)) throwInputError(file, "", "manifest not found");
+    if (userPathKind({}, file) == PathKind::Missing) throwInputError(file, "", "manifest not found");
     requireRegularFile(file, "manifest");
     std::ifstream in(file, std::ios::binary);
     if (!in) throwInputError(file, "", "cannot open the manifest for reading");
@@ -85,8 +85,10 @@ nlohmann::json parseManifest(const std::filesystem::path& file) {
 }
 
 std::filesystem::path resolveBeside(const std::filesystem::path& manifest, const ManifestField& name) {
-    const std::filesystem::path file = name.string();
-    if (file.empty()) name.fail("must name a file");
+    const std::string text = name.string();
+    if (text.empty()) name.fail("must name a file");
+    requireUsablePathName({name.file(), name.path()}, text);
+    const std::filesystem::path file = text;
     return file.is_absolute() ? file : manifest.parent_path() / file;
 }
 

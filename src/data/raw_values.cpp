@@ -10,6 +10,7 @@
 
 #include "tstyles/core/errors.h"
 #include "tstyles/core/input_limits.h"
+#include "tstyles/core/user_paths.h"
 #include "value_decoding.h"
 
 namespace tstyles {
@@ -33,8 +34,8 @@ constexpr std::size_t kValuesPerRead = std::size_t(1) << 20;
 // type is reported as a size mismatch rather than as garbage values.
 std::ifstream openExactly(const RawFileSource& source, const std::string& kind, std::size_t expectedBytes,
                           const std::string& layout) {
+    if (userPathKind({source.manifest, source.field}, source.file) == PathKind::Missing) failFile(source, kind, "not found");
     std::error_code error;
-    if (!std::filesystem::exists(source.file, error)) failFile(source, kind, "not found");
     if (!std::filesystem::is_regular_file(source.file, error))
         failFile(source, kind, "is not a regular file (a folder, device or FIFO cannot be read as data)");
     const std::uintmax_t actualBytes = std::filesystem::file_size(source.file, error);

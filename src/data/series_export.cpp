@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "tstyles/core/errors.h"
+#include "tstyles/core/user_paths.h"
 
 namespace tstyles {
 namespace {
@@ -29,6 +30,7 @@ bool isNonEmptyFolder(const std::filesystem::path& folder) {
 }
 
 void requireReplaceable(const std::filesystem::path& directory, bool overwrite) {
+    userPathKind(PathSource{}, directory);  // a name the system refuses is named here, not "cannot make"
     std::error_code error;
     if (std::filesystem::exists(directory, error) && !std::filesystem::is_directory(directory, error))
         throwInputError(directory, "", "exists and is not a folder: the output of convert is a dataset folder");

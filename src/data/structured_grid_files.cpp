@@ -6,6 +6,7 @@
 #include <string>
 
 #include "raw_values.h"
+#include "tstyles/core/user_paths.h"
 
 namespace tstyles {
 namespace {
@@ -19,8 +20,10 @@ float decodeFloat32(const std::uint8_t* bytes) {
 }
 
 std::filesystem::path resolve(const ManifestField& name) {
-    const std::filesystem::path file = name.string();
-    if (file.empty()) name.fail("must name a file");
+    const std::string text = name.string();
+    if (text.empty()) name.fail("must name a file");
+    requireUsablePathName({name.file(), name.path()}, text);
+    const std::filesystem::path file = text;
     return file.is_absolute() ? file : name.file().parent_path() / file;
 }
 

@@ -11,6 +11,7 @@
 #include "tstyles/core/errors.h"
 #include "tstyles/core/input_limits.h"
 #include "tstyles/core/stderr_capture.h"
+#include "tstyles/core/user_paths.h"
 #include "png_chunks.h"
 
 namespace tstyles {
@@ -32,13 +33,10 @@ bool isFloatFormat(const std::filesystem::path& file) {
 }
 }  // namespace
 
-void requireWritableImagePath(const std::filesystem::path& file) {
-    const std::filesystem::path folder = file.parent_path().empty() ? "." : file.parent_path();
-    if (!std::filesystem::is_directory(folder))
-        throwInputError(file, "", "the folder " + folder.string() + " does not exist");
-    if (std::filesystem::is_directory(file)) throwInputError(file, "", "is a folder, not an image file");
+void requireWritableImagePath(const std::filesystem::path& file, const std::string& option) {
+    requireOutputFile(PathSource{"", option}, file, "image file");
     if (!OIIO::ImageOutput::create(file.string()))
-        throwInputError(file, "", "cannot write images of this type (" + OIIO::geterror() +
+        throwInputError(file, option, "cannot write images of this type (" + OIIO::geterror() +
                                       "); use .png, .tif or .exr");
 }
 

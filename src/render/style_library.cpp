@@ -5,6 +5,7 @@
 
 #include "tstyles/core/bundled_data.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/core/user_paths.h"
 #include "tstyles/image/image_io.h"
 #include "tstyles/scene/style_reference.h"
 
@@ -27,12 +28,13 @@ std::vector<std::string> builtInStyleNames() {
 const Image& StyleLibrary::image(const std::string& style) {
     if (auto found = loaded_.find(style); found != loaded_.end()) return found->second;
     const std::filesystem::path file = resolveStyleFile(style);
-    if (!isStyleFile(style) && !std::filesystem::exists(file)) {
+    const PathKind kind = userPathKind({"", "style"}, file);
+    if (!isStyleFile(style) && kind == PathKind::Missing) {
         std::string known;
         for (const auto& name : builtInStyleNames()) known += (known.empty() ? "" : ", ") + name;
         throwInputError(file, "style", "no built-in style \"" + style + "\" (built-in: " + known + ")");
     }
-    if (!std::filesystem::exists(file)) throwInputError(file, "style", "no such file");
+    if (kind == PathKind::Missing) throwInputError(file, "style", "no such file");
     Image image = readImage(file);
     if (image.width != image.height)
         throwInputError(file, "style", "a lit-sphere style must be square, this image is " +

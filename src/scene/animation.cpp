@@ -9,6 +9,7 @@
 #include "json_path.h"
 #include "name_table.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/core/user_paths.h"
 #include "tstyles/scene/scene.h"
 #include "tstyles/scene/scene_file.h"
 
@@ -122,7 +123,7 @@ Scene sceneAtFrame(const Scene& scene, int frame) {
 
     // Value tracks write into the scene's own JSON and read it back, so every frame is checked
     // like a scene file. The stand-in file sits in the dataset's folder: relative paths resolve.
-    const std::filesystem::path folder = std::filesystem::absolute(scene.dataset).parent_path();
+    const std::filesystem::path folder = userAbsolutePath({}, scene.dataset).parent_path();
     const std::filesystem::path origin = folder / "animated-scene.json";
     nlohmann::json root = nlohmann::json::parse(sceneToJson(result, folder));
     for (std::size_t i = 0; i < scene.animation.tracks.size(); ++i) {

@@ -52,7 +52,7 @@ CustomCompositor readCustom(const JsonFieldReader& fields, const json& value, co
         custom.glsl = fields.string(*glsl, "compositor.glsl");
         custom.origin = origin;
     } else {
-        const std::filesystem::path named = fields.string(*file, "compositor.file");
+        const std::filesystem::path named = fields.pathName(*file, "compositor.file");
         const std::filesystem::path folder =
             origin.empty() ? std::filesystem::current_path() : std::filesystem::absolute(origin).parent_path();
         custom.origin = (folder / named).lexically_normal();

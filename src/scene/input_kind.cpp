@@ -7,12 +7,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tstyles/core/user_paths.h"
 #include "tstyles/data/series_opener.h"
 
 namespace tstyles {
 
 InputKind classifyInput(const std::filesystem::path& path) {
-    if (std::filesystem::is_directory(path)) return InputKind::Dataset;
+    const PathKind kind = userPathKind(PathSource{}, path);
+    if (kind == PathKind::Folder) return InputKind::Dataset;
+    // A FIFO or device would block the peek below: it is refused, named, as a scene file if named so,
+    // else as a data file.
+    if (kind == PathKind::Other) return path.extension() == ".json" ? InputKind::Scene : InputKind::Dataset;
     std::ifstream stream(path, std::ios::binary);
     if (!stream) return InputKind::Scene;
     char first = 0;

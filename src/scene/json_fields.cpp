@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "tstyles/core/errors.h"
+#include "tstyles/core/user_paths.h"
 
 namespace tstyles {
 namespace {
@@ -117,6 +118,12 @@ int JsonFieldReader::integerIn(const nlohmann::json& value, const std::string& p
 std::string JsonFieldReader::string(const nlohmann::json& value, const std::string& path) const {
     if (!value.is_string()) fail(path, "expected a string, got " + typeWithArticle(value));
     return value.get<std::string>();
+}
+
+std::string JsonFieldReader::pathName(const nlohmann::json& value, const std::string& path) const {
+    std::string name = string(value, path);
+    requireUsablePathName(PathSource{file_, path}, name);
+    return name;
 }
 
 std::vector<double> JsonFieldReader::numbers(const nlohmann::json& value, const std::string& path,

@@ -56,6 +56,9 @@ public:
     double numberIn(const nlohmann::json& value, const std::string& path, const Interval& allowed) const;
     int integerIn(const nlohmann::json& value, const std::string& path, int low, int high) const;
     std::string string(const nlohmann::json& value, const std::string& path) const;
+    // A string that names a file or folder: also one the system can look up (no NUL, no name longer
+    // than the file system allows), so the name fails here, with its key, and not in a later lookup.
+    std::string pathName(const nlohmann::json& value, const std::string& path) const;
     // A fixed-length array of numbers, each checked against `allowed`.
     std::vector<double> numbers(const nlohmann::json& value, const std::string& path, std::size_t count,
                                 const Interval& allowed) const;

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tstyles/core/errors.h"
+#include "tstyles/core/user_paths.h"
 #include "tstyles/scene/scene_file.h"
 
 namespace tstyles {
@@ -30,7 +31,7 @@ void flatten(const json& value, const std::string& path, std::map<std::string, j
 std::map<std::string, json> leavesOf(const Scene& scene) {
     Scene still = scene;
     still.animation = {};
-    const std::filesystem::path folder = std::filesystem::absolute(scene.dataset).parent_path();
+    const std::filesystem::path folder = userAbsolutePath({}, scene.dataset).parent_path();
     std::map<std::string, json> leaves;
     flatten(json::parse(sceneToJson(still, folder)), "", leaves);
     return leaves;

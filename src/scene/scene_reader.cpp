@@ -8,6 +8,7 @@
 #include "json_fields.h"
 #include "scene_sections.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/core/user_paths.h"
 #include "tstyles/scene/scene_file.h"
 #include "tstyles/scene/style_reference.h"
 
@@ -78,7 +79,7 @@ void readColorNodes(const JsonFieldReader& fields, const json& value, const std:
         node.at = fields.numberIn(fields.requiredMember(value[i], nodePath, "at"), childPath(nodePath, "at"),
                                   positions);
         if (const json* style = JsonFieldReader::member(value[i], "style")) {
-            node.style = fields.string(*style, childPath(nodePath, "style"));
+            node.style = fields.pathName(*style, childPath(nodePath, "style"));
             if (node.style.empty()) fields.fail(childPath(nodePath, "style"), "must name a style, got \"\"");
         }
         // A style node's colour tints the style and may be left out; a flat node needs one.
@@ -313,7 +314,7 @@ std::filesystem::path readDataset(const JsonFieldReader& fields, const json& roo
                                   const std::filesystem::path& origin) {
     const json* dataset = JsonFieldReader::member(root, "dataset");
     if (!dataset) fields.fail("dataset", "missing; a scene must name its dataset (a series manifest)");
-    const std::filesystem::path datasetPath = fields.string(*dataset, "dataset");
+    const std::filesystem::path datasetPath = fields.pathName(*dataset, "dataset");
     if (datasetPath.empty()) fields.fail("dataset", "must not be empty");
     // Relative to the scene file's folder; text read from no file is relative to the current directory.
     const std::filesystem::path sceneFolder =
@@ -366,8 +367,8 @@ Scene parseScene(const std::string& text, const std::filesystem::path& origin) {
 
 Scene loadScene(const std::filesystem::path& sceneFile) {
     // A folder opens as a stream on some systems and then reads as empty: say what it is instead.
-    if (std::filesystem::is_directory(sceneFile))
-        throwInputError(sceneFile, "", "is a folder, not a scene file");
+    // A missing file is left to the stream below, whose message says why it cannot be opened.
+    if (userPathKind({}, sceneFile) != PathKind::Missing) requireUserFile({}, sceneFile, "scene file");
     std::ifstream in(sceneFile, std::ios::binary);
     if (!in)
         throwInputError(sceneFile, "", std::string("cannot open the scene file: ") + std::strerror(errno));

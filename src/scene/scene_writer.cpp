@@ -6,6 +6,7 @@
 
 #include "scene_sections.h"
 #include "tstyles/core/atomic_file.h"
+#include "tstyles/core/user_paths.h"
 #include "tstyles/scene/scene_file.h"
 #include "tstyles/scene/style_reference.h"
 
@@ -182,6 +183,7 @@ std::string sceneToJson(const Scene& scene, const std::filesystem::path& sceneFo
 }
 
 void saveScene(const Scene& scene, const std::filesystem::path& sceneFile) {
+    requireOutputFile(PathSource{}, sceneFile, "scene file");
     const std::filesystem::path folder =
         sceneFile.has_parent_path() ? sceneFile.parent_path() : std::filesystem::current_path();
     writeFileAtomically(sceneFile, sceneToJson(scene, folder));

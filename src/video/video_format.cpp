@@ -2,6 +2,7 @@
 #include <cctype>
 
 #include "tstyles/core/errors.h"
+#include "tstyles/core/user_paths.h"
 #include "tstyles/video/video_file.h"
 #include "video_encoder.h"
 
@@ -30,13 +31,11 @@ double storedFramesPerSecond(VideoFormat format, int framesPerSecond) {
     return framesPerSecond;
 }
 
-void requireWritableVideoPath(const std::filesystem::path& file, const VideoSettings& settings) {
-    const std::filesystem::path folder = file.parent_path().empty() ? "." : file.parent_path();
-    if (!std::filesystem::is_directory(folder))
-        throwInputError(file, "", "the folder " + folder.string() + " does not exist");
-    if (std::filesystem::is_directory(file)) throwInputError(file, "", "is a folder, not a movie file");
+void requireWritableVideoPath(const std::filesystem::path& file, const VideoSettings& settings,
+                              const std::string& option) {
+    requireOutputFile(PathSource{"", option}, file, "movie file");
     const auto format = videoFormatForPath(file);
-    if (!format) throwInputError(file, "", "cannot write movies of this type; use .mp4, .webm or .gif");
+    if (!format) throwInputError(file, option, "cannot write movies of this type; use .mp4, .webm or .gif");
 
     const std::string size = std::to_string(settings.width) + "x" + std::to_string(settings.height);
     if (settings.width <= 0 || settings.height <= 0)

@@ -9,6 +9,7 @@ extern "C" {
 #include "ffmpeg_support.h"
 #include "frame_pixels.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/core/user_paths.h"
 #include "tstyles/video/video_file.h"
 
 namespace tstyles {
@@ -26,7 +27,7 @@ struct OpenedMovie {
 
 OpenedMovie openMovie(const std::filesystem::path& file) {
     quietLibavLog();
-    if (!std::filesystem::exists(file)) throwInputError(file, "", "no such file");
+    if (userPathKind({}, file) == PathKind::Missing) throwInputError(file, "", "no such file");
     OpenedMovie movie;
     AVFormatContext* demuxer = nullptr;
     // On failure avformat_open_input frees the context itself.

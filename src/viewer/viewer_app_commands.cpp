@@ -4,6 +4,7 @@
 
 #include "camera_controller.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/core/user_paths.h"
 #include "tstyles/scene/scene_file.h"
 #include "viewer_app.h"
 
@@ -173,7 +174,7 @@ void ViewerApp::saveTo(const std::filesystem::path& path) {
     saved.width = std::max(frameSize().x, 1);
     saved.height = std::max(frameSize().y, 1);
     saveScene(saved, path);
-    document_.sceneFile = std::filesystem::absolute(path).lexically_normal();
+    document_.sceneFile = userAbsolutePath(PathSource{}, path);
     savedScene_ = document_.scene;
     std::cout << "saved scene " << path.string() << " (" << saved.width << "x" << saved.height << ")" << std::endl;
 }

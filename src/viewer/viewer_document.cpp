@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "tstyles/core/errors.h"
+#include "tstyles/core/user_paths.h"
 #include "tstyles/data/series_opener.h"
 #include "camera_controller.h"
 #include "tstyles/scene/automatic_scene.h"
@@ -53,7 +54,7 @@ ViewerDocument openDocument(const std::vector<std::filesystem::path>& paths, con
                             const ReadOptions& readOptions) {
     if (paths.empty()) throw std::invalid_argument("openDocument: no path");
     for (const auto& path : paths)
-        if (!std::filesystem::exists(path)) throwInputError(path, "", "no such file or folder");
+        if (userPathKind(PathSource{}, path) == PathKind::Missing) throwInputError(path, "", "no such file or folder");
     ViewerDocument document;
     if (paths.size() > 1 || classifyInput(paths.front()) == InputKind::Dataset) {
         Series raw = openSeries(paths, readOptions);
@@ -63,7 +64,7 @@ ViewerDocument openDocument(const std::vector<std::filesystem::path>& paths, con
         document.scene = loadScene(paths.front());
         document.series =
             fitSeries(document.scene, {document.scene.dataset}, current, nullptr, readOptions, document.frame);
-        document.sceneFile = std::filesystem::absolute(paths.front()).lexically_normal();
+        document.sceneFile = userAbsolutePath(PathSource{}, paths.front());
     }
     if (document.series->size() == 0) throwInputError(document.series->manifestPath, "", "the series has no time-steps");
     if (document.sceneFile) {
@@ -87,9 +88,11 @@ ViewerDocument openDocument(const std::filesystem::path& path, const ViewerDocum
 
 std::filesystem::path defaultViewerInput(const std::filesystem::path& dataDirectory) {
     const std::filesystem::path scene = dataDirectory / "scenes" / "figure1-styled-focus-step3.json";
-    if (std::filesystem::exists(scene)) return scene;
+    // The data folder comes from TSTYLES_DATA_DIR or the build: a name the system refuses is just absent.
+    std::error_code error;
+    if (std::filesystem::exists(scene, error)) return scene;
     const std::filesystem::path dataset = dataDirectory / "superellipsoid" / "series.json";
-    if (std::filesystem::exists(dataset)) return dataset;
+    if (std::filesystem::exists(dataset, error)) return dataset;
     throwInputError(dataDirectory, "",
                     "no bundled scene (scenes/figure1-styled-focus-step3.json) or dataset (superellipsoid/series.json) "
                     "here; build the project to generate it, set TSTYLES_DATA_DIR, or pass a scene or dataset");

@@ -97,10 +97,10 @@ case_no_animation() {
 case_unwritable_output() {
     run_tstyles -- animate "$FIGURE1" -o "$SCRATCH/no/such/folder/movie.mp4" --orbit 90
     expect_exit 2
-    expect_stderr_contains "movie.mp4: the folder $SCRATCH/no/such/folder does not exist"
+    expect_stderr_contains "movie.mp4: -o: the folder $SCRATCH/no/such/folder does not exist"
     run_tstyles -- animate "$FIGURE1" -o "$SCRATCH/movie.avi" --orbit 90
     expect_exit 2
-    expect_stderr_contains "movie.avi: cannot write movies of this type; use .mp4, .webm or .gif"
+    expect_stderr_contains "movie.avi: -o: cannot write movies of this type; use .mp4, .webm or .gif"
     run_tstyles -- animate "$FIGURE1" -o "$SCRATCH/odd.mp4" --orbit 90 --width 63
     expect_exit 2
     expect_stderr_contains "odd.mp4: size: 63x512 has an odd side; MP4 movies (yuv420p) need an even width and height"

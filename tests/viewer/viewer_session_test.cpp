@@ -238,10 +238,17 @@ TEST_F(ViewerSession, BadScenesShowAnErrorAndKeepTheOpenScene) {
     Scene missingStyle = tstyles::loadScene(bundledScene("figure1-focus-step3.json"));
     missingStyle.indexTstf.curve.color.front().style = "no-such-folder/missing-style.png";
     tstyles::saveScene(missingStyle, out_ / "missing-style.json");
+    // Issue 43: a style name too long for the file system is a bad scene like the others.
+    missingStyle.indexTstf.curve.color.front().style = std::string(5000, 'a');
+    tstyles::saveScene(missingStyle, out_ / "long-style-name.json");
     const CommandResult run = view(bundledScene("figure1-focus-step3.json"), "bad_scene.txt");
     ASSERT_EQ(run.exitCode, 0) << run.output;
     EXPECT_NE(run.output.find("image.width: expected a number"), std::string::npos) << run.output;
     EXPECT_NE(run.output.find("missing-style.png"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("long-style-name.json: tstf.index.color[0].style: the name is too long for the file system "
+                              "(5000 characters)"),
+              std::string::npos)
+        << run.output;
     EXPECT_EQ(tstyles::loadScene(out_ / "after.json"), tstyles::loadScene(out_ / "before.json"));
 }
 

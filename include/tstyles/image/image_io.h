@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 
 #include "tstyles/core/input_limits.h"
 #include "tstyles/image/image.h"
@@ -15,8 +16,9 @@ namespace tstyles {
 void writeImage(const Image& image, const std::filesystem::path& file);
 
 // Checks before any work is done that `file` can be written: its folder exists, it is not a
-// folder, and OpenImageIO knows its format. InputError naming the file otherwise.
-void requireWritableImagePath(const std::filesystem::path& file);
+// folder, and OpenImageIO knows its format. InputError naming the file (and the option that named
+// it, such as "-o") otherwise.
+void requireWritableImagePath(const std::filesystem::path& file, const std::string& option = "");
 
 // Reads any image OpenImageIO knows as RGBA floats with associated alpha (images without alpha
 // get alpha 1). InputError naming the file if it cannot be read, or if the pixels its header

@@ -34,8 +34,10 @@ double storedFramesPerSecond(VideoFormat format, int framesPerSecond);
 
 // Checks before any rendering that a movie can be written: the folder exists, the target is not a
 // folder, the extension is known, and the size and rate suit the codec (H.264 and VP9 store
-// yuv420p, which needs an even width and height). InputError naming the file otherwise.
-void requireWritableVideoPath(const std::filesystem::path& file, const VideoSettings& settings);
+// yuv420p, which needs an even width and height). InputError naming the file (and the option that
+// named it, such as "-o") otherwise.
+void requireWritableVideoPath(const std::filesystem::path& file, const VideoSettings& settings,
+                              const std::string& option = "");
 
 // Encodes frames one at a time into a temporary sibling of the target, renamed onto the target by
 // finish(); a writer dropped without finish() leaves nothing behind.

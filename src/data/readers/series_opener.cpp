@@ -8,6 +8,7 @@
 #include "series_assembly.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/core/input_limits.h"
+#include "tstyles/core/user_paths.h"
 #include "tstyles/data/manifest.h"
 
 namespace tstyles {
@@ -49,7 +50,7 @@ const SeriesFormat* formatClaimingFolder(const std::filesystem::path& folder) {
 // the format claims it.
 const SeriesFormat& formatOf(const std::filesystem::path& input, const ReadOptions& options) {
     std::error_code error;
-    if (!std::filesystem::exists(input, error)) throwInputError(input, "", "no such file or folder");
+    if (userPathKind({}, input) == PathKind::Missing) throwInputError(input, "", "no such file or folder");
     if (std::filesystem::is_directory(input, error)) {
         if (const SeriesFormat* format = formatClaimingFolder(input)) return *format;
         throwInputError(input, "", "is a folder that holds no series.json and no series of a format this program reads");
