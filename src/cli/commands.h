@@ -32,6 +32,12 @@ struct GlOptions {
 void addGlOptions(CLI::App& command, GlOptions& options);
 GlBackend parseBackend(const std::string& name);
 
+// What a dataset argument may be, for the commands' help (docs/readers.md has the formats).
+inline constexpr const char* kDatasetKinds =
+    "a manifest (series.json) or its folder; a NetCDF, NIfTI, NRRD, Plot3D grid, TIFF, DICOM or VTK XML (.pvd, "
+    ".series, .vti, .vts) file; an OME-Zarr store, a DICOM folder or a folder of TIFFs; or several files of one "
+    "series (Isabel hours, 3D volumes in time order)";
+
 // How a dataset is read (docs/readers.md): the spellings as typed, parsed when the command runs so
 // that a bad one is an InputError naming the option. Shared by info, render, view and convert.
 struct DatasetOptions {

@@ -1,4 +1,4 @@
-// `tstyles convert INPUT... -o FOLDER`: a scientist's file (NetCDF, NIfTI, NRRD, Plot3D, Isabel),
+// `tstyles convert INPUT... -o FOLDER`: a scientist's file (any format of docs/readers.md),
 // read with the usual options, kept as our manifest form (docs/dataset-format.md).
 #include <iostream>
 #include <memory>
@@ -41,10 +41,11 @@ int runConvert(const ConvertOptions& options) {
 Command addConvertCommand(CLI::App& app) {
     auto options = std::make_shared<ConvertOptions>();
     CLI::App* command = app.add_subcommand(
-        "convert", "Read NetCDF, NIfTI, NRRD, Plot3D or Isabel files and keep the series as a tstyles manifest folder");
+        "convert", "Read a scientist's files (NetCDF, NIfTI, NRRD, Plot3D, Isabel, TIFF, OME-Zarr, DICOM, VTK XML) and "
+                   "keep the series as a tstyles manifest folder");
     command
         ->add_option("input", options->inputs,
-                     "A NetCDF, NIfTI, NRRD or Plot3D grid file, or several files that form one series")
+                     std::string("The dataset: ") + kDatasetKinds)
         ->required();
     command->add_option("-o,--output", options->output, "Dataset folder to write (series.json and raw files)")
         ->required();

@@ -18,8 +18,7 @@ Command addInfoCommand(CLI::App& app) {
     CLI::App* command = app.add_subcommand("info", "Describe a dataset: time-steps, grids, placements, overlap, memory");
     command
         ->add_option("dataset", *inputs,
-                     "Dataset: a manifest (series.json) or its folder; a NetCDF, NIfTI, NRRD or Plot3D grid file; "
-                     "or several files that form one series (Isabel hours, 3D volumes in time order)")
+                     std::string("Dataset: ") + kDatasetKinds)
         ->required();
     addDatasetOptions(*command, *dataset);
     addGpuMemoryOption(*command, *gpuMemory);

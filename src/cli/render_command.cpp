@@ -189,9 +189,8 @@ Command addRenderCommand(CLI::App& app) {
         "render", "Render a scene file, or a dataset with the automatic scene, to an image (PNG, TIFF, EXR)");
     command
         ->add_option("input", options->inputs,
-                     "A scene file (JSON); or a dataset (a manifest or its folder, a NetCDF, NIfTI, NRRD or Plot3D "
-                     "grid file, or several files of one series), drawn with the automatic scene "
-                     "(docs/automatic-scene.md)")
+                     std::string("A scene file (JSON); or a dataset, drawn with the automatic scene "
+                                 "(docs/automatic-scene.md): ") + kDatasetKinds)
         ->required();
     command->add_option("-o,--output", options->output, "Image file to write; the format follows the extension")
         ->required();
@@ -203,8 +202,8 @@ Command addRenderCommand(CLI::App& app) {
                         "NAME=FILE: use this image (any format OpenImageIO reads) wherever the scene uses style NAME");
     addGlOptions(*command, options->gl);
     command->add_option("--dataset", options->datasetFiles,
-                        "Render this dataset instead of the scene's: a manifest, a NetCDF, NIfTI, NRRD or Plot3D grid "
-                        "file, or several files of one series (repeated or comma-separated)")
+                        std::string("Render this dataset instead of the scene's (repeated or comma-separated): ") +
+                            kDatasetKinds)
         ->delimiter(',');
     addDatasetOptions(*command, options->dataset);
     addGpuMemoryOption(*command, options->gpuMemory);

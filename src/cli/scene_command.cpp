@@ -48,7 +48,7 @@ Command addSceneCommand(CLI::App& app) {
     CLI::App* command = app.add_subcommand(
         "scene", "Write the automatic scene of a dataset to a scene file, to edit and render (docs/automatic-scene.md)");
     command->add_option("dataset", options->inputs,
-                        "A manifest or its folder, a NetCDF, NIfTI, NRRD or Plot3D grid file")
+                        std::string("The dataset: ") + kDatasetKinds)
         ->required();
     command->add_option("-o,--output", options->output, "Scene file to write (.json)")->required();
     addSceneOverrides(*command, options->overrides);

@@ -50,8 +50,7 @@ Command addViewCommand(CLI::App& app) {
     CLI::App* command = app.add_subcommand(
         "view", "Open the interactive viewer on a scene or dataset (default: the bundled Figure 1 scene)");
     command->add_option("input", options->inputs,
-                        "Scene file (JSON); or a dataset: a manifest or its folder, a NetCDF, NIfTI, NRRD or Plot3D "
-                        "grid file, or several files of one series");
+                        std::string("Scene file (JSON); or a dataset: ") + kDatasetKinds);
     command->add_option("--script", options->script,
                         "Play input events from this file (format: docs/viewer.md), e.g. for tests")
         ->check(CLI::ExistingFile);
