@@ -7,7 +7,7 @@
 
 #include "commands.h"
 #include "tstyles/data/series_export.h"
-#include "tstyles/data/series_opener.h"
+#include "tstyles/data/isolated_reading.h"
 
 namespace tstyles::cli {
 namespace {
@@ -20,7 +20,7 @@ struct ConvertOptions {
 };
 
 int runConvert(const ConvertOptions& options) {
-    const Series raw = openRawSeries(options.inputs, toReadOptions(options.dataset));
+    const Series raw = openRawSeriesIsolated(options.inputs, toReadOptions(options.dataset));
     writeSeriesFolder(toRawSeries(raw, options.inputs.front()), options.output, options.force);
     std::size_t voxels = 0;
     for (const TimeStep& step : raw.steps) voxels += step.density.size();
