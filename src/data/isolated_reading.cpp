@@ -50,6 +50,7 @@ public:
         if (fd_ >= 0) ::close(fd_);
         fd_ = -1;
     }
+    void release() { fd_ = -1; }
 
 private:
     int fd_;
@@ -122,14 +123,12 @@ void prepareReaderChild(const IsolationLimits& limits, pid_t parent) {
 #endif
 }
 
-[[noreturn]] void runReaderChild(int channelFd, int seriesFd, const std::filesystem::path& file,
-                                 const IsolatedRead& read, const IsolationLimits& limits, pid_t parent) {
+[[noreturn]] void runReaderChild(int channelFd, int resultFd, const IsolatedWork& work, const IsolationLimits& limits,
+                                 pid_t parent) {
     prepareReaderChild(limits, parent);
     ReaderChannelWriter channel(channelFd);
     try {
-        Series series = read(channel);
-        channel.enterStage(file, "the reader", "handing the series over");
-        channel.sendSeriesReady(writeSeries(seriesFd, std::move(series)));
+        channel.sendResultReady(work(channel, resultFd));
     } catch (const InputError& error) {
         channel.sendFailure({ReaderFailureKind::Input, error.what(), {}, 0});
     } catch (const std::bad_alloc&) {
@@ -203,16 +202,20 @@ void watchReader(ReaderProcess& child, int channelFd, const std::filesystem::pat
         const auto stageBefore = report.stage ? report.stage->doing : std::string();
         if (!channel.read(report)) return;
         if (report.stepsRead != before || (report.stage && report.stage->doing != stageBefore) || report.failure ||
-            report.seriesBytes)
+            report.resultBytes)
             lastSign = std::chrono::steady_clock::now();
     }
 }
 
 }  // namespace
 
-Series readIsolated(const std::filesystem::path& file, const IsolatedRead& read, const IsolationLimits& limits) {
-    OwnedFd seriesFd(::memfd_create("tstyles-series", MFD_CLOEXEC));
-    if (seriesFd.get() < 0) failSystem(file, "make shared memory");
+IsolatedResult::~IsolatedResult() {
+    if (fd_ >= 0) ::close(fd_);
+}
+
+IsolatedResult runIsolated(const std::filesystem::path& file, const IsolatedWork& work, const IsolationLimits& limits) {
+    OwnedFd resultFd(::memfd_create("tstyles-reader-result", MFD_CLOEXEC));
+    if (resultFd.get() < 0) failSystem(file, "make shared memory");
     int pipeFds[2];
     if (::pipe2(pipeFds, O_CLOEXEC) != 0) failSystem(file, "make a pipe");
     OwnedFd channelFd(pipeFds[0]);
@@ -220,7 +223,7 @@ Series readIsolated(const std::filesystem::path& file, const IsolatedRead& read,
     const pid_t parent = ::getpid();
     const pid_t pid = ::fork();
     if (pid < 0) failSystem(file, "fork");
-    if (pid == 0) runReaderChild(childEnd.get(), seriesFd.get(), file, read, limits, parent);
+    if (pid == 0) runReaderChild(childEnd.get(), resultFd.get(), work, limits, parent);
     ReaderProcess child(pid);
     childEnd.reset();
     ::fcntl(channelFd.get(), F_SETFL, ::fcntl(channelFd.get(), F_GETFL) | O_NONBLOCK);
@@ -229,9 +232,24 @@ Series readIsolated(const std::filesystem::path& file, const IsolatedRead& read,
     watchReader(child, channelFd.get(), file, report, limits);
     child.reap();
     if (report.failure) throwFailure(file, report, limits);
-    if (report.seriesBytes) return readSeries(seriesFd.get(), *report.seriesBytes);
-    throwInputError(stageFile(report, file), "",
-                    stageLibrary(report) + " crashed while " + stageDoing(report) + ": the file is damaged");
+    if (!report.resultBytes)
+        throwInputError(stageFile(report, file), "",
+                        stageLibrary(report) + " crashed while " + stageDoing(report) + ": the file is damaged");
+    const int fd = resultFd.get();
+    resultFd.release();
+    return IsolatedResult(fd, *report.resultBytes);
+}
+
+Series readIsolated(const std::filesystem::path& file, const IsolatedRead& read, const IsolationLimits& limits) {
+    const IsolatedResult result = runIsolated(
+        file,
+        [&](ReadingMonitor& monitor, int resultFd) {
+            Series series = read(monitor);
+            monitor.enterStage(file, "the reader", "handing the series over");
+            return writeSeries(resultFd, std::move(series));
+        },
+        limits);
+    return readSeries(result.fd(), result.bytes());
 }
 
 }  // namespace tstyles

@@ -11,7 +11,7 @@
 namespace tstyles {
 namespace {
 
-enum RecordKind : std::uint8_t { kStage = 1, kStepRead = 2, kFailure = 3, kSeriesReady = 4 };
+enum RecordKind : std::uint8_t { kStage = 1, kStepRead = 2, kFailure = 3, kResultReady = 4 };
 
 template <typename T>
 void appendNumber(std::string& out, T value) {
@@ -87,10 +87,10 @@ void ReaderChannelWriter::sendFailure(const ReaderFailure& failure) {
     send(kFailure, payload);
 }
 
-void ReaderChannelWriter::sendSeriesReady(std::uint64_t bytes) {
+void ReaderChannelWriter::sendResultReady(std::uint64_t bytes) {
     std::string payload;
     appendNumber(payload, bytes);
-    send(kSeriesReady, payload);
+    send(kResultReady, payload);
 }
 
 bool ReaderChannelReader::read(ReaderReport& report) {
@@ -130,8 +130,8 @@ void ReaderChannelReader::parse(ReaderReport& report) {
             failure.path = payload.text();
             failure.errorCode = payload.number<std::int32_t>();
             report.failure = std::move(failure);
-        } else if (kind == kSeriesReady) {
-            report.seriesBytes = payload.number<std::uint64_t>();
+        } else if (kind == kResultReady) {
+            report.resultBytes = payload.number<std::uint64_t>();
         } else {
             throw std::runtime_error("reader channel: unknown record kind " + std::to_string(kind));
         }

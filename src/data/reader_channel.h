@@ -1,5 +1,5 @@
 // The pipe between an isolated reader process and its parent: the child says which stage it
-// enters and what it has read (a ReadingMonitor), then how it ended (an error, or a series waiting
+// enters and what it has read (a ReadingMonitor), then how it ended (an error, or a result waiting
 // in shared memory); the parent collects those records as they come, without blocking.
 #pragma once
 
@@ -36,7 +36,7 @@ struct ReaderReport {
     std::uint64_t stepsRead = 0;
     std::uint64_t bytesRead = 0;
     std::optional<ReaderFailure> failure;
-    std::optional<std::uint64_t> seriesBytes;  // set when the series is in shared memory
+    std::optional<std::uint64_t> resultBytes;  // set when the result (a series) is in shared memory
 };
 
 // The child's end: a monitor whose every call is one small record on the pipe (a stage only when
@@ -47,7 +47,7 @@ public:
     void enterStage(const std::filesystem::path& file, std::string_view library, std::string_view doing) override;
     void stepRead(std::uint64_t bytes) override;
     void sendFailure(const ReaderFailure& failure);
-    void sendSeriesReady(std::uint64_t bytes);
+    void sendResultReady(std::uint64_t bytes);
 
 private:
     void send(std::uint8_t kind, const std::string& payload);

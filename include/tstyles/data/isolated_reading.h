@@ -37,6 +37,25 @@ IsolationLimits isolationLimitsFor(const std::vector<std::filesystem::path>& inp
 using IsolatedRead = std::function<Series(ReadingMonitor& monitor)>;
 Series readIsolated(const std::filesystem::path& file, const IsolatedRead& read, const IsolationLimits& limits);
 
+// The general form, for results other than a series (a style image): `work` runs in the child and
+// writes its result to `resultFd` (shared memory), returning the bytes written; the parent gets
+// that memory back to read with pread. Failures as for readIsolated.
+using IsolatedWork = std::function<std::uint64_t(ReadingMonitor& monitor, int resultFd)>;
+class IsolatedResult {
+public:
+    IsolatedResult(int fd, std::uint64_t bytes) : fd_(fd), bytes_(bytes) {}
+    ~IsolatedResult();
+    IsolatedResult(const IsolatedResult&) = delete;
+    IsolatedResult& operator=(const IsolatedResult&) = delete;
+    int fd() const { return fd_; }
+    std::uint64_t bytes() const { return bytes_; }
+
+private:
+    int fd_;
+    std::uint64_t bytes_;
+};
+IsolatedResult runIsolated(const std::filesystem::path& file, const IsolatedWork& work, const IsolationLimits& limits);
+
 // True when the environment asks for reading in this process (TSTYLES_READ_IN_PROCESS=1): for
 // debugging a reader, and for measuring what isolation costs.
 bool readingInProcessRequested();
