@@ -161,14 +161,14 @@ std::string stageDoing(const ReaderReport& report) {
     switch (failure.kind) {
         case ReaderFailureKind::Input:
             throw InputError(failure.message);
-        case ReaderFailureKind::OutOfMemory:
+        case ReaderFailureKind::OutOfMemory: {
+            const std::string limit =
+                limits.memoryBytes ? " (a reader may take " + byteCountText(double(*limits.memoryBytes)) + ")" : "";
             throwInputError(stageFile(report, file), "",
-                            stageLibrary(report) + " ran out of memory while " + stageDoing(report) +
-                                (limits.memoryBytes ? " (a reader may take " + byteCountText(double(*limits.memoryBytes)) +
-                                                          ")"
-                                                    : std::string()) +
+                            stageLibrary(report) + " ran out of memory while " + stageDoing(report) + limit +
                                 ": the sizes it declares are too large for this machine, or the file is damaged; "
                                 "--max-memory or --steps can ask for less");
+        }
         case ReaderFailureKind::Filesystem:
             throw std::filesystem::filesystem_error(failure.message, failure.path,
                                                     std::error_code(failure.errorCode, std::system_category()));

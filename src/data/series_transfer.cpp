@@ -163,7 +163,8 @@ void readAxes(TransferReader& in, Series& series) {
     const bool hasReference = in.value<bool>();
     const auto fields = in.value<std::array<int, 5>>();
     const auto second = in.value<double>();
-    if (hasReference) series.time.reference = CalendarDate{fields[0], fields[1], fields[2], fields[3], fields[4], second};
+    if (hasReference)
+        series.time.reference = CalendarDate{fields[0], fields[1], fields[2], fields[3], fields[4], second};
     series.time.calendar = in.value<Calendar>();
 }
 

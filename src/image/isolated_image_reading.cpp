@@ -58,7 +58,8 @@ Image readImageIsolated(const std::filesystem::path& file, std::uint64_t maxByte
         },
         limits);
     std::array<int, 2> size{};
-    if (result.bytes() < sizeof size) throw std::runtime_error(file.string() + ": the image reader handed over nothing");
+    if (result.bytes() < sizeof size)
+        throw std::runtime_error(file.string() + ": the image reader handed over nothing");
     readAll(result.fd(), size.data(), sizeof size, 0);
     // Checked before the pixels get memory: the size and the bytes handed over must agree.
     const std::uint64_t pixelBytes = std::uint64_t(std::max(size[0], 0)) * std::uint64_t(std::max(size[1], 0)) * 16;

@@ -38,7 +38,8 @@ std::shared_ptr<const Series> fitSeries(Scene& scene, const std::vector<std::fil
         frame = current->frame;
         return current->series;
     }
-    SceneOnSeries fitted = fitSceneToSeries(scene, opened ? std::move(*opened) : openSeriesIsolated(paths, readOptions));
+    SceneOnSeries fitted =
+        fitSceneToSeries(scene, opened ? std::move(*opened) : openSeriesIsolated(paths, readOptions));
     // The viewer's camera code frames the whole series; what frames the visible part is made explicit.
     if (fitted.scene.camera.framing == Framing::Visible)
         fitted.scene.camera = frameExplicitly(fitted.scene.camera, fitted.framed, {scene.width, scene.height});
