@@ -11,6 +11,7 @@
 #include "bindings.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/data/read_options.h"
+#include "tstyles/data/isolated_reading.h"
 #include "tstyles/data/series_opener.h"
 #include "tstyles/data/series_summary.h"
 
@@ -121,7 +122,7 @@ SharedSeries openFiles(const std::vector<std::filesystem::path>& inputs, const p
     read.block = options["block"].cast<int>();
     read.gamma = options["gamma"].cast<double>();
     if (inputs.empty()) throwInputError("", "path", "names no file");
-    return std::make_shared<const Series>(openSeries(inputs, read));
+    return std::make_shared<const Series>(openSeriesIsolated(inputs, read));
 }
 
 py::dict stepInfo(const Series& series, std::size_t index) {

@@ -61,7 +61,8 @@ struct DatasetOptions {
 };
 void addDatasetOptions(CLI::App& command, DatasetOptions& options);
 ReadOptions toReadOptions(const DatasetOptions& options);
-// The one way a command opens a dataset: openSeries with the parsed options.
+// The one way a command opens a dataset: openSeries with the parsed options, in a reader process
+// (isolated_reading.h).
 Series openDataset(const std::vector<std::filesystem::path>& inputs, const DatasetOptions& options);
 
 struct Command {

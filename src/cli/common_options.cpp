@@ -7,7 +7,7 @@
 
 #include "commands.h"
 #include "tstyles/core/errors.h"
-#include "tstyles/data/series_opener.h"
+#include "tstyles/data/isolated_reading.h"
 
 namespace tstyles::cli {
 
@@ -94,7 +94,7 @@ Series openDataset(const std::vector<std::filesystem::path>& inputs, const Datas
     // The readers check sizes against the files and the memory cap; these are the backstops for a
     // size that got past them, said as the input problem they are.
     try {
-        return openSeries(inputs, read);
+        return openSeriesIsolated(inputs, read);
     } catch (const std::bad_alloc&) {
         throwInputError(inputs.front(), "",
                         "not enough memory to read it (the sizes it declares are too large for this machine; "

@@ -9,7 +9,7 @@
 #include "tstyles/core/errors.h"
 #include "tstyles/core/user_paths.h"
 #include "tstyles/data/series_export.h"
-#include "tstyles/data/series_opener.h"
+#include "tstyles/data/isolated_reading.h"
 
 namespace tstyles::cli {
 namespace {
@@ -26,7 +26,7 @@ int runConvert(const ConvertOptions& options) {
     const PathKind outputKind = userPathKind({"", "-o"}, options.output);
     if (outputKind == PathKind::RegularFile || outputKind == PathKind::Other)
         throwInputError(options.output, "-o", "exists and is not a folder: the output of convert is a dataset folder");
-    const Series raw = openRawSeries(options.inputs, toReadOptions(options.dataset));
+    const Series raw = openRawSeriesIsolated(options.inputs, toReadOptions(options.dataset));
     writeSeriesFolder(toRawSeries(raw, options.inputs.front()), options.output, options.force);
     std::size_t voxels = 0;
     for (const TimeStep& step : raw.steps) voxels += step.density.size();

@@ -35,7 +35,7 @@ const Image& StyleLibrary::image(const std::string& style) {
         throwInputError(file, "style", "no built-in style \"" + style + "\" (built-in: " + known + ")");
     }
     if (kind == PathKind::Missing) throwInputError(file, "style", "no such file");
-    Image image = readImage(file);
+    Image image = readImageIsolated(file);
     if (image.width != image.height)
         throwInputError(file, "style", "a lit-sphere style must be square, this image is " +
                                            std::to_string(image.width) + "x" + std::to_string(image.height));

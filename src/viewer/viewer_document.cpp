@@ -6,6 +6,7 @@
 #include "tstyles/core/errors.h"
 #include "tstyles/core/user_paths.h"
 #include "tstyles/data/series_opener.h"
+#include "tstyles/data/isolated_reading.h"
 #include "camera_controller.h"
 #include "tstyles/scene/automatic_scene.h"
 #include "tstyles/scene/input_kind.h"
@@ -39,7 +40,8 @@ std::shared_ptr<const Series> fitSeries(Scene& scene, const std::vector<std::fil
         frame = current->frame;
         return current->series;
     }
-    SceneOnSeries fitted = fitSceneToSeries(scene, opened ? std::move(*opened) : openSeries(paths, readOptions));
+    SceneOnSeries fitted =
+        fitSceneToSeries(scene, opened ? std::move(*opened) : openSeriesIsolated(paths, readOptions));
     // The viewer's camera code frames the whole series; what frames the visible part is made explicit.
     if (fitted.scene.camera.framing == Framing::Visible)
         fitted.scene.camera = frameExplicitly(fitted.scene.camera, fitted.framed, {scene.width, scene.height});
@@ -57,7 +59,7 @@ ViewerDocument openDocument(const std::vector<std::filesystem::path>& paths, con
         if (userPathKind(PathSource{}, path) == PathKind::Missing) throwInputError(path, "", "no such file or folder");
     ViewerDocument document;
     if (paths.size() > 1 || classifyInput(paths.front()) == InputKind::Dataset) {
-        Series raw = openSeries(paths, readOptions);
+        Series raw = openSeriesIsolated(paths, readOptions);
         document.scene = automaticScene(raw, raw.manifestPath).scene;
         document.series = fitSeries(document.scene, paths, current, &raw, readOptions, document.frame);
     } else {

@@ -269,4 +269,21 @@ case_check_jobs_refused_distributed() {
     [ ! -e "$SCRATCH/report" ] || fail "a report was written"
 }
 
+# A dataset that is not read in blocks is read whole by every process, each in a reader process of
+# its own (docs/readers.md, "How reading is isolated"): a NetCDF file reads and renders as with one
+# process, and libhdf5's crash on a damaged one ends all processes with the message, exit 2.
+case_reader_processes_under_mpi() {
+    "$(dirname "$TSTYLES")/tests/write_reader_samples" "$SCRATCH/samples" || fail "write_reader_samples failed"
+    run_tstyles -- render "$SCRATCH/samples/ocean.nc" --var temp -o "$SCRATCH/one.png" --width 64 --height 64
+    expect_exit 0
+    run_mpi 2 render "$SCRATCH/samples/ocean.nc" --var temp -o "$SCRATCH/two.png" --width 64 --height 64 --distributed
+    expect_exit 0
+    expect_same_as_one_process "$SCRATCH/one.png" "$SCRATCH/two.png"
+    cp "$SOURCE_DIR/tests/data/damaged/netcdf4_hdf5_segv.nc" "$SCRATCH/segv.nc"
+    run_mpi 2 render "$SCRATCH/segv.nc" --var temp -o "$SCRATCH/bad.png" --width 64 --height 64 --distributed
+    expect_exit 2
+    expect_stderr_contains "$SCRATCH/segv.nc: the NetCDF/HDF5 library crashed while reading the variable list: the file is damaged"
+    [ ! -e "$SCRATCH/bad.png" ] || fail "an image was written"
+}
+
 run_case

@@ -1,6 +1,8 @@
 // readImage's memory cap: the pixels an image header announces are checked against the cap given
 // before anything is allocated for them (the style image fuzz target reads under 16 MiB); a PNG
-// chunk longer than the file is refused before libpng allocates what it claims.
+// chunk longer than the file is refused before libpng allocates what it claims. Read in a reader
+// process, an image is the same to the bit.
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -61,6 +63,35 @@ TEST(ImageReading, APngChunkLongerThanTheFileIsRefusedBeforeLibpngSeesIt) {
                   std::string::npos)
             << message;
     }
+}
+
+// Style images are read in a reader process (readImageIsolated): the same pixels to the bit, and
+// the same error for a damaged file.
+TEST(ImageReading, IsolatedReadingGivesTheSamePixelsAndErrors) {
+    const std::filesystem::path file = writtenImage();
+    const Image inProcess = readImage(file);
+    const Image isolated = readImageIsolated(file);
+    ASSERT_EQ(isolated.width, inProcess.width);
+    ASSERT_EQ(isolated.height, inProcess.height);
+    EXPECT_EQ(std::memcmp(isolated.rgba.data(), inProcess.rgba.data(), inProcess.rgba.size() * sizeof(float)), 0);
+
+    const std::filesystem::path cut = file.parent_path() / "cut.png";
+    std::filesystem::copy_file(file, cut, std::filesystem::copy_options::overwrite_existing);
+    std::filesystem::resize_file(cut, 60);
+    std::string inProcessError = "none";
+    std::string isolatedError = "none";
+    try {
+        readImage(cut);
+    } catch (const InputError& error) {
+        inProcessError = error.what();
+    }
+    try {
+        readImageIsolated(cut);
+    } catch (const InputError& error) {
+        isolatedError = error.what();
+    }
+    EXPECT_NE(inProcessError, "none");
+    EXPECT_EQ(isolatedError, inProcessError);
 }
 
 }  // namespace

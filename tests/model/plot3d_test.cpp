@@ -8,7 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include "series_equality.h"
 #include "test_dataset.h"
+#include "tstyles/data/isolated_reading.h"
+#include "tstyles/data/series_opener.h"
 #include "tstyles/data/plot3d.h"
 #include "tstyles/data/warped_box.h"
 
@@ -320,6 +323,20 @@ TEST(Plot3D, GridExtensions) {
     EXPECT_TRUE(hasPlot3DGridExtension("WING.X"));
     EXPECT_TRUE(hasPlot3DGridExtension("wing.g"));
     EXPECT_FALSE(hasPlot3DGridExtension("series.json"));
+}
+
+// Through the reader process the structured grid, its shared nodes and the values come back to the bit.
+TEST(Plot3D, IsolatedReadingIsBitIdentical) {
+    const Flavour flavour{true, true, true, 8, true};
+    const Plot3DOptions written = writeDataset("isolated", flavour, {0.0, 0.5, 1.5});
+    ReadOptions options;
+    options.solutionFiles = written.solutionFiles;
+    options.block = written.block;
+    options.variable = "pressure";
+    const Series inProcess = openSeries(written.gridFile, options);
+    const Series isolated = openSeriesIsolated({written.gridFile}, options);
+    tstyles_test::expectSameSeries(inProcess, isolated);
+    EXPECT_EQ(isolated.steps[0].structured()->nodes, isolated.steps[2].structured()->nodes);
 }
 
 }  // namespace

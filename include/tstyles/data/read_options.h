@@ -13,6 +13,7 @@
 
 #include <glm/glm.hpp>
 
+#include "tstyles/data/reading_monitor.h"
 #include "tstyles/data/series.h"
 
 namespace tstyles {
@@ -47,6 +48,9 @@ struct ReadOptions {
     std::vector<std::filesystem::path> solutionFiles;   // --solution
     int block = 0;                                      // --block
     double gamma = 1.4;                                 // --gamma
+    // Who hears the readers' stages and progress (the isolated reading's child); not owned, null
+    // when nobody listens. Not an option of the user's.
+    ReadingMonitor* monitor = nullptr;
 };
 
 // Parsers for the command-line spellings; a bad spelling is an InputError naming `option`.

@@ -25,6 +25,10 @@ void requireWritableImagePath(const std::filesystem::path& file, const std::stri
 // announces would take more than `maxBytes`.
 Image readImage(const std::filesystem::path& file, std::uint64_t maxBytes = defaultMemoryCap());
 
+// readImage in a reader process (tstyles/data/isolated_reading.h): a crash or hang inside the image
+// libraries becomes an InputError naming the file. For the images a user names (style images).
+Image readImageIsolated(const std::filesystem::path& file, std::uint64_t maxBytes = defaultMemoryCap());
+
 // The image resampled to `width` x `height` (OpenImageIO's filtered resize).
 Image resizeImage(const Image& image, int width, int height);
 

@@ -12,12 +12,14 @@
 
 namespace tstyles {
 
-NetcdfFile::NetcdfFile(std::filesystem::path file) : path_(std::move(file)) {
+NetcdfFile::NetcdfFile(std::filesystem::path file, ReadingMonitor* monitor)
+    : path_(std::move(file)), monitor_(monitor) {
     const std::uint64_t bytes = regularFileSize(path_, "NetCDF file");
     // A classic header is only handed to the library once its counts and sizes fit the file;
     // netCDF-4 (HDF5) files are checked by the library, whose HDF5 error stack we capture.
     if (hasClassicNetcdfMagic(path_)) checkClassicNetcdf(path_);
     const StderrCapture libraryMessages;
+    enterStage("opening the file");
     const int status = nc_open(path_.c_str(), NC_NOWRITE, &id_);
     if (status != NC_NOERR) {
         id_ = -1;
@@ -40,6 +42,7 @@ void NetcdfFile::check(int status, const std::string& field, const std::string& 
 
 std::string NetcdfFile::formatName() const {
     int format = 0;
+    enterStage("reading the format");
     check(nc_inq_format(id_, &format), "", "read the format");
     switch (format) {
         case NC_FORMAT_CLASSIC:
@@ -59,6 +62,7 @@ std::string NetcdfFile::formatName() const {
 
 std::vector<int> NetcdfFile::variableIds() const {
     int count = 0;
+    enterStage("reading the variable list");
     check(nc_inq_nvars(id_, &count), "", "count the variables");
     std::vector<int> ids(static_cast<std::size_t>(count));
     for (int index = 0; index < count; ++index) ids[std::size_t(index)] = index;
@@ -67,6 +71,7 @@ std::vector<int> NetcdfFile::variableIds() const {
 
 std::optional<int> NetcdfFile::findVariable(const std::string& name) const {
     int id = 0;
+    enterStage("reading the variable list");
     if (nc_inq_varid(id_, name.c_str(), &id) != NC_NOERR) return std::nullopt;
     return id;
 }
@@ -76,6 +81,7 @@ NetcdfVariable NetcdfFile::variable(int id) const {
     variable.id = id;
     char name[NC_MAX_NAME + 1] = {};
     int dimensionCount = 0;
+    enterStage("reading the variable list");
     check(nc_inq_var(id_, id, name, &variable.type, &dimensionCount, nullptr, nullptr), "", "read a variable");
     variable.name = name;
     std::vector<int> dimensionIds(static_cast<std::size_t>(dimensionCount));
@@ -100,6 +106,7 @@ bool NetcdfFile::isCoordinateVariable(int id) const {
 std::optional<std::string> NetcdfFile::textAttribute(int variable, const std::string& name) const {
     nc_type type = 0;
     std::size_t length = 0;
+    enterStage("reading the attributes");
     if (nc_inq_att(id_, variable, name.c_str(), &type, &length) != NC_NOERR || type != NC_CHAR) return std::nullopt;
     std::string text(length, '\0');
     check(nc_get_att_text(id_, variable, name.c_str(), text.data()), name, "read the attribute");
@@ -110,6 +117,7 @@ std::optional<std::string> NetcdfFile::textAttribute(int variable, const std::st
 std::optional<std::vector<double>> NetcdfFile::numberAttribute(int variable, const std::string& name) const {
     nc_type type = 0;
     std::size_t length = 0;
+    enterStage("reading the attributes");
     if (nc_inq_att(id_, variable, name.c_str(), &type, &length) != NC_NOERR) return std::nullopt;
     if (type == NC_CHAR || type == NC_STRING || length == 0)
         throwInputError(path_, name, "attribute must be numeric");
@@ -126,6 +134,7 @@ std::vector<double> NetcdfFile::readAll(int id) const {
         throwInputError(path_, whole.name, "has " + std::to_string(count) + " values: too many for a coordinate variable");
     std::vector<double> values(count);
     const StderrCapture libraryMessages;
+    enterStage("reading the coordinates");
     check(nc_get_var_double(id_, id, values.data()), whole.name, "read the values");
     return values;
 }
@@ -171,6 +180,7 @@ NetcdfVolume NetcdfFile::readVolume(const NetcdfVariable& variable, int timeDime
     }
     std::vector<double> stored(total);
     const StderrCapture libraryMessages;
+    enterStage("reading the values");
     check(nc_get_vara_double(id_, variable.id, start.data(), count.data(), stored.data()), variable.name,
           "read time index " + std::to_string(timeIndex));
     NetcdfVolume volume;

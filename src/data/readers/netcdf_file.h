@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "tstyles/data/reading_monitor.h"
 #include "tstyles/data/series.h"
 
 namespace tstyles {
@@ -40,7 +41,8 @@ struct NetcdfVolume {
 
 class NetcdfFile {
 public:
-    explicit NetcdfFile(std::filesystem::path file);
+    // `monitor` (may be null) hears each stage before the library is called for it.
+    explicit NetcdfFile(std::filesystem::path file, ReadingMonitor* monitor = nullptr);
     ~NetcdfFile();
     NetcdfFile(const NetcdfFile&) = delete;
     NetcdfFile& operator=(const NetcdfFile&) = delete;
@@ -62,8 +64,11 @@ public:
 
 private:
     void check(int status, const std::string& field, const std::string& doing) const;
+    void enterStage(std::string_view doing) const { reportStage(monitor_, path_, kLibrary, doing); }
 
+    static constexpr std::string_view kLibrary = "the NetCDF/HDF5 library";
     std::filesystem::path path_;
+    ReadingMonitor* monitor_ = nullptr;
     int id_ = -1;
 };
 

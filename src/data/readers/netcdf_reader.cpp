@@ -130,7 +130,7 @@ std::vector<double> stepTimes(const NetcdfFile& nc, const NetcdfVariable& variab
 }  // namespace
 
 SourceSeries openNetcdf(const std::filesystem::path& file, const ReadOptions& options) {
-    auto nc = std::make_shared<const NetcdfFile>(file);
+    auto nc = std::make_shared<const NetcdfFile>(file, options.monitor);
     const NetcdfVariable variable = chooseVariable(*nc, options.variable);
     const int timeDimension = findTimeDimension(*nc, variable, options);
     const std::size_t rank = variable.dimensions.size();

@@ -175,7 +175,10 @@ Series assembleRawSeries(const SourceSeries& source, const ReadOptions& options)
         step.placement = from.placement;
         step.sourceType = from.type;
         step.valuesFile = from.file;
+        reportStage(options.monitor, from.file, "the " + source.format + " reader",
+                    "reading time-step " + std::to_string(plan.steps[kept]));
         std::vector<float> values = source.readStep(plan.steps[kept]);
+        reportStepRead(options.monitor, values.size() * sizeof(float));
         if (plan.dims[kept] == gridDims(from.grid)) {
             step.grid = from.grid;
         } else {

@@ -132,6 +132,8 @@ SourceSeries openSource(const std::vector<std::filesystem::path>& inputs, const 
         if (&formatOf(input, options) != &format)
             throwInputError(input, "", "is not " + format.name + " like " + inputs.front().string() +
                                            ": a series is read from files of one format");
+    // Named after the format; a reader that calls a library names the library and stage itself.
+    reportStage(options.monitor, inputs.front(), "the " + format.name + " reader", "reading the header");
     return format.open(inputs, options);
 }
 
@@ -179,7 +181,14 @@ Series openSeries(const std::vector<std::filesystem::path>& inputs, const ReadOp
         if (inputs.size() > 1)
             throwInputError(inputs[1], "", "a tstyles manifest is a whole series: give it alone");
         rejectReadingOptions(inputs.front(), options);
-        Series series = loadSeries(inputs.front(), {options.maxMemoryBytes, bytesPerDensity(options.precision)});
+        ManifestLimits limits{options.maxMemoryBytes, bytesPerDensity(options.precision)};
+        if (ReadingMonitor* monitor = options.monitor) {
+            monitor->enterStage(inputs.front(), "the manifest reader", "reading the manifest and its files");
+            limits.afterStepRead = [monitor](std::size_t, TimeStep& step) {
+                monitor->stepRead(step.density.size() * sizeof(float));
+            };
+        }
+        Series series = loadSeries(inputs.front(), limits);
         series.precision = options.precision;
         return series;
     }
