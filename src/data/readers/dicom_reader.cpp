@@ -15,6 +15,7 @@
 #include "series_assembly.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/core/input_limits.h"
+#include "tstyles/data/reading_monitor.h"
 
 namespace tstyles {
 namespace {
@@ -24,17 +25,25 @@ struct DicomInputs {
     std::size_t skipped = 0;  // files in folders without the DICM magic
 };
 
-DicomInputs readInputs(const std::vector<std::filesystem::path>& inputs) {
+// GDCM, named to whoever watches the reading (reading_monitor.h): a crash inside it is GDCM's.
+constexpr const char* kGdcm = "the DICOM library (GDCM)";
+
+DicomImageFile headerOf(const std::filesystem::path& file, ReadingMonitor* monitor) {
+    reportStage(monitor, file, kGdcm, "reading the header");
+    return readDicomHeader(file);
+}
+
+DicomInputs readInputs(const std::vector<std::filesystem::path>& inputs, ReadingMonitor* monitor) {
     DicomInputs read;
     for (const std::filesystem::path& input : inputs) {
         std::error_code error;
         if (!std::filesystem::is_directory(input, error)) {
-            read.headers.push_back(readDicomHeader(input));
+            read.headers.push_back(headerOf(input, monitor));
             continue;
         }
         const DicomFileList list = dicomFilesUnder(input);
         read.skipped += list.skipped;
-        for (const auto& file : list.files) read.headers.push_back(readDicomHeader(file));
+        for (const auto& file : list.files) read.headers.push_back(headerOf(file, monitor));
     }
     return read;
 }
@@ -89,6 +98,7 @@ struct DicomStepSource {
     DicomVolumes volumes;
     bool mirrorX = false;
     std::uint64_t memoryCap = 0;
+    ReadingMonitor* monitor = nullptr;  // lives as long as the reading that calls readStep
 };
 
 std::vector<float> readDicomStep(const DicomStepSource& source, std::size_t step) {
@@ -100,7 +110,10 @@ std::vector<float> readDicomStep(const DicomStepSource& source, std::size_t step
     for (std::size_t slice = 0; slice < std::size_t(dims.z); ++slice) {
         const DicomFrame& frame = source.volumes.steps[step][slice];
         const DicomImageFile& header = source.headers.at(frame.file);
-        if (pixels.file != frame.file) pixels = readDicomPixels(header, source.memoryCap);
+        if (pixels.file != frame.file) {
+            reportStage(source.monitor, frame.file, kGdcm, "decoding the pixels");
+            pixels = readDicomPixels(header, source.memoryCap);
+        }
         decodeDicomFrame(pixels, header, frame, values.data() + slice * sliceSize);
     }
     requireFiniteValues(values, dims, source.volumes.steps[step].front().file, step,
@@ -113,7 +126,7 @@ std::vector<float> readDicomStep(const DicomStepSource& source, std::size_t step
 
 SourceSeries openDicom(const std::vector<std::filesystem::path>& inputs, const ReadOptions& options) {
     const std::filesystem::path& input = inputs.front();
-    DicomInputs read = readInputs(inputs);
+    DicomInputs read = readInputs(inputs, options.monitor);
     const std::size_t fileCount = read.headers.size();
     std::vector<DicomSeriesEntry> series = groupDicomSeries(std::move(read.headers));
     if (series.empty())
@@ -130,6 +143,7 @@ SourceSeries openDicom(const std::vector<std::filesystem::path>& inputs, const R
     const OrientedAxes frame = rasFrame(volumes, chosen.files.front().file);
     stepSource->mirrorX = frame.mirrorX;
     stepSource->memoryCap = memoryCap(options.maxMemoryBytes);
+    stepSource->monitor = options.monitor;
     for (const DicomImageFile& file : chosen.files) stepSource->headers.emplace(file.file, file);
 
     const DicomImageFile& first = chosen.files.front();
