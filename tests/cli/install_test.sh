@@ -140,7 +140,7 @@ help_options_of_page() {
 }
 
 case_desktop_entry_and_mime_types_valid() {
-    local entry="$SOURCE_DIR/packaging/tstyles.desktop"
+    local entry="$SOURCE_DIR/tools/packaging/tstyles.desktop"
     if command -v desktop-file-validate >/dev/null; then
         desktop-file-validate "$entry" >&2 || fail "desktop-file-validate rejects $entry"
     else
@@ -151,7 +151,7 @@ case_desktop_entry_and_mime_types_valid() {
     # The MIME package: well-formed, and accepted by update-mime-database, which then knows our types.
     local mime="$SCRATCH/mime"
     mkdir -p "$mime/packages"
-    cp "$SOURCE_DIR/packaging/tstyles-mime.xml" "$mime/packages/tstyles.xml"
+    cp "$SOURCE_DIR/tools/packaging/tstyles-mime.xml" "$mime/packages/tstyles.xml"
     xmllint --noout "$mime/packages/tstyles.xml" || fail "tstyles-mime.xml is not well-formed XML"
     # Our temporary share/ on the search path, or update-mime-database warns that nothing will look there.
     XDG_DATA_DIRS="$SCRATCH" XDG_DATA_HOME="$SCRATCH" update-mime-database "$mime" 2>"$SCRATCH/mime.log" ||
@@ -170,7 +170,7 @@ case_desktop_entry_and_mime_types_valid() {
     # The icon in its three sizes, each square at its size.
     local size
     for size in 48 128 256; do
-        expect_image "$SOURCE_DIR/packaging/icons/tstyles-$size.png" "$size" "$size"
+        expect_image "$SOURCE_DIR/tools/packaging/icons/tstyles-$size.png" "$size" "$size"
     done
 }
 

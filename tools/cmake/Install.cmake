@@ -37,11 +37,11 @@ add_custom_target(tstyles_manual_page ALL DEPENDS ${TSTYLES_MAN_PAGE})
 install(FILES ${TSTYLES_MAN_PAGE} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 
 # The desktop: the applications menu entry, MIME types for the files no shared-mime-info type
-# covers, and the icon (packaging/icons, drawn by packaging/make_icons.sh from a rendered scene).
-install(FILES ${CMAKE_SOURCE_DIR}/packaging/tstyles.desktop DESTINATION ${CMAKE_INSTALL_DATADIR}/applications)
-install(FILES ${CMAKE_SOURCE_DIR}/packaging/tstyles-mime.xml DESTINATION ${CMAKE_INSTALL_DATADIR}/mime/packages
+# covers, and the icon (tools/packaging/icons, drawn by tools/packaging/make_icons.sh from a rendered scene).
+install(FILES ${CMAKE_SOURCE_DIR}/tools/packaging/tstyles.desktop DESTINATION ${CMAKE_INSTALL_DATADIR}/applications)
+install(FILES ${CMAKE_SOURCE_DIR}/tools/packaging/tstyles-mime.xml DESTINATION ${CMAKE_INSTALL_DATADIR}/mime/packages
         RENAME tstyles.xml)
 foreach(size 48 128 256)
-  install(FILES ${CMAKE_SOURCE_DIR}/packaging/icons/tstyles-${size}.png
+  install(FILES ${CMAKE_SOURCE_DIR}/tools/packaging/icons/tstyles-${size}.png
           DESTINATION ${CMAKE_INSTALL_DATADIR}/icons/hicolor/${size}x${size}/apps RENAME tstyles.png)
 endforeach()

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# Draws the application icon (packaging/icons/tstyles-{48,128,256}.png) with our own tools: the
+# Draws the application icon (tools/packaging/icons/tstyles-{48,128,256}.png) with our own tools: the
 # bundled Figure 1 scene with lit-sphere styles rendered by `tstyles render` on a transparent
 # background, trimmed to the object and fitted into squares by oiiotool. The icons are committed,
 # so that a build needs no OpenGL; run this after a change to the scene or the renderer:
-#   packaging/make_icons.sh [BUILD_DIR]   (default: build)
+#   tools/packaging/make_icons.sh [BUILD_DIR]   (default: build)
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
+root=$(cd "$(dirname "$0")/../.." && pwd)
 build=${1:-$root/build}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -21,6 +21,6 @@ grep -q '"background": \[1.0, 1.0, 1.0, 0.0\]' "$work/icon-scene.json" || {
 "$build/tstyles" render "$work/icon-scene.json" -o "$work/render.png" --width 768 --height 768
 for size in 256 128 48; do
     oiiotool "$work/render.png" --autotrim --fit:pad=1:filter=lanczos3 "${size}x${size}" \
-        -d uint8 -o "$root/packaging/icons/tstyles-$size.png"
+        -d uint8 -o "$root/tools/packaging/icons/tstyles-$size.png"
 done
-echo "wrote packaging/icons/tstyles-{256,128,48}.png"
+echo "wrote tools/packaging/icons/tstyles-{256,128,48}.png"
