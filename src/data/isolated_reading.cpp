@@ -85,7 +85,9 @@ private:
     bool reaped_ = false;
 };
 
-// Bytes of data segment (VmData) the process holds now: what the child inherited.
+#ifndef TSTYLES_ADDRESS_SANITIZER
+// Bytes of data segment (VmData) the process holds now: what the child inherited. (Under
+// AddressSanitizer the child takes no data limit: its shadow memory would exceed any.)
 std::uint64_t dataSegmentBytes() {
     std::ifstream status("/proc/self/status");
     std::string key;
@@ -99,6 +101,7 @@ std::uint64_t dataSegmentBytes() {
     }
     return 0;
 }
+#endif
 
 // The child's process settings: it dies with its parent, leaves no core file, keeps the parent's
 // stdout clean, leaves Ctrl-C to the parent, and allocates within its limit.
