@@ -10,7 +10,22 @@
 namespace tstyles {
 namespace {
 
-constexpr std::chrono::milliseconds kSilenceBase{10'000};
+// 30 s: a hang in a library (libhdf5 loops for good on some damaged files) ends in half a minute,
+// while a healthy file on a loaded machine or slow storage has room between two signs of progress.
+// Under AddressSanitizer the reader runs several times slower (a CI stage measured a small
+// manifest silent for over 10 s), so the deadline is four times as long there.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr int kSanitizerSlowdown = 4;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr int kSanitizerSlowdown = 4;
+#else
+constexpr int kSanitizerSlowdown = 1;
+#endif
+#else
+constexpr int kSanitizerSlowdown = 1;
+#endif
+constexpr std::chrono::milliseconds kSilenceBase{30'000 * kSanitizerSlowdown};
 constexpr double kBytesPerSilentSecond = 50.0 * 1024.0 * 1024.0;
 constexpr std::uint64_t kLibraryHeadroom = std::uint64_t(1) << 30;
 // A folder (a manifest's, a DICOM series) is measured up to this many entries: enough for the
@@ -65,8 +80,8 @@ IsolationLimits isolationLimitsFor(const std::vector<std::filesystem::path>& inp
     std::vector<std::filesystem::path> all = inputs;
     all.insert(all.end(), options.solutionFiles.begin(), options.solutionFiles.end());
     IsolationLimits limits;
-    limits.silence = kSilenceBase + std::chrono::milliseconds(
-                                        std::int64_t(1000.0 * double(inputBytes(all)) / kBytesPerSilentSecond));
+    limits.silence = kSilenceBase + std::chrono::milliseconds(std::int64_t(
+                                        1000.0 * kSanitizerSlowdown * double(inputBytes(all)) / kBytesPerSilentSecond));
     limits.memoryBytes = 2 * memoryCap(options.maxMemoryBytes) + kLibraryHeadroom;
     return limits;
 }

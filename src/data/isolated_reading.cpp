@@ -194,7 +194,7 @@ void watchReader(ReaderProcess& child, int channelFd, const std::filesystem::pat
             throwInputError(stageFile(report, file), "",
                             stageLibrary(report) + " stopped responding while " + stageDoing(report) +
                                 " (no progress in " + std::to_string(limits.silence.count() / 1000) +
-                                " s; the reader was ended): the file is damaged");
+                                " s; the reader was ended): the file is damaged, or reading it is slower than the deadline allows");
         }
         const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(limits.silence - silent);
         pollfd watched{channelFd, POLLIN, 0};

@@ -27,7 +27,7 @@ struct IsolationLimits {
     std::optional<std::uint64_t> memoryBytes;
 };
 
-// The limits for reading these inputs: silence 10 s plus 1 s per 50 MiB of input (a time-step
+// The limits for reading these inputs: silence 30 s plus 1 s per 50 MiB of input (a time-step
 // read is progress, so only the longest step has to fit), memory twice the --max-memory cap (or
 // the default cap) plus 1 GiB for the libraries' own buffers.
 IsolationLimits isolationLimitsFor(const std::vector<std::filesystem::path>& inputs, const ReadOptions& options);
