@@ -95,6 +95,20 @@ print("styles:", len(tstyles.built_in_styles()))
     grep -qE "^styles: [1-9]" "$OUT_FILE" || fail "the installed module found no built-in styles"
 }
 
+# `pip install ./python` (python/setup.py, scikit-build): the package is named tstyles and carries
+# the program's version, read from the project's CMakeLists.txt. (The pip build itself, 9.5 minutes,
+# is not run here: docs/install.md.)
+case_python_package_metadata() {
+    RC=0
+    (cd "$SOURCE_DIR/python" && "$PYTHON" setup.py --name --version) >"$OUT_FILE" 2>"$ERR_FILE" || RC=$?
+    expect_exit 0
+    local version
+    version=$("$TSTYLES" --version | sed -n 's/^tstyles //p')
+    [ -n "$version" ] || fail "tstyles --version printed no version"
+    [ "$(tail -2 "$OUT_FILE" | tr '\n' ' ')" = "tstyles $version " ] ||
+        fail "setup.py says '$(tail -2 "$OUT_FILE" | tr '\n' ' ')', the program 'tstyles $version'"
+}
+
 # Option names on a help text's option lines ("  -o,--output TEXT ..."): the first column only
 # (descriptions mention other options), one name a line, sorted.
 help_options() {

@@ -24,6 +24,7 @@
 #include "tstyles/render/style_library.h"
 #include "tstyles/scene/scene_file.h"
 #include "tstyles/video/video_file.h"
+#include "data/realistic_datasets.h"
 
 namespace {
 
@@ -250,6 +251,36 @@ TEST_F(ViewerSession, BadScenesShowAnErrorAndKeepTheOpenScene) {
               std::string::npos)
         << run.output;
     EXPECT_EQ(tstyles::loadScene(out_ / "after.json"), tstyles::loadScene(out_ / "before.json"));
+}
+
+// Issue 39: a folder and a file dragged onto the window from outside (a file manager's drop, made
+// through the X server by tests/viewer/xdnd_drop.cpp) open as File > Open opens them.
+TEST_F(ViewerSession, DroppedFolderAndFileOpen) {
+    const fs::path folder = fs::path(TSTYLES_SOURCE_DIR) / "data/hurricane";
+    const fs::path file = out_ / "ocean eddy.nc";  // a CF NetCDF; the space must survive the URI
+    tstyles::testdata::writeOceanEddy(file);
+    const fs::path script = fs::path(TSTYLES_SOURCE_DIR) / "tests/viewer/scripts/drop_files.txt";
+    const std::string viewer = quoted(TSTYLES_EXECUTABLE) + " view " +
+                               quoted(bundledScene("figure1-focus-step3.json")) +
+                               " --size 640x480 --no-vsync --script " + quoted(script);
+    const std::string drop =
+        quoted(TSTYLES_XDND_DROP) + " --title 'Temporal Styles - ' --timeout 80 " + quoted(folder) + " " + quoted(file);
+    const std::string both = viewer + " & viewer=$!; " + drop + "; drop=$?; wait $viewer; echo \"exit codes: viewer $? drop $drop\"";
+    const std::string command = "timeout 100 " + quoted(*xvfbRun_) + " -a -s '-screen 0 1024x768x24' sh -c " +
+                                quoted(fs::path(both));
+    const CommandResult run = runCommand(command);
+    std::ofstream(out_ / "viewer.log") << command << "\n" << run.output;
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("exit codes: viewer 0 drop 0"), std::string::npos) << run.output;
+    // The viewer says what it opened, in the order dropped; the helper saw the title change each time.
+    const std::size_t openedFolder = run.output.find("opened " + folder.string() + "\n");
+    const std::size_t openedFile = run.output.find("opened " + file.string() + "\n");
+    EXPECT_NE(openedFolder, std::string::npos) << run.output;
+    EXPECT_NE(openedFile, std::string::npos) << run.output;
+    EXPECT_LT(openedFolder, openedFile) << run.output;
+    EXPECT_NE(run.output.find("dropped " + file.string() + ": the window is now titled 'Temporal Styles - "),
+              std::string::npos)
+        << run.output;
 }
 
 }  // namespace

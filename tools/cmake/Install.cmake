@@ -3,8 +3,11 @@
 # types and icons, and the Python package. Nothing installed refers back to the source or build tree.
 include(GNUInstallDirs)
 # `make install` and `cpack` install what is built, without building `all` first: `all` holds the
-# tests, most of the build's time, and none of them is installed. Build, then install or pack.
-set(CMAKE_SKIP_INSTALL_ALL_DEPENDENCY ON)
+# tests, most of the build's time, and none of them is installed. Build, then install or pack. A
+# build without the tests (TSTYLES_TESTS=OFF, the Python package's) builds `all` when installing.
+if(TSTYLES_TESTS)
+  set(CMAKE_SKIP_INSTALL_ALL_DEPENDENCY ON)
+endif()
 
 install(TARGETS tstyles RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
