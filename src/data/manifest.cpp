@@ -271,11 +271,14 @@ std::array<double, 2> valueRangeFromData(const std::filesystem::path& manifest,
     return range;
 }
 
-// "time_units" (CF, "days since 1950-01-01") and "calendar", both optional.
+// "time_units" (CF, "days since 1950-01-01"), "calendar" and "climatology" (true: the stamps stand
+// for the same period of every year), all optional.
 TimeAxis readTimeAxis(const std::filesystem::path& manifest, const ManifestField& root) {
     const auto units = root.optionalMember("time_units");
     const auto calendar = root.optionalMember("calendar");
-    return parseTimeUnits(units ? units->string() : "", calendar ? calendar->string() : "", manifest, "time");
+    TimeAxis axis = parseTimeUnits(units ? units->string() : "", calendar ? calendar->string() : "", manifest, "time");
+    if (const auto climatology = root.optionalMember("climatology")) axis.climatology = climatology->boolean();
+    return axis;
 }
 
 // "axes": three objects {"name", "unit", "direction"}, each key optional.
@@ -356,7 +359,7 @@ ParsedManifest parseSeriesManifest(const std::filesystem::path& manifestPath) {
                      std::to_string(kManifestVersion) + ")");
     }
     root.allowOnlyKeys(
-        {"format", "version", "name", "value_range", "missing_value", "time_units", "calendar", "axes", "time_steps"});
+        {"format", "version", "name", "value_range", "missing_value", "time_units", "calendar", "climatology", "axes", "time_steps"});
 
     ParsedManifest parsed;
     Series& series = parsed.series;

@@ -76,6 +76,11 @@ std::string ManifestField::string() const {
     return value_->get<std::string>();
 }
 
+bool ManifestField::boolean() const {
+    expectType(value_->is_boolean(), "true or false");
+    return value_->get<bool>();
+}
+
 double ManifestField::finiteNumber() const {
     expectType(value_->is_number(), "a number");
     const double number = value_->get<double>();

@@ -38,6 +38,7 @@ public:
 
     // Scalars. Numbers must be finite; integers may be written as 64 or 64.0.
     std::string string() const;
+    bool boolean() const;
     double finiteNumber() const;
     int integer() const;
     // An array of exactly three finite numbers.

@@ -225,6 +225,7 @@ void writeSeries(const RawSeries& series, const std::filesystem::path& directory
     if (series.time.unit != TimeUnit::None) {
         manifest["time_units"] = toCfUnits(series.time);
         manifest["calendar"] = toString(series.time.calendar);
+        if (series.time.climatology) manifest["climatology"] = true;
     }
     if (series.axes != std::array<SpatialAxis, 3>{}) {
         manifest["axes"] = OrderedJson::array();

@@ -271,7 +271,8 @@ std::string describeSeries(const Series& series) {
     }
     if (series.time.unit != TimeUnit::None)
         out << "Time: " << toCfUnits(series.time)
-            << (series.time.reference ? " (" + toString(series.time.calendar) + " calendar)" : "") << "\n";
+            << (series.time.reference ? " (" + toString(series.time.calendar) + " calendar)" : "")
+            << (series.time.climatology ? ", a climatology" : "") << "\n";
     out << "\n";
     std::vector<double> times;
     for (const TimeStep& step : series.steps) times.push_back(step.time);

@@ -151,6 +151,7 @@ void writeAxes(TransferWriter& out, const Series& series) {
     out.value(std::array<int, 5>{date.year, date.month, date.day, date.hour, date.minute});
     out.value(date.second);
     out.value(series.time.calendar);
+    out.value(series.time.climatology);
 }
 
 void readAxes(TransferReader& in, Series& series) {
@@ -166,6 +167,7 @@ void readAxes(TransferReader& in, Series& series) {
     if (hasReference)
         series.time.reference = CalendarDate{fields[0], fields[1], fields[2], fields[3], fields[4], second};
     series.time.calendar = in.value<Calendar>();
+    series.time.climatology = in.value<bool>();
 }
 
 // Structured grids of several time-steps often share one node array: written once, shared again.

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
+#include <limits>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -192,6 +193,13 @@ std::string numberText(double value, int digits) {
     std::ostringstream text;
     text << std::setprecision(digits) << (value + 0.0);
     return text.str();
+}
+
+// Significant digits that print every value's whole part (1500, not 1.5e+03), and at least 3.
+int leastDigits(const std::vector<double>& values) {
+    double largest = 0.0;
+    for (double value : values) largest = std::max(largest, std::abs(value));
+    return largest < 1000.0 ? 3 : std::min(15, int(std::floor(std::log10(largest))) + 1);
 }
 
 bool allDistinct(const std::vector<std::string>& labels) {
@@ -381,25 +389,133 @@ double valueAt(const TimeAxis& axis, const CalendarDate& date, const std::filesy
     return (days * 86400.0 + seconds) / secondsPer(axis.unit);
 }
 
-std::vector<std::string> formatTimes(const std::vector<double>& values, const TimeAxis& axis) {
-    std::vector<std::string> labels(values.size());
-    if (axis.reference) {
-        std::vector<CalendarDate> dates;
-        for (double value : values) dates.push_back(dateAt(axis, value));
-        int precision = 0;
-        for (const CalendarDate& date : dates) {
-            if (date.hour != 0 || date.minute != 0) precision = std::max(precision, 1);
-            if (date.second >= 0.5) precision = 2;
-        }
-        for (; precision <= 2; ++precision) {
-            for (std::size_t i = 0; i < dates.size(); ++i) labels[i] = dateText(dates[i], precision);
-            if (allDistinct(labels)) break;
-        }
+namespace {
+
+constexpr const char* kMonthNames[12] = {"Jan", "Feb", "Mar", "Apr", "May", "Jun",
+                                         "Jul", "Aug", "Sep", "Oct", "Nov", "Dec"};
+constexpr double kSecondsPerDay = 86400.0;
+
+// The smallest gap between neighbouring stamps, in seconds; infinity for fewer than two stamps.
+double smallestStepSeconds(const std::vector<double>& values, const TimeAxis& axis) {
+    double smallest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 1; i < values.size(); ++i)
+        smallest = std::min(smallest, std::abs(values[i] - values[i - 1]) * secondsPer(axis.unit));
+    return smallest;
+}
+
+bool isClimatology(const std::vector<CalendarDate>& dates, const TimeAxis& axis) {
+    if (axis.climatology) return true;
+    for (const CalendarDate& date : dates)
+        if (date.year != 0 && date.year != 1) return false;
+    return true;
+}
+
+std::string yearText(const CalendarDate& date) {
+    char text[16];
+    std::snprintf(text, sizeof text, "%04d", date.year);
+    return text;
+}
+
+std::string monthText(const CalendarDate& date, bool climatology) {
+    if (climatology) return kMonthNames[date.month - 1];
+    return yearText(date) + "-" + twoDigits(date.month);
+}
+
+std::string dayText(const CalendarDate& date, bool climatology) {
+    if (climatology) return std::string(kMonthNames[date.month - 1]) + " " + std::to_string(date.day);
+    return dateText(date, 0);
+}
+
+// Calendar labels at the coarsest unit whose labels tell the steps apart and whose unit the steps are
+// at least as far apart as: years ("2009"), months ("2009-07", or "Jul" in a climatology), days
+// ("2009-07-15", "Jul 15"), then the time of day ("2009-07-15 06:00") and seconds only where needed.
+std::vector<std::string> calendarLabels(const std::vector<double>& values, const TimeAxis& axis) {
+    std::vector<CalendarDate> dates;
+    for (double value : values) dates.push_back(dateAt(axis, value));
+    const bool climatology = isClimatology(dates, axis);
+    const double step = smallestStepSeconds(values, axis);
+    std::vector<std::string> labels(dates.size());
+    auto tryLabels = [&](auto&& text) {
+        for (std::size_t i = 0; i < dates.size(); ++i) labels[i] = text(dates[i]);
+        return allDistinct(labels);
+    };
+    // 359 and 27 days: the shortest year and month of the CF calendars less a day, for stamps that
+    // wander within their period (monthly means stamped mid-month). A single stamp has nothing to be
+    // told apart from: its whole date, and its time of day where it has one.
+    const bool several = dates.size() > 1;
+    if (several && !climatology && step >= 359 * kSecondsPerDay && tryLabels(yearText)) return labels;
+    if (several && step >= 27 * kSecondsPerDay &&
+        tryLabels([&](const CalendarDate& d) { return monthText(d, climatology); }))
         return labels;
+    if (several && step >= kSecondsPerDay && tryLabels([&](const CalendarDate& d) { return dayText(d, climatology); }))
+        return labels;
+    bool timeOfDay = several;
+    for (const CalendarDate& date : dates) timeOfDay = timeOfDay || date.hour != 0 || date.minute != 0;
+    for (int precision = timeOfDay ? 1 : 0; precision <= 2; ++precision)
+        if (tryLabels([&](const CalendarDate& d) { return dateText(d, precision); })) break;
+    return labels;
+}
+
+// A forecast: hours or minutes since the run's start, the first step within a day of it and the
+// last within 16 days (the longest range of the operational global models). Labelled as offsets.
+bool isForecast(const std::vector<double>& values, const TimeAxis& axis) {
+    if (axis.unit != TimeUnit::Hours && axis.unit != TimeUnit::Minutes) return false;
+    if (values.size() < 2 || values.front() < 0.0 || values.front() * secondsPer(axis.unit) > kSecondsPerDay)
+        return false;
+    for (double value : values)
+        if (value < 0.0 || value * secondsPer(axis.unit) > 16 * kSecondsPerDay) return false;
+    return true;
+}
+
+bool allWholeIn(const std::vector<double>& seconds, double unitSeconds) {
+    for (double value : seconds) {
+        const double inUnit = value / unitSeconds;
+        if (std::abs(inUnit - std::round(inUnit)) > 1e-6 * std::max(1.0, std::abs(inUnit))) return false;
     }
-    const std::string suffix = axis.unit == TimeUnit::None ? "" : std::string(" ") + unitSymbol(axis.unit);
-    for (int digits = 3; digits <= 12; ++digits) {
-        for (std::size_t i = 0; i < values.size(); ++i) labels[i] = numberText(values[i], digits) + suffix;
+    return true;
+}
+
+std::string durationText(double value, int digits, TimeUnit unit) {
+    std::string text = numberText(value, digits) + " ";
+    if (unit == TimeUnit::Days) return text + (value == 1.0 ? "day" : "days");
+    return text + unitSymbol(unit);
+}
+
+// Durations in the file's unit, or in a coarser one up to `coarsest` where every stamp is a whole
+// number of it and the steps are at least one apart (60 s steps read "1 min", "2 min"; 2 s steps
+// stay seconds).
+std::vector<std::string> durationLabels(const std::vector<double>& values, const TimeAxis& axis, TimeUnit coarsest,
+                                        const std::string& prefix) {
+    std::vector<double> seconds;
+    for (double value : values) seconds.push_back(value * secondsPer(axis.unit));
+    const double step = smallestStepSeconds(values, axis);
+    TimeUnit unit = axis.unit;
+    constexpr TimeUnit kCoarser[] = {TimeUnit::Milliseconds, TimeUnit::Seconds, TimeUnit::Minutes, TimeUnit::Hours,
+                                     TimeUnit::Days};
+    for (TimeUnit coarser : kCoarser)
+        if (values.size() > 1 && secondsPer(coarser) > secondsPer(unit) && secondsPer(coarser) <= secondsPer(coarsest) &&
+            step >= secondsPer(coarser) && allWholeIn(seconds, secondsPer(coarser)))
+            unit = coarser;
+    std::vector<double> inUnit;
+    for (double value : seconds) inUnit.push_back(value / secondsPer(unit) + 0.0);
+    std::vector<std::string> labels(values.size());
+    for (int digits = leastDigits(inUnit); digits <= 15; ++digits) {
+        for (std::size_t i = 0; i < values.size(); ++i) labels[i] = prefix + durationText(inUnit[i], digits, unit);
+        if (allDistinct(labels)) break;
+    }
+    return labels;
+}
+
+}  // namespace
+
+std::vector<std::string> formatTimes(const std::vector<double>& values, const TimeAxis& axis) {
+    // Forecasts count in hours ("+48 h"), as forecasters do.
+    if (axis.reference)
+        return isForecast(values, axis) ? durationLabels(values, axis, TimeUnit::Hours, "+") : calendarLabels(values, axis);
+    if (axis.unit != TimeUnit::None) return durationLabels(values, axis, TimeUnit::Days, "");
+    std::vector<std::string> labels(values.size());
+    for (int digits = leastDigits(values); digits <= 15; ++digits) {
+        for (std::size_t i = 0; i < values.size(); ++i) labels[i] = numberText(values[i], digits);
         if (allDistinct(labels)) break;
     }
     return labels;

@@ -103,7 +103,7 @@ case_convert_keeps_meaning() {
     run_tstyles -- info "$SCRATCH/ocean"
     expect_exit 0
     expect_stdout_contains "Time: days since 1950-01-01 00:00:00 (noleap calendar)"
-    expect_stdout_contains "1969-01-19"
+    expect_stdout_contains "1969-02"
     expect_stdout_contains "orientation: right = +x (lon, east), up = +z (depth, up), toward the viewer = -y (lat, north)"
 }
 

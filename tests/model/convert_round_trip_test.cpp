@@ -3,7 +3,9 @@
 // reading the files directly; an existing folder is refused unless overwriting, and nothing is
 // left half-written.
 #include <cmath>
+#include <cstring>
 #include <fstream>
+#include <utility>
 
 #include <gtest/gtest.h>
 #include <netcdf.h>
@@ -12,6 +14,7 @@
 #include "tstyles/data/manifest.h"
 #include "tstyles/data/series_export.h"
 #include "tstyles/data/series_opener.h"
+#include "tstyles/data/time_axis.h"
 
 namespace {
 
@@ -105,6 +108,42 @@ TEST(ConvertRoundTrip, NetcdfKeepsValuesTimesUnevenLevelsAndMissingVoxels) {
     EXPECT_TRUE(tstyles::isMissing(loaded.steps[1].density[4]));
     // Raw 0.25 * index over [0, 8.75]: index 5 of step 0 is 1.25 / 8.75.
     EXPECT_NEAR(loaded.steps[0].density[5], 1.25 / 8.75, 1e-6);
+}
+
+// A CF climatology: twelve monthly means of 1981-2010 stamped mid-month in 1981, the time variable
+// naming its bounds in a `climatology` attribute. The flag survives convert; labels name months.
+TEST(ConvertRoundTrip, NetcdfClimatologyKeepsItsFlagAndIsLabelledByMonth) {
+    const auto folder = scratch("climatology");
+    const auto file = folder / "sst_clim.nc";
+    int nc = 0, dims[4] = {}, sst = 0, time = 0;
+    check(nc_create(file.c_str(), NC_CLOBBER, &nc));
+    check(nc_def_dim(nc, "time", 12, &dims[0]));
+    check(nc_def_dim(nc, "z", 2, &dims[1]));
+    check(nc_def_dim(nc, "y", 2, &dims[2]));
+    check(nc_def_dim(nc, "x", 2, &dims[3]));
+    check(nc_def_var(nc, "time", NC_DOUBLE, 1, &dims[0], &time));
+    for (const auto& [name, text] : {std::pair<const char*, const char*>{"units", "days since 1981-01-01"},
+                                     {"calendar", "noleap"}, {"climatology", "climatology_bounds"}})
+        check(nc_put_att_text(nc, time, name, std::strlen(text), text));
+    check(nc_def_var(nc, "sst", NC_FLOAT, 4, dims, &sst));
+    check(nc_enddef(nc));
+    const double mid[12] = {15.5, 45, 74.5, 105, 135.5, 166, 196.5, 227.5, 258, 288.5, 319, 349.5};
+    check(nc_put_var_double(nc, time, mid));
+    std::vector<float> values(96);
+    for (std::size_t index = 0; index < values.size(); ++index) values[index] = float(index % 7);
+    check(nc_put_var_float(nc, sst, values.data()));
+    check(nc_close(nc));
+
+    const tstyles::Series direct = tstyles::openSeries(file, {});
+    EXPECT_TRUE(direct.time.climatology);
+    convert(file, folder / "out", false);
+    const tstyles::Series loaded = tstyles::loadSeries(folder / "out");
+    EXPECT_EQ(loaded.time, direct.time);
+    std::vector<double> times;
+    for (const tstyles::TimeStep& step : loaded.steps) times.push_back(step.time);
+    const std::vector<std::string> labels = tstyles::formatTimes(times, loaded.time);
+    EXPECT_EQ(labels.front(), "Jan");
+    EXPECT_EQ(labels.back(), "Dec");
 }
 
 TEST(ConvertRoundTrip, NrrdKeepsValuesSpacingAndOrigin) {

@@ -90,6 +90,7 @@ TEST(ManifestErrors, WrongTypes) {
                    {"time_steps[0].grid.dims[2]", "expected an integer"});
     expectMentions(errorWhenSet("/time_steps/0/placement/origin", {1, 2}),
                    {"time_steps[0].placement.origin", "3 numbers"});
+    expectMentions(errorWhenSet("/climatology", 1), {"series.json", "climatology", "expected true or false", "number"});
 }
 
 TEST(ManifestErrors, MissingRequiredKeys) {

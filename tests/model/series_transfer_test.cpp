@@ -52,6 +52,7 @@ Series everyKindOfStep() {
     series.time.unit = TimeUnit::Hours;
     series.time.reference = CalendarDate{2005, 8, 28, 6, 30, 12.5};
     series.time.calendar = Calendar::NoLeap;
+    series.time.climatology = true;
 
     TimeStep rectilinear;
     rectilinear.time = 0.25;

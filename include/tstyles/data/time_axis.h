@@ -33,6 +33,9 @@ struct TimeAxis {
     TimeUnit unit = TimeUnit::None;  // None: plain numbers (time-step indices, an unknown unit)
     std::optional<CalendarDate> reference;  // "<unit> since <reference>"
     Calendar calendar = Calendar::Standard;
+    // The stamps stand for the same period of every year of a range (a CF time variable with a
+    // `climatology` attribute): labels name months and days without a year ("Feb", "Feb 15").
+    bool climatology = false;
     bool operator==(const TimeAxis&) const = default;
 };
 
@@ -55,9 +58,13 @@ CalendarDate dateAt(const TimeAxis& axis, double value);
 double valueAt(const TimeAxis& axis, const CalendarDate& date, const std::filesystem::path& source,
                const std::string& field);
 
-// Labels for a series' stamps, as short as keeps neighbours apart: dates ("2009-07-15", with
-// "06:00" or seconds only where needed), values with their unit ("12.2 s", "3 days"), or plain
-// numbers.
+// Labels for a series' stamps in the coarsest unit that tells them apart and that the steps are at
+// least one of: on a calendar, years ("2009"), months ("2009-07"; "Feb" in a climatology, which
+// year 0 or 1 or the climatology flag makes one), days ("2009-07-15"), then "06:00" and seconds only
+// where needed; a forecast (hours or minutes since a reference within a day of the first step, the
+// last within 16 days) as offsets ("+6 h"); without a calendar, durations in the file's unit or a
+// coarser one every stamp is a whole number of ("12.2 s", "2 min", "3 days"); plain numbers without
+// a unit. docs/automatic-scene.md, "Time labels".
 std::vector<std::string> formatTimes(const std::vector<double>& values, const TimeAxis& axis);
 std::string formatTime(double value, const TimeAxis& axis);
 

@@ -104,14 +104,17 @@ CfSpatialAxis axisFrame(const NetcdfFile& nc, const NetcdfDimension& dimension, 
     return cfSpatialAxis(dimension.name, attributes, nc.readAll(*id), nc.path());
 }
 
-// CF: the time coordinate's units ("days since 1950-01-01") and calendar.
+// CF: the time coordinate's units ("days since 1950-01-01") and calendar, and whether it is a
+// climatology (a `climatology` attribute naming its bounds).
 TimeAxis timeAxisOf(const NetcdfFile& nc, const NetcdfVariable& variable, int timeDimension) {
     if (timeDimension < 0) return {};
     const std::string name = variable.dimensions[std::size_t(timeDimension)].name;
     const auto id = nc.findVariable(name);
     if (!id || !nc.isCoordinateVariable(*id)) return {};
-    return parseTimeUnits(nc.textAttribute(*id, "units").value_or(""), nc.textAttribute(*id, "calendar").value_or(""),
-                          nc.path(), name);
+    TimeAxis axis = parseTimeUnits(nc.textAttribute(*id, "units").value_or(""),
+                                   nc.textAttribute(*id, "calendar").value_or(""), nc.path(), name);
+    axis.climatology = nc.textAttribute(*id, "climatology").has_value();
+    return axis;
 }
 
 std::vector<double> stepTimes(const NetcdfFile& nc, const NetcdfVariable& variable, int timeDimension) {
