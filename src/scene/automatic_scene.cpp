@@ -47,13 +47,14 @@ std::string windowText(const Series& series, const OpacityWindow& window) {
     return text;
 }
 
-// Geographic data from above at an oblique angle with north up; anatomical data from the front,
-// head up; anything else from an oblique three-quarter view.
+// Geographic data straight from above, north up, as a map is read (the surface first along the
+// rays; from an oblique angle a deep, exaggerated column's south wall filled the picture);
+// anatomical data from the front, head up; anything else from an oblique three-quarter view.
 OrbitCamera automaticOrbit(DataKind kind) {
     OrbitCamera orbit;
     if (kind == DataKind::Geographic) {
         orbit.azimuthDeg = 0.0;
-        orbit.elevationDeg = 50.0;
+        orbit.elevationDeg = 90.0;
     } else if (kind == DataKind::Anatomical) {
         orbit.azimuthDeg = 0.0;
         orbit.elevationDeg = 0.0;

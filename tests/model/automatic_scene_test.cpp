@@ -73,6 +73,20 @@ TEST(AutomaticScene, WrittenAndReadBackIsTheSameScene) {
     EXPECT_EQ(dataKindOf(series), DataKind::Geographic);
 }
 
+// A map is seen straight from above with north up: the view looks down the display's up axis, and
+// the image's up is north (display -z: the frame puts north away from a camera at azimuth 0).
+TEST(AutomaticScene, AMapIsSeenFromAboveWithNorthUp) {
+    const auto file = sampleFolder() / "ocean-map.nc";
+    testdata::writeOceanAnomalies(file);
+    const Series series = openSeries(file, ReadOptions{});
+    const SceneOnSeries fitted = fitSceneToSeries(automaticScene(series, file).scene, series);
+    const View view = resolveView(fitted.scene.camera, fitted.framed, fitted.series.worldBounds(), 400, 300);
+    const glm::dvec3 looking = glm::normalize(view.target - view.eye);
+    EXPECT_NEAR(looking.y, -1.0, 1e-9);
+    EXPECT_NEAR(view.up.z, -1.0, 1e-9);
+    EXPECT_NEAR(std::abs(view.up.x) + std::abs(view.up.y), 0.0, 1e-9);
+}
+
 TEST(AutomaticScene, GradientRangeIsFittedToTheChangePresent) {
     const auto file = sampleFolder() / "blob-change.nii";
     testdata::writeMovingBlobNifti(file);
