@@ -37,6 +37,7 @@ private:
     const SceneOnSeries& fit(const Scene& scene);
 
     std::unique_ptr<HeadlessContext> context_;
+    std::string glRenderer_;  // GL_RENDERER and version: which of a case's thresholds apply
     Renderer renderer_;
     std::mutex& datasetReading_;
     std::map<std::filesystem::path, Series> datasets_;

@@ -94,6 +94,9 @@ int finishCheck(const CheckOptions& options, const CheckSuite& suite, const Case
                               : std::to_string(failed) + " of " + std::to_string(run.results.size()) + " cases fail")
               << "; report: " << (options.report / "index.html").string() << ", "
               << (options.report / "junit.xml").string() << " (" << run.context << ")\n";
+    // run.context names GL_RENDERER: say which of the suite's thresholds held the cases.
+    if (const auto renderer = thresholdsOn(suite.cases.front(), run.context).renderer)
+        std::cout << "thresholds: the suite's renderer_thresholds for \"" << *renderer << "\"\n";
     return failed == 0 ? kExitSuccess : kExitFailure;
 }
 

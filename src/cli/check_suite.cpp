@@ -32,11 +32,18 @@ std::string pathIn(const json& value, const fs::path& file, const std::string& f
     return text;
 }
 
-CheckCase readCase(const json& entry, const fs::path& file, const std::string& field, const ComparisonThresholds& base) {
+// The suite's thresholds, and those of each renderer entry over them.
+struct SuiteThresholds {
+    ComparisonThresholds base;
+    std::vector<RendererThresholds> renderers;
+};
+
+CheckCase readCase(const json& entry, const fs::path& file, const std::string& field, const SuiteThresholds& suite) {
     if (!entry.is_object()) throwInputError(file, field, "expected an object with at least \"scene\"");
     const fs::path folder = file.parent_path();
     CheckCase result;
-    result.thresholds = base;
+    result.thresholds = suite.base;
+    result.rendererThresholds = suite.renderers;
     for (const auto& [key, value] : entry.items()) {
         const std::string keyField = field + "." + key;
         if (key == "scene") result.scene = (folder / pathIn(value, file, keyField)).lexically_normal();
@@ -44,7 +51,12 @@ CheckCase readCase(const json& entry, const fs::path& file, const std::string& f
         else if (key == "name") result.name = textIn(value, file, keyField);
         else if (key == "width") result.width = sideIn(value, file, keyField);
         else if (key == "height") result.height = sideIn(value, file, keyField);
-        else if (key == "thresholds") result.thresholds = thresholdsFromJson(value, base, file, keyField);
+        else if (key == "thresholds") {
+            result.thresholds = thresholdsFromJson(value, suite.base, file, keyField);
+            for (std::size_t i = 0; i < suite.renderers.size(); ++i)
+                result.rendererThresholds[i].thresholds =
+                    thresholdsFromJson(value, suite.renderers[i].thresholds, file, keyField);
+        }
         else throwInputError(file, keyField, "unknown key; allowed: scene, golden, name, width, height, thresholds");
     }
     if (result.scene.empty()) throwInputError(file, field + ".scene", "missing; every case names its scene file");
@@ -55,20 +67,43 @@ CheckCase readCase(const json& entry, const fs::path& file, const std::string& f
     return result;
 }
 
+// "renderer_thresholds": [{"renderer": "llvmpipe", "thresholds": {...}}, ...], each over `base`.
+void readRendererThresholds(const json& entries, const fs::path& file, SuiteThresholds& thresholds) {
+    if (!entries.is_array()) throwInputError(file, "renderer_thresholds", "expected an array of {\"renderer\", \"thresholds\"}");
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+        const std::string field = "renderer_thresholds[" + std::to_string(i) + "]";
+        const json& entry = entries[i];
+        if (!entry.is_object()) throwInputError(file, field, "expected an object {\"renderer\", \"thresholds\"}");
+        for (const auto& [key, value] : entry.items())
+            if (key != "renderer" && key != "thresholds")
+                throwInputError(file, field + "." + key, "unknown key; allowed: renderer, thresholds");
+        const auto renderer = entry.find("renderer");
+        if (renderer == entry.end())
+            throwInputError(file, field + ".renderer", "missing; a text that GL_RENDERER contains, e.g. \"llvmpipe\"");
+        const auto values = entry.find("thresholds");
+        if (values == entry.end()) throwInputError(file, field + ".thresholds", "missing; the thresholds on that renderer");
+        thresholds.renderers.push_back({textIn(*renderer, file, field + ".renderer"),
+                                        thresholdsFromJson(*values, thresholds.base, file, field + ".thresholds")});
+    }
+}
+
 CheckSuite readSuiteFile(const fs::path& file) {
     const json root = readJsonFile(file);
     if (!root.is_object()) throwInputError(file, "", "expected an object with \"cases\"");
     CheckSuite suite{file.stem().string(), file, {}};
-    ComparisonThresholds base;
+    SuiteThresholds thresholds;
     for (const auto& [key, value] : root.items())
-        if (key != "thresholds" && key != "cases") throwInputError(file, key, "unknown key; allowed: thresholds, cases");
-    if (const auto thresholds = root.find("thresholds"); thresholds != root.end())
-        base = thresholdsFromJson(*thresholds, base, file, "thresholds");
+        if (key != "thresholds" && key != "renderer_thresholds" && key != "cases")
+            throwInputError(file, key, "unknown key; allowed: thresholds, renderer_thresholds, cases");
+    if (const auto base = root.find("thresholds"); base != root.end())
+        thresholds.base = thresholdsFromJson(*base, thresholds.base, file, "thresholds");
+    if (const auto renderers = root.find("renderer_thresholds"); renderers != root.end())
+        readRendererThresholds(*renderers, file, thresholds);
     const auto cases = root.find("cases");
     if (cases == root.end() || !cases->is_array() || cases->empty())
         throwInputError(file, "cases", "expected a non-empty array of cases");
     for (std::size_t i = 0; i < cases->size(); ++i)
-        suite.cases.push_back(readCase((*cases)[i], file, "cases[" + std::to_string(i) + "]", base));
+        suite.cases.push_back(readCase((*cases)[i], file, "cases[" + std::to_string(i) + "]", thresholds));
     return suite;
 }
 
@@ -97,6 +132,12 @@ CheckSuite readSuiteFolder(const fs::path& folder) {
 }
 
 }  // namespace
+
+ChosenThresholds thresholdsOn(const CheckCase& entry, const std::string& glRenderer) {
+    for (const RendererThresholds& candidate : entry.rendererThresholds)
+        if (glRenderer.find(candidate.renderer) != std::string::npos) return {candidate.thresholds, candidate.renderer};
+    return {entry.thresholds, std::nullopt};
+}
 
 CheckSuite loadCheckSuite(const fs::path& suitePath) {
     const PathKind kind = userPathKind({}, suitePath);

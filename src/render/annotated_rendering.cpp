@@ -16,9 +16,8 @@ void SceneAnnotator::annotate(Image& image, const Scene& scene) {
                     [this](const std::string& style) { return &styles_.image(style); });
 }
 
-Image AnnotatedRendering::render(const Scene& scene) {
+Image AnnotatedRendering::render(const Scene& scene, FrameOptions options) {
     const View view = annotator_.viewOf(scene);
-    FrameOptions options;
     options.size = {scene.width, scene.height};
     renderer_.draw(scene, view, options);
     Image image = renderer_.readFrame();

@@ -40,7 +40,9 @@ public:
         : renderer_(renderer), annotator_(series, framed, frame) {}
     explicit AnnotatedRendering(Renderer& renderer, const SceneOnSeries& fitted)
         : AnnotatedRendering(renderer, fitted.series, fitted.framed, fitted.frame) {}
-    Image render(const Scene& scene);
+    // `options` other than the size (which the scene gives): the renderer's choices, e.g. the
+    // gradient method.
+    Image render(const Scene& scene, FrameOptions options = {});
 
 private:
     Renderer& renderer_;
