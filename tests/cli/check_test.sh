@@ -50,10 +50,13 @@ case_update_named_only() {
     expect_exit 0
     expect_stdout_contains "new golden"
     cp "$SCRATCH/golden/third.png" "$SCRATCH/third-before.png"
+    cp "$SCRATCH/golden/first.png" "$SCRATCH/first-before.png"
     # Only `first` is rewritten (second wrote the shared golden last, so it changes back); third's
-    # golden keeps its bytes.
+    # golden keeps its bytes. Every case compares with the goldens as the run found them: all pass.
     run_tstyles -- check "$SCRATCH/suite.json" --update first --report "$SCRATCH/report"
+    expect_exit 0
     expect_stdout_contains "golden rewritten; it changed by max delta"
+    ! cmp -s "$SCRATCH/golden/first.png" "$SCRATCH/first-before.png" || fail "first.png was not rewritten"
     cmp -s "$SCRATCH/golden/third.png" "$SCRATCH/third-before.png" || fail "third.png changed without --update third"
     run_tstyles -- check "$SCRATCH/suite.json" --update nosuch --report "$SCRATCH/report"
     expect_exit 2
@@ -192,6 +195,62 @@ case_missing_scene() {
 case_bad_threshold() {
     bad_suite "{\"thresholds\": {\"min_ssim\": \"high\"}, \"cases\": [{\"scene\": \"$SCENES/figure1-focus-step3.json\"}]}" \
         "thresholds.min_ssim: expected a number"
+}
+case_bad_renderer_thresholds() {
+    local scene="{\"scene\": \"$SCENES/figure1-focus-step3.json\"}"
+    bad_suite "{\"renderer_thresholds\": {\"llvmpipe\": {}}, \"cases\": [$scene]}" \
+        "renderer_thresholds: expected an array"
+    bad_suite "{\"renderer_thresholds\": [{\"thresholds\": {}}], \"cases\": [$scene]}" \
+        "renderer_thresholds[0].renderer: missing"
+    bad_suite "{\"renderer_thresholds\": [{\"renderer\": \"llvmpipe\", \"thresholds\": {\"max_mean\": -1}}], \"cases\": [$scene]}" \
+        "renderer_thresholds[0].thresholds.max_mean: must be >= 0"
+}
+
+# A case renders the same pixels whatever was rendered before it: the styled Figure 1 (focus on
+# step 6) after another styled scene of its dataset, and alone, to the bit. (While the renderer
+# took the gradient atlas from a series' second styled frame on, the two differed by 1/255.)
+case_order_does_not_change_pixels() {
+    local after="$SCRATCH/after.json" alone="$SCRATCH/alone.json"
+    local styled3="{\"name\": \"styled3\", \"scene\": \"$SCENES/figure1-styled-focus-step3.json\", \"golden\": \"golden/styled3.png\", \"width\": 96, \"height\": 96}"
+    local styled6="{\"name\": \"styled6\", \"scene\": \"$SCENES/figure1-styled-focus-step6.json\", \"golden\": \"golden/styled6.png\", \"width\": 96, \"height\": 96}"
+    local exact='"thresholds": {"max_difference": 0, "pixel_threshold": 0, "max_failing_share": 0, "max_mean": 0}'
+    printf '{%s, "cases": [%s, %s]}\n' "$exact" "$styled3" "$styled6" >"$after"
+    printf '{%s, "cases": [%s]}\n' "$exact" "$styled6" >"$alone"
+    mkdir -p "$SCRATCH/golden"
+    run_tstyles -- check "$after" --update --all --jobs 1 --report "$SCRATCH/report"
+    expect_exit 0
+    run_tstyles -- check "$alone" --report "$SCRATCH/report"
+    expect_exit 0
+    expect_stdout_contains "max 0/255"
+}
+
+# A golden 3/255 brighter all over than the render: within the suite's loose thresholds, beyond the
+# exact ones of a renderer entry that names this driver (OSMesa is llvmpipe), and within them again
+# where the entry names another renderer.
+case_renderer_thresholds() {
+    local scene="$SCENES/figure1-focus-step3.json"
+    write_renderer_suite() {
+        cat >"$SCRATCH/suite.json" <<JSON
+{
+  "thresholds": {"pixel_threshold": 6, "max_failing_share": 1, "max_mean": 5, "max_difference": 255, "min_ssim": 0},
+  "renderer_thresholds": [{"renderer": "$1", "thresholds": {"max_difference": 0}}],
+  "cases": [{"name": "focus", "scene": "$scene", "golden": "golden.png", "width": 64, "height": 64}]
+}
+JSON
+    }
+    write_renderer_suite llvmpipe
+    run_tstyles -- check "$SCRATCH/suite.json" --update --all --backend osmesa --report "$SCRATCH/report"
+    expect_exit 0
+    "$OIIOTOOL" "$SCRATCH/golden.png" --addc 0.012 -o "$SCRATCH/golden.png" || fail "oiiotool could not brighten the golden"
+    run_tstyles -- check "$SCRATCH/suite.json" --backend osmesa --report "$SCRATCH/report"
+    expect_exit 1
+    expect_stdout_contains "thresholds: the suite's renderer_thresholds for \"llvmpipe\""
+    expect_stdout_contains "max delta 3/255 > 0/255"
+    write_renderer_suite "no such renderer"
+    run_tstyles -- check "$SCRATCH/suite.json" --backend osmesa --report "$SCRATCH/report"
+    expect_exit 0
+    expect_stdout_contains "all 1 cases pass"
+    ! grep -qF "thresholds: the suite's" "$OUT_FILE" || fail "the suite's own thresholds applied, but stdout names an entry"
 }
 
 run_case
