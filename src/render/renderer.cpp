@@ -161,6 +161,7 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     glScissor(covered.offset.x, covered.offset.y, covered.size.x, covered.size.y);
     raycaster_.draw(variant, parameters);
     glDisable(GL_SCISSOR_TEST);
+    lastVariant_ = std::move(variant);
 }
 
 std::size_t Renderer::seriesTextureBytes() const {

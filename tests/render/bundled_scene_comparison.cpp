@@ -3,6 +3,7 @@
 
 #include <iostream>
 #include <optional>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -16,6 +17,50 @@ namespace {
 
 const std::filesystem::path kSourceDir = TSTYLES_SOURCE_DIR;
 const std::filesystem::path kOutputDir = TSTYLES_TEST_OUTPUT_DIR;
+
+const char* walkName(TimeStepWalk walk) {
+    switch (walk) {
+        case TimeStepWalk::RayList: return "ray list";
+        case TimeStepWalk::PackedGroups: return "packed groups";
+        case TimeStepWalk::Naive: return "naive";
+    }
+    return "?";
+}
+
+// The renderer took the paths `way` forces (FrameOptions falls back silently where a path does not
+// suit the series: a forced comparison that compared the default path with itself would pass).
+void expectPathsTaken(const RenderingWay& way, const RaycastVariant& taken) {
+    const FrameOptions& options = way.options;
+    if (options.naive) {
+        EXPECT_EQ(taken.walk, TimeStepWalk::Naive) << way.name << ": the naive walk";
+    }
+    if (!options.packAligned) {
+        EXPECT_NE(taken.walk, TimeStepWalk::PackedGroups) << way.name << ": the general path";
+    }
+    if (way.walk) {
+        EXPECT_EQ(taken.walk, *way.walk) << way.name << ": took the " << walkName(taken.walk) << " walk, not the "
+                                         << walkName(*way.walk);
+    }
+    if (options.perRayCaches) {
+        EXPECT_EQ(taken.perRayCaches, *options.perRayCaches) << way.name << ": per-ray caches";
+    }
+    if (options.emptyBrickTest) {
+        EXPECT_EQ(taken.skipEmptyBricks, *options.emptyBrickTest) << way.name << ": the empty-brick test";
+    }
+    if (options.precomputedGradients && taken.styled()) {
+        EXPECT_EQ(taken.precomputedGradients, *options.precomputedGradients)
+            << way.name << ": " << (*options.precomputedGradients ? "the gradient atlas" : "six-fetch gradients");
+    }
+}
+
+// Both ways with the same gradient method unless one of them chooses it.
+std::pair<RenderingWay, RenderingWay> withOneGradientMethod(RenderingWay first, RenderingWay second) {
+    if (!first.options.precomputedGradients && !second.options.precomputedGradients) {
+        first.options.precomputedGradients = false;
+        second.options.precomputedGradients = false;
+    }
+    return {first, second};
+}
 
 }  // namespace
 
@@ -36,8 +81,9 @@ std::filesystem::path manifestOf(const BundledScene& bundled) {
     return kSourceDir / "data" / bundled.dataset / "series.json";
 }
 
-void expectSameImage(const BundledScene& bundled, int size, const RenderingWay& first, const RenderingWay& second,
-                     const SameImageTolerance& tolerance) {
+void expectSameImage(const BundledScene& bundled, int size, const RenderingWay& firstWay,
+                     const RenderingWay& secondWay, const SameImageTolerance& tolerance) {
+    const auto [first, second] = withOneGradientMethod(firstWay, secondWay);
     Scene scene = loadScene(kSourceDir / "data/scenes" / (bundled.scene + ".json"));
     scene.width = size;
     scene.height = size;
@@ -49,7 +95,9 @@ void expectSameImage(const BundledScene& bundled, int size, const RenderingWay& 
     const Series& series = loadSeriesOnce(manifestOf(bundled));
     testRenderer().setSeries(series);
     const Image firstImage = drawWithCurrentSeries(scene, series.worldBounds(), first.options);
+    expectPathsTaken(first, testRenderer().lastVariant());
     const Image secondImage = drawWithCurrentSeries(scene, series.worldBounds(), second.options);
+    expectPathsTaken(second, testRenderer().lastVariant());
 
     const ImageDifference difference = compareImages(firstImage, secondImage, tolerance.pixelThreshold);
     const bool same = difference.failingFraction <= tolerance.maxFailingFraction &&

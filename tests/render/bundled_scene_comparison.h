@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <ostream>
 #include <string>
 
@@ -29,15 +30,20 @@ struct SameImageTolerance {
     double maxMeanDelta;        // mean difference allowed, in 1/255 steps
 };
 
-// One way to render: its name (for messages and the files written on failure) and its options.
+// One way to render: its name (for messages and the files written on failure), its options and the
+// walk it must take (none: any).
 struct RenderingWay {
     const char* name;
     FrameOptions options;
+    std::optional<TimeStepWalk> walk;
 };
 
 // Renders the bundled scene at size x size both ways (the dataset must be there) and expects the
 // same image within `tolerance`; on failure both renders and their difference go to the test
-// output folder. Prints the difference either way.
+// output folder. Prints the difference either way. One variable per comparison: where neither way
+// chooses the gradient method, both take six fetches (by default the first styled frame after an
+// upload takes six and the next the gradient atlas). Every path a way forces (naive, general,
+// caches, empty-brick test, precomputed gradients on a styled scene, its walk) is asserted taken.
 void expectSameImage(const BundledScene& bundled, int size, const RenderingWay& first, const RenderingWay& second,
                      const SameImageTolerance& tolerance);
 

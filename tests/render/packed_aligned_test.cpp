@@ -286,10 +286,12 @@ TEST(PackedAlignedRender, WithMoreGroupsThanAMaskNamesTheOccupancyStillSkipsEmpt
 
 // Packed and general path differ only in how a density is fetched (one RGBA16 texel for four
 // time-steps instead of one R16 or RG16 texel each, the same 16-bit values and filter weights) and
-// in the order in which equal intervals are visited; the images must agree to rounding.
+// in the order in which equal intervals are visited; the images must agree to rounding. Measured
+// at 160x160 on llvmpipe (29 November): at most 1/255, mean at most 0.0035/255 (the hurricane).
+// None may fail beyond 2/255; mean at most 0.01/255 (three times).
 constexpr int kPixelThreshold = 2;
-constexpr double kMaxFailingFraction = 0.001;
-constexpr double kMaxMeanDelta = 0.05;
+constexpr double kMaxFailingFraction = 0.0;
+constexpr double kMaxMeanDelta = 0.01;
 
 class PackedAlignedEquivalence : public ::testing::TestWithParam<BundledScene> {};
 
@@ -299,7 +301,7 @@ TEST_P(PackedAlignedEquivalence, PackedAndGeneralPathGiveTheSameImage) {
     ASSERT_TRUE(suitsPackedAtlas(loadSeriesOnce(manifestOf(bundled))));
     FrameOptions general;
     general.packAligned = false;
-    expectSameImage(bundled, 160, {"packed", FrameOptions{}}, {"general", general},
+    expectSameImage(bundled, 160, {"packed", FrameOptions{}, TimeStepWalk::PackedGroups}, {"general", general},
                     {kPixelThreshold, kMaxFailingFraction, kMaxMeanDelta});
 }
 

@@ -134,8 +134,9 @@ TEST(PrecomputedGradients, TheAtlasIsMadeFromTheSecondStyledFrameWithinTheBudget
 
 // The filtered node differences equal the six-fetch gradient one voxel or more inside a grid
 // (and differ within a voxel of its faces); the images agree to rounding, as packed and general
-// path do (packed_aligned_test.cpp). Measured at 512 x 512: at most 1/255, no pixel beyond it.
-constexpr SameImageTolerance kSameImage{2, 0.001, 0.05};
+// path do (packed_aligned_test.cpp). Measured at 160x160 on llvmpipe (29 November): at most 2/255,
+// mean at most 0.00034/255. None may fail beyond 2/255; mean at most 0.001/255 (three times).
+constexpr SameImageTolerance kSameImage{2, 0.0, 0.001};
 
 class PrecomputedGradientEquivalence : public ::testing::TestWithParam<BundledScene> {};
 

@@ -84,6 +84,10 @@ public:
     Image readFrame() const { return target_.read(); }
     // Counters of the last frame drawn with collectStatistics.
     RaycastStatistics lastStatistics() const { return raycaster_.lastStatistics(); }
+    // The raycast program of the last frame: the walk, caches, empty-brick test and gradients it
+    // took, where FrameOptions leave the choice to the renderer or it falls back (a test that
+    // forces a path asserts with it that the path was taken).
+    const RaycastVariant& lastVariant() const { return lastVariant_; }
     // Rays of the last frame cut short by the driver (Raycaster::lastCutShortRays).
     std::uint32_t lastCutShortRays() const { return raycaster_.lastCutShortRays(); }
     const RenderTarget& target() const { return target_; }
@@ -108,6 +112,7 @@ private:
     Bounds latticeBounds_;  // of the whole series: where each ray's samples are anchored
     bool occupancyStale_ = true;  // a new series needs its brick visibility computed
     bool cpuRasterizer_;          // the context renders on the CPU (llvmpipe): see perRayCaches
+    RaycastVariant lastVariant_;
     PrecomputedGradients gradients_;  // the gradient atlas of gpuSeries_ (FrameOptions::precomputedGradients)
     TransferTables transferTables_;
     StyleTextures styleTextures_;
