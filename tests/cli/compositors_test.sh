@@ -39,13 +39,18 @@ case_help_lists_every_compositor() {
 
 case_every_compositor_renders() {
     for name in $COMPOSITORS; do
-        # The difference of the first and last time-steps is empty here (their grids do not meet):
-        # two neighbours overlap.
+        # The difference of the first and last time-steps is empty here (their grids do not meet);
+        # that of two neighbours, which overlap, is rendered after the loop.
         run_tstyles -- render "$FIGURE4" --tc "$name" --width 48 --height 48 -o "$SCRATCH/$name.png"
         expect_exit 0
         expect_stdout_contains "$name, 10 time-steps"
         [ "$name" = difference ] || expect_image "$SCRATCH/$name.png" 48 48
     done
+    printf '{"dataset": "%s", "image": {"width": 48, "height": 48}, "compositor": {"name": "difference", "steps": [4, 5]}}\n' \
+        "$DATASET" >"$SCRATCH/neighbours.json"
+    run_tstyles -- render "$SCRATCH/neighbours.json" -o "$SCRATCH/difference-4-5.png"
+    expect_exit 0
+    expect_image "$SCRATCH/difference-4-5.png" 48 48
 }
 
 case_glsl_syntax_error() {
@@ -133,10 +138,17 @@ case_automatic_scene_signed_colours() {
     gradient=$(tr -d ' \n' <"$SCENE" | grep -o '"gradient":{[^}]*}[^}]*}')
     echo "$gradient" | grep -qF '"opacity":[{"at":0.0,"opacity":1.0},{"at":0.5,"opacity":0.15}' ||
         fail "the gradient TSTF is not opaque at both ends and faint in the middle: $gradient"
-    # A scene file keeps its own gradient TSTF whatever --tc says.
+    # A scene file keeps its own gradient TSTF whatever --tc says: its green-orange one, not the
+    # blue-red one the automatic scene gives a signed compositor (97/255 apart at 32x32, measured).
     run_tstyles -- scene "$DATASET" -o "$SCRATCH/mip.json"
-    run_tstyles -- render "$SCRATCH/mip.json" --tc difference --width 32 --height 32 -o "$OUTPUT"
     expect_exit 0
+    run_tstyles -- render "$SCRATCH/mip.json" --tc linear-trend --width 32 --height 32 -o "$SCRATCH/kept.png"
+    expect_exit 0
+    expect_image "$SCRATCH/kept.png" 32 32
+    run_tstyles -- render "$DATASET" --tc linear-trend --width 32 --height 32 -o "$SCRATCH/automatic.png"
+    expect_exit 0
+    run_tstyles -- compare "$SCRATCH/kept.png" "$SCRATCH/automatic.png" --max-difference 20
+    expect_exit 1
 }
 
 case_example_time_of_peak() {

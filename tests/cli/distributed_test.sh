@@ -24,7 +24,7 @@ SCENE="$SOURCE_DIR/data/scenes/figure4-temporal-mip.json"
 # expect_same_as_one_process ONE OTHER: the images within the thresholds of
 # tests/distributed/distributed_equivalence.cpp, which says why they are not 0.
 expect_same_as_one_process() {
-    run_tstyles -- compare "$1" "$2" --max-difference 64 --pixel-threshold 3 --max-failing-share 0.02 \
+    run_tstyles -- compare "$1" "$2" --max-difference 28 --pixel-threshold 3 --max-failing-share 0.02 \
         --max-mean 0.03 --min-ssim 0.999
     expect_exit 0
 }

@@ -53,7 +53,7 @@ using namespace tstyles;
 // pixels beyond 2/255, mean at most 0.022/255 (docs/scaling.md).
 ComparisonThresholds distributedThresholds() {
     ComparisonThresholds thresholds;
-    thresholds.maxDelta = 64;                 // a near-tie's other colour
+    thresholds.maxDelta = 28;                 // a near-tie's other colour: 14 measured, twice that
     thresholds.pixelThreshold = 3;            // early termination
     thresholds.maxFailingFraction = 0.0002;   // 13 pixels of 65 536
     thresholds.maxMeanDelta = 0.03;

@@ -22,5 +22,11 @@ def test_the_ocean_example_writes_its_max_change_images(realistic_datasets, tmp_
     # The eddy's change shows in the gradient TSTF's colours: blue to orange, not only the background.
     colours = np.unique(image.reshape(-1, 4), axis=0)
     assert len(colours) > 100
-    for azimuth in (-30, 0, 30):
-        assert (tmp_path / f"ocean-max-change-azimuth{azimuth}.png").is_file()
+    # The turned views are pictures of their own: the same size, each one different.
+    turned = [tstyles.read_image(tmp_path / f"ocean-max-change-azimuth{azimuth}.png", dtype="uint8")
+              for azimuth in (-30, 0, 30)]
+    assert all(view.shape == (200, 320, 4) for view in turned)
+    assert all(len(np.unique(view.reshape(-1, 4), axis=0)) > 100 for view in turned)
+    for i in range(3):
+        for j in range(i + 1, 3):
+            assert not np.array_equal(turned[i], turned[j]), f"views {i} and {j} are the same picture"
