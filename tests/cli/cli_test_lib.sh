@@ -125,6 +125,30 @@ expect_image() {
     [ "$minimum" != "$maximum" ] || fail "$file is one colour all over (RGB min = max = $minimum)"
 }
 
+# Whether the window can be tried here: without xvfb-run the case says SKIP and this returns 1.
+have_xvfb() {
+    command -v xvfb-run >/dev/null && return 0
+    echo "SKIP [$CASE]: xvfb-run not found (package xvfb)"
+    return 1
+}
+
+# Opens the window on a dataset under Xvfb, waits for the refined picture, saves the scene to
+# $SCRATCH/saved.json and a screenshot to $SCRATCH/shot.png, and quits; then expects exit 0 and the
+# screenshot as an image of the size the viewer says it wrote (the view beside the panels: the
+# layout, not --size, decides it): view_and_screenshot DATASET [VIEW_OPTIONS...].
+view_and_screenshot() {
+    printf 'wait-refined\nsave-scene ${OUT}/saved.json\nscreenshot ${OUT}/shot.png\nquit\n' >"$SCRATCH/script.txt"
+    RC=0
+    OUT="$SCRATCH" timeout 120 xvfb-run -a -s "-screen 0 1024x768x24" "$TSTYLES" view "$@" --no-vsync \
+        --script "$SCRATCH/script.txt" >"$OUT_FILE" 2>"$ERR_FILE" || RC=$?
+    expect_exit 0
+    local size
+    size=$(sed -n 's/^wrote screenshot .* (\([0-9]*\)x\([0-9]*\))$/\1 \2/p' "$OUT_FILE")
+    [ -n "$size" ] || fail "the viewer did not say it wrote the screenshot"
+    # shellcheck disable=SC2086
+    expect_image "$SCRATCH/shot.png" $size
+}
+
 # A scene of 64x64 pixels on the given dataset (default: the bundled one), with extra top-level
 # keys appended verbatim: write_scene FILE [DATASET] [EXTRA_JSON_MEMBERS].
 write_scene() {

@@ -182,17 +182,9 @@ PY
 }
 
 case_view_pvd() {
-    if ! command -v xvfb-run >/dev/null; then
-        echo "SKIP [$CASE]: xvfb-run not found (package xvfb)"
-        return
-    fi
+    have_xvfb || return 0
     samples
-    printf 'wait-refined\nscreenshot ${OUT}/shot.png\nquit\n' >"$SCRATCH/script.txt"
-    RC=0
-    OUT="$SCRATCH" timeout 120 xvfb-run -a -s "-screen 0 1024x768x24" "$TSTYLES" view "$S/plume.pvd" --size 400x300 \
-        --no-vsync --script "$SCRATCH/script.txt" >"$OUT_FILE" 2>"$ERR_FILE" || RC=$?
-    expect_exit 0
-    [ -f "$SCRATCH/shot.png" ] || fail "no screenshot"
+    view_and_screenshot "$S/plume.pvd" --size 400x300
 }
 
 case_missing_step_file() {
