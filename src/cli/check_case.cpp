@@ -34,20 +34,16 @@ void judge(CaseResult& result, const CheckCase& entry, const ComparisonThreshold
 
 }  // namespace
 
-CaseWorker::CaseWorker(GlBackend backend, const ShaderLibrary& shaders, std::mutex& datasetReading)
+CaseWorker::CaseWorker(GlBackend backend, const ShaderLibrary& shaders, CheckDatasets& datasets)
     : context_(createHeadlessContext(backend, glDebugOutputRequested())),
       glRenderer_(currentGlRenderer()),
       renderer_(shaders),
-      datasetReading_(datasetReading) {}
+      datasets_(datasets) {}
 
 const SceneOnSeries& CaseWorker::fit(const Scene& scene) {
-    auto dataset = datasets_.find(scene.dataset);
-    if (dataset == datasets_.end()) {
-        const std::lock_guard lock(datasetReading_);
-        dataset = datasets_.emplace(scene.dataset, openDataset({scene.dataset}, DatasetOptions{})).first;
-    }
+    const Series& dataset = datasets_.series(scene.dataset);
     const bool sameSeries = fitted_ && uploaded_ == scene.dataset && fitted_->scene.display == scene.display;
-    Series copy = dataset->second;
+    Series copy = dataset;
     fitted_.emplace(fitSceneToSeries(scene, std::move(copy)));
     if (!sameSeries) renderer_.setSeries(fitted_->series);
     uploaded_ = scene.dataset;

@@ -4,11 +4,10 @@
 // the lock around dataset reading.
 #pragma once
 
-#include <map>
 #include <memory>
-#include <mutex>
 #include <optional>
 
+#include "check_datasets.h"
 #include "check_report.h"
 #include "check_suite.h"
 #include "tstyles/gl/headless_context.h"
@@ -20,9 +19,9 @@ namespace tstyles::cli {
 
 class CaseWorker {
 public:
-    // Makes a context of `backend` current on the calling thread. `datasetReading` is held while a
-    // dataset is read: libnetcdf and HDF5 are not thread-safe.
-    CaseWorker(GlBackend backend, const ShaderLibrary& shaders, std::mutex& datasetReading);
+    // Makes a context of `backend` current on the calling thread. The cases' datasets come from
+    // `datasets`, shared by the workers.
+    CaseWorker(GlBackend backend, const ShaderLibrary& shaders, CheckDatasets& datasets);
 
     const HeadlessContext& context() const { return *context_; }
 
@@ -39,8 +38,7 @@ private:
     std::unique_ptr<HeadlessContext> context_;
     std::string glRenderer_;  // GL_RENDERER and version: which of a case's thresholds apply
     Renderer renderer_;
-    std::mutex& datasetReading_;
-    std::map<std::filesystem::path, Series> datasets_;
+    CheckDatasets& datasets_;
     std::optional<SceneOnSeries> fitted_;
     std::filesystem::path uploaded_;
 };

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <mutex>
 #include <new>
 #include <optional>
 #include <ostream>
@@ -47,11 +46,11 @@ CaseRun runCasesDistributed(const MpiSession& mpi, const CheckSuite& suite, cons
                             const std::vector<bool>& update, const CaseRunOptions& options, std::ostream& out) {
     const std::size_t total = suite.cases.size();
     const std::size_t processes = std::size_t(mpi.processCount());
-    std::mutex datasetReading;  // one worker per process: never contended
+    CheckDatasets datasets;  // one worker per process, which reads each dataset as its cases need it
     std::optional<CaseWorker> worker;
     mpi.together("starting OpenGL", [&] {
         // A process beyond the last case has nothing to render and makes no context.
-        if (std::size_t(mpi.rank()) < total) worker.emplace(options.backend, options.shaders, datasetReading);
+        if (std::size_t(mpi.rank()) < total) worker.emplace(options.backend, options.shaders, datasets);
     });
     if (mpi.isFirst()) out << spreadLine(mpi.processCount(), total) << "\n" << std::flush;
 

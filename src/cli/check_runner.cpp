@@ -120,8 +120,10 @@ void printCaseFinished(std::ostream& out, std::size_t finished, std::size_t tota
 
 CaseRun runCases(const CheckSuite& suite, const std::vector<Scene>& scenes, const std::vector<bool>& update,
                  const CaseRunOptions& options, std::ostream& out) {
-    std::mutex datasetReading;
-    CaseWorker first(options.backend, options.shaders, datasetReading);
+    // Every dataset is read before the first GL context and the other workers start (check_datasets.h).
+    CheckDatasets datasets;
+    datasets.readAll(scenes);
+    CaseWorker first(options.backend, options.shaders, datasets);
     const std::string description = first.context().description();
     const GlBackend backend = first.context().backend();
     const Parallelism parallelism =
@@ -134,7 +136,7 @@ CaseRun runCases(const CheckSuite& suite, const std::vector<Scene>& scenes, cons
             for (int job = 1; job < parallelism.jobs; ++job) {
                 helpers.emplace_back([&] {
                     try {
-                        CaseWorker worker(backend, options.shaders, datasetReading);
+                        CaseWorker worker(backend, options.shaders, datasets);
                         queue.drain(worker);
                     } catch (...) {
                         queue.abandon(std::current_exception());
