@@ -69,7 +69,8 @@ CheckCase readCase(const json& entry, const fs::path& file, const std::string& f
 
 // "renderer_thresholds": [{"renderer": "llvmpipe", "thresholds": {...}}, ...], each over `base`.
 void readRendererThresholds(const json& entries, const fs::path& file, SuiteThresholds& thresholds) {
-    if (!entries.is_array()) throwInputError(file, "renderer_thresholds", "expected an array of {\"renderer\", \"thresholds\"}");
+    if (!entries.is_array())
+        throwInputError(file, "renderer_thresholds", "expected an array of {\"renderer\", \"thresholds\"}");
     for (std::size_t i = 0; i < entries.size(); ++i) {
         const std::string field = "renderer_thresholds[" + std::to_string(i) + "]";
         const json& entry = entries[i];
@@ -81,7 +82,8 @@ void readRendererThresholds(const json& entries, const fs::path& file, SuiteThre
         if (renderer == entry.end())
             throwInputError(file, field + ".renderer", "missing; a text that GL_RENDERER contains, e.g. \"llvmpipe\"");
         const auto values = entry.find("thresholds");
-        if (values == entry.end()) throwInputError(file, field + ".thresholds", "missing; the thresholds on that renderer");
+        if (values == entry.end())
+            throwInputError(file, field + ".thresholds", "missing; the thresholds on that renderer");
         thresholds.renderers.push_back({textIn(*renderer, file, field + ".renderer"),
                                         thresholdsFromJson(*values, thresholds.base, file, field + ".thresholds")});
     }

@@ -359,7 +359,8 @@ ParsedManifest parseSeriesManifest(const std::filesystem::path& manifestPath) {
                      std::to_string(kManifestVersion) + ")");
     }
     root.allowOnlyKeys(
-        {"format", "version", "name", "value_range", "missing_value", "time_units", "calendar", "climatology", "axes", "time_steps"});
+        {"format", "version", "name", "value_range", "missing_value", "time_units", "calendar", "climatology", "axes",
+         "time_steps"});
 
     ParsedManifest parsed;
     Series& series = parsed.series;

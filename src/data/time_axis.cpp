@@ -493,8 +493,8 @@ std::vector<std::string> durationLabels(const std::vector<double>& values, const
     constexpr TimeUnit kCoarser[] = {TimeUnit::Milliseconds, TimeUnit::Seconds, TimeUnit::Minutes, TimeUnit::Hours,
                                      TimeUnit::Days};
     for (TimeUnit coarser : kCoarser)
-        if (values.size() > 1 && secondsPer(coarser) > secondsPer(unit) && secondsPer(coarser) <= secondsPer(coarsest) &&
-            step >= secondsPer(coarser) && allWholeIn(seconds, secondsPer(coarser)))
+        if (values.size() > 1 && secondsPer(coarser) > secondsPer(unit) &&
+            secondsPer(coarser) <= secondsPer(coarsest) && step >= secondsPer(coarser) && allWholeIn(seconds, secondsPer(coarser)))
             unit = coarser;
     std::vector<double> inUnit;
     for (double value : seconds) inUnit.push_back(value / secondsPer(unit) + 0.0);
@@ -511,7 +511,8 @@ std::vector<std::string> durationLabels(const std::vector<double>& values, const
 std::vector<std::string> formatTimes(const std::vector<double>& values, const TimeAxis& axis) {
     // Forecasts count in hours ("+48 h"), as forecasters do.
     if (axis.reference)
-        return isForecast(values, axis) ? durationLabels(values, axis, TimeUnit::Hours, "+") : calendarLabels(values, axis);
+        return isForecast(values, axis) ? durationLabels(values, axis, TimeUnit::Hours, "+")
+                                        : calendarLabels(values, axis);
     if (axis.unit != TimeUnit::None) return durationLabels(values, axis, TimeUnit::Days, "");
     std::vector<std::string> labels(values.size());
     for (int digits = leastDigits(values); digits <= 15; ++digits) {

@@ -31,15 +31,6 @@ const char* walkModule(TimeStepWalk walk) {
     return "walk_ray_list.glsl";
 }
 
-const char* walkName(TimeStepWalk walk) {
-    switch (walk) {
-        case TimeStepWalk::RayList: return "ray list";
-        case TimeStepWalk::PackedGroups: return "packed groups";
-        case TimeStepWalk::Naive: return "naive";
-    }
-    return "ray list";
-}
-
 int packedValidityCode(PackedValidity validity) {
     switch (validity) {
         case PackedValidity::None: return contract::PACKED_VALIDITY_NONE;
@@ -96,6 +87,15 @@ std::vector<RaycastVariant> compositorChoices() {
 }
 
 }  // namespace
+
+const char* walkName(TimeStepWalk walk) {
+    switch (walk) {
+        case TimeStepWalk::RayList: return "ray list";
+        case TimeStepWalk::PackedGroups: return "packed groups";
+        case TimeStepWalk::Naive: return "naive";
+    }
+    return "ray list";
+}
 
 ShaderDefines RaycastVariant::defines() const {
     return {

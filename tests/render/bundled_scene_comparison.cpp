@@ -18,15 +18,6 @@ namespace {
 const std::filesystem::path kSourceDir = TSTYLES_SOURCE_DIR;
 const std::filesystem::path kOutputDir = TSTYLES_TEST_OUTPUT_DIR;
 
-const char* walkName(TimeStepWalk walk) {
-    switch (walk) {
-        case TimeStepWalk::RayList: return "ray list";
-        case TimeStepWalk::PackedGroups: return "packed groups";
-        case TimeStepWalk::Naive: return "naive";
-    }
-    return "?";
-}
-
 // The renderer took the paths `way` forces (FrameOptions falls back silently where a path does not
 // suit the series: a forced comparison that compared the default path with itself would pass).
 void expectPathsTaken(const RenderingWay& way, const RaycastVariant& taken) {

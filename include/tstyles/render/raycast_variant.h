@@ -19,6 +19,8 @@ enum class TimeStepWalk {
     Naive,         // the benchmark's baseline: every time-step at every sample, nothing skipped
 };
 
+const char* walkName(TimeStepWalk walk);  // "ray list", "packed groups", "naive"
+
 struct RaycastVariant {
     TemporalCompositor compositor = TemporalCompositor::MaxIntensityProjection;
     // TemporalCompositor::Custom: the scene's code, its name in compiler messages, what reads it.
