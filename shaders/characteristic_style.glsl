@@ -13,7 +13,13 @@ uniform vec2 changeRange;
 vec4 styledCharacteristic(TemporalCharacteristic c, vec3 position, inout int fetches) {
     if (c.reads == READS_NOTHING) return vec4(0.0);
     if (COMPOSITOR_READS == READS_COMPOSITED) return c.colorOpacity;
-    if (COMPOSITOR_READS == READS_INDEX_TSTF) return styledTimeStep(c.representative, position, fetches);
+    if (COMPOSITOR_READS == READS_INDEX_TSTF) {
+        if (UNCHANGED_TIME == 0 || c.reads == READS_INDEX_TSTF) return styledTimeStep(c.representative, position, fetches);
+        // An unchanged place: the STF alone, as final processing shows it outside a mask.
+        TimeStepSample unchanged = c.representative;
+        unchanged.inMask = false;
+        return styledFinal(unchanged, position, vec4(0.0), INDEX_TSTF_TRACK, 0.0, fetches);
+    }
     // READS_STF: the representative's STF alone, as final processing shows it outside a mask.
     TimeStepSample shown = c.representative;
     if (c.reads == READS_STF) shown.inMask = false;

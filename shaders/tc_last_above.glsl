@@ -1,5 +1,7 @@
 // Last time above: the latest time-step whose density at the sample reaches the threshold (a
 // departure map), by its STF and the index TSTF. Where no time-step reaches it, nothing shows.
+// With UNCHANGED_TIME, a place whose densities change by no more than unchangedBelow over the
+// time-steps shows no time colour.
 #include "temporal_sample.glsl"
 
 const int COMPOSITOR_READS = READS_INDEX_TSTF;
@@ -10,18 +12,28 @@ uniform float compositorThreshold;
 
 struct CompositorState {
     TimeStepSample last;
+    // UNCHANGED_TIME: the densities' range over the time-steps with data, and how many there are.
+    float lowest;
+    float highest;
+    int withData;
 };
 
 CompositorState compositorInit() {
-    return CompositorState(noTimeStep());
+    return CompositorState(noTimeStep(), 2.0, -1.0, 0);
 }
 
 void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 position, inout int fetches) {
+    if (UNCHANGED_TIME != 0) {
+        state.lowest = min(state.lowest, s.density);
+        state.highest = max(state.highest, s.density);
+        state.withData += 1;
+    }
     if (s.density < compositorThreshold) return;
     if (s.step > state.last.step) state.last = s;
 }
 
 TemporalCharacteristic compositorFinish(CompositorState state, vec3 position, inout int fetches) {
     if (state.last.step < 0 || state.last.stf.a <= 0.0) return transparentCharacteristic();
+    if (state.withData >= 2 && !timeDecides(state.highest - state.lowest)) return unchangedCharacteristic(state.last);
     return characteristicOf(READS_INDEX_TSTF, float(state.last.step), state.last);
 }

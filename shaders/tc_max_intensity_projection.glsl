@@ -2,22 +2,42 @@
 // wins, and the index TSTF shows which one it is. Inside overlapping opaque bodies the STF
 // opacities tie; then the time-step that the index TSTF shows most strongly wins (the focus of
 // Figure 1 stays opaque where its neighbours overlap it), then the earlier time-step.
+// With UNCHANGED_TIME the time-steps rank by STF opacity, then density, then time; where the winner's
+// density is within unchangedBelow of the runner-up's (a tie: overlapping bodies, a place that does
+// not change, noise), the place shows no time colour. Every time-step is then needed, transparent
+// ones too: a place that is transparent at one time and faintly visible at the next has not changed.
 #include "temporal_sample.glsl"
 
 const int COMPOSITOR_READS = READS_INDEX_TSTF;
-const bool COMPOSITOR_IGNORES_TRANSPARENT = true;
+const bool COMPOSITOR_IGNORES_TRANSPARENT = UNCHANGED_TIME == 0;
 const bool COMPOSITOR_READS_TRANSPARENT_COLOUR = false;
 
 struct CompositorState {
     TimeStepSample winner;
     float winnerTstfOpacity;  // the index TSTF's opacity at the winner (the colour is read in the finish)
+    TimeStepSample runnerUp;  // UNCHANGED_TIME: the second in rank
 };
 
 CompositorState compositorInit() {
-    return CompositorState(noTimeStep(), 0.0);
+    return CompositorState(noTimeStep(), 0.0, noTimeStep());
+}
+
+// UNCHANGED_TIME's ranking: higher STF opacity, then higher density, then the earlier time-step.
+bool ranksAbove(TimeStepSample a, TimeStepSample b) {
+    if (b.step < 0 || a.stf.a != b.stf.a) return b.step < 0 || a.stf.a > b.stf.a;
+    return a.density > b.density || (a.density == b.density && a.step < b.step);
 }
 
 void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 position, inout int fetches) {
+    if (UNCHANGED_TIME != 0) {
+        if (ranksAbove(s, state.winner)) {
+            state.runnerUp = state.winner;
+            state.winner = s;
+        } else if (ranksAbove(s, state.runnerUp)) {
+            state.runnerUp = s;
+        }
+        return;
+    }
     if (s.stf.a < state.winner.stf.a || s.stf.a <= 0.0) return;
     float tstfOpacity = indexTstfOpacity(s.step);
     bool stronger = s.stf.a > state.winner.stf.a || tstfOpacity > state.winnerTstfOpacity ||
@@ -29,6 +49,8 @@ void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 po
 }
 
 TemporalCharacteristic compositorFinish(CompositorState state, vec3 position, inout int fetches) {
-    if (state.winner.step < 0) return transparentCharacteristic();
+    if (state.winner.step < 0 || state.winner.stf.a <= 0.0) return transparentCharacteristic();
+    if (state.runnerUp.step >= 0 && !timeDecides(abs(state.winner.density - state.runnerUp.density)))
+        return unchangedCharacteristic(state.winner);
     return characteristicOf(READS_INDEX_TSTF, float(state.winner.step), state.winner);
 }

@@ -87,6 +87,22 @@ TemporalCharacteristic compositedCharacteristic(vec4 colorOpacity) {
     return TemporalCharacteristic(READS_COMPOSITED, 0.0, noTimeStep(), colorOpacity);
 }
 
+// Unchanged places (UNCHANGED_TIME, CompositorOptions::unchanged): where the time-step a compositor
+// picks is ahead of another by no more than `unchangedBelow` (density units), or the densities at the
+// sample change by no more than that, the pick means nothing (a tie, noise) and no time colour shows.
+uniform float unchangedBelow;
+uniform bool unchangedTransparent;
+
+// Whether a pick ahead by `margin` names a time-step: always without UNCHANGED_TIME.
+bool timeDecides(float margin) {
+    return UNCHANGED_TIME == 0 || margin > unchangedBelow;
+}
+
+// What an unchanged sample shows: the STF of the time-step the compositor picked, or nothing.
+TemporalCharacteristic unchangedCharacteristic(TimeStepSample shown) {
+    return unchangedTransparent ? transparentCharacteristic() : characteristicOf(READS_STF, 0.0, shown);
+}
+
 // Where the time-step's style is read at this sample (6 fetches when styled, 1 with precomputed
 // gradients).
 SphereCoordinate styleCoordinate(int step, vec3 position, inout int fetches) {

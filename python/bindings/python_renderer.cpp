@@ -77,19 +77,28 @@ void PythonRenderer::show(const SharedSeries& series, const Scene& scene) {
     shown_->annotated = std::make_unique<AnnotatedRendering>(gl, *shown_->displaySeries, shown_->framed, shown_->frame);
 }
 
-// fitSceneToSeries on the kept display series; the automatic gradient range (a pass over every
-// voxel) is computed again only when the STF changed.
+// fitSceneToSeries on the kept display series; the automatic gradient range and unchanged threshold
+// (a pass over every voxel) are computed again only when the STF changed.
 Scene PythonRenderer::fitted(const Scene& scene) {
     Shown& shown = *shown_;
     Scene result = scene;
-    if (scene.gradientTstf.automaticRange) {
+    const bool fitsUnchanged = scene.compositorOptions.unchanged && scene.compositorOptions.unchanged->automatic;
+    if (scene.gradientTstf.automaticRange || fitsUnchanged) {
         if (!shown.gradientRangeHigh || !(shown.gradientRangeStf == scene.stf)) {
-            shown.gradientRangeHigh = fitAutomaticParts(scene, *shown.displaySeries).gradientTstf.rangeHigh;
+            Scene fit = scene;
+            fit.gradientTstf.automaticRange = true;
+            fit.compositorOptions.unchanged = UnchangedTime{};
+            fit = fitAutomaticParts(fit, *shown.displaySeries);
+            shown.gradientRangeHigh = fit.gradientTstf.rangeHigh;
+            shown.unchangedBelow = fit.compositorOptions.unchanged->below;
             shown.gradientRangeStf = scene.stf;
         }
+    }
+    if (scene.gradientTstf.automaticRange) {
         result.gradientTstf.rangeLow = 0.0;
         result.gradientTstf.rangeHigh = *shown.gradientRangeHigh;
     }
+    if (fitsUnchanged) result.compositorOptions.unchanged->below = *shown.unchangedBelow;
     shown.framed = framedBounds(result, *shown.displaySeries);
     return result;
 }

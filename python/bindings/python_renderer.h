@@ -43,8 +43,9 @@ private:
         std::shared_ptr<const Series> displaySeries;  // the same object when the frame is the identity
         DisplayFrame frame;
         Bounds framed;
-        Stf gradientRangeStf;  // the automatic gradient range below was fitted for this STF
+        Stf gradientRangeStf;  // the automatic gradient range and unchanged threshold below were fitted for this STF
         std::optional<double> gradientRangeHigh;
+        std::optional<double> unchangedBelow;
         std::unique_ptr<AnnotatedRendering> annotated;
     };
     void show(const SharedSeries& series, const Scene& scene);

@@ -58,6 +58,44 @@ std::string compositorHelp() {
     return help;
 }
 
+// The scene's unchanged-place setting with --unchanged and --unchanged-shows applied, checked by
+// the scene reader as the same keys in a file are.
+std::optional<UnchangedTime> unchangedFromOptions(const Scene& scene, const SceneOverrides& overrides) {
+    if (overrides.unchanged == "off") {
+        if (overrides.unchangedShows)
+            throwInputError("", "--unchanged-shows", "says what unchanged places show, but --unchanged is off");
+        return std::nullopt;
+    }
+    nlohmann::json unchanged = nlohmann::json::object();
+    if (const auto& kept = scene.compositorOptions.unchanged) {
+        unchanged["below"] = kept->automatic ? nlohmann::json("auto") : nlohmann::json(kept->below);
+        unchanged["shows"] = kept->shows == UnchangedShows::Transparent ? "transparent" : "neutral";
+    }
+    if (overrides.unchanged) unchanged["below"] = valueFromText(*overrides.unchanged);
+    if (overrides.unchangedShows) unchanged["shows"] = *overrides.unchangedShows;
+    const std::string option = overrides.unchanged ? "--unchanged" : "--unchanged-shows";
+    const nlohmann::json snippet = {{"dataset", "-"},
+                                    {"compositor", {{"name", toString(scene.compositor)}, {"unchanged", unchanged}}}};
+    try {
+        return parseScene(snippet.dump(), "").compositorOptions.unchanged;
+    } catch (const InputError& error) {
+        std::string message = error.what();
+        for (const std::string key : {"compositor.unchanged.below: ", "compositor.unchanged.shows: ",
+                                      "compositor.unchanged: "})
+            if (message.rfind(key, 0) == 0) message.erase(0, key.size());
+        throwInputError("", option, message);
+    }
+}
+
+std::string unchangedText(const std::optional<UnchangedTime>& unchanged) {
+    std::string text = "unchanged places (--unchanged, --unchanged-shows): ";
+    if (!unchanged) return text + "time colours everywhere";
+    text += unchanged->automatic ? "no time colour below a change fitted to the data"
+                                 : "no time colour below a change of " + nlohmann::json(unchanged->below).dump() +
+                                       " in density units";
+    return text + (unchanged->shows == UnchangedShows::Transparent ? ", transparent there" : ", neutral there");
+}
+
 }  // namespace
 
 void addSceneOverrides(CLI::App& command, SceneOverrides& overrides) {
@@ -69,6 +107,13 @@ void addSceneOverrides(CLI::App& command, SceneOverrides& overrides) {
                        "Proportions: auto, physical, cubic (each axis the same length), or a scale per display axis SX,SY,SZ");
     command.add_option("--vertical-exaggeration", overrides.verticalExaggeration,
                        "Stretch the vertical (display up) axis by this factor, or auto");
+    command.add_option("--unchanged", overrides.unchanged,
+                       "Compositors that pick a time-step: no time colour where a place's densities change by no "
+                       "more than this (0 to 1, in density units), or two time-steps tie; auto (fitted to the "
+                       "data, the automatic scene's choice) or off (time colours everywhere)");
+    command.add_option("--unchanged-shows", overrides.unchangedShows,
+                       "What an unchanged place shows: neutral (the STF alone) or transparent")
+        ->check(CLI::IsMember({"neutral", "transparent"}));
 }
 
 void applySceneOverrides(SceneAndSeries& opened, const SceneOverrides& overrides) {
@@ -81,6 +126,10 @@ void applySceneOverrides(SceneAndSeries& opened, const SceneOverrides& overrides
             opened.explanation.push_back("compositor " + *overrides.compositor + " (--tc): " + info.summary +
                                          (info.reads == CompositorReads::GradientTstf ? "; " + colours : ""));
         }
+    }
+    if (overrides.unchanged || overrides.unchangedShows) {
+        scene.compositorOptions.unchanged = unchangedFromOptions(scene, overrides);
+        if (!opened.explanation.empty()) opened.explanation.push_back(unchangedText(scene.compositorOptions.unchanged));
     }
     if (overrides.orientation)
         scene.display.orientation = displayFromOptions("orientation", "--orientation", *overrides.orientation).orientation;

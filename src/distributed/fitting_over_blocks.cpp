@@ -111,9 +111,9 @@ std::vector<NodeIndexBox> visibleBoxesOverBlocks(const MpiSession& mpi, const St
 
 // This process's share of temporalChanges: the owned nodes of a shared grid among those taken, or
 // the owned points of the lattice over the visible bounds.
-std::vector<double> changeShare(const MpiSession& mpi, const BlockDecomposition& blocks, const Stf& stf,
-                                const Series& outline, const BlockOfSeries& block, const Bounds& visible) {
-    std::vector<double> changes;
+PlaceChanges changeShare(const MpiSession& mpi, const BlockDecomposition& blocks, const Stf& stf,
+                         const Series& outline, const BlockOfSeries& block, const Bounds& visible) {
+    PlaceChanges changes;
     if (outline.size() < 2) return changes;
     std::vector<double> densities(outline.size());
     if (sharesOneGrid(outline)) {
@@ -140,7 +140,9 @@ std::vector<double> changeShare(const MpiSession& mpi, const BlockDecomposition&
 }  // namespace
 
 bool fittingReadsValues(const Scene& scene, bool automaticOpacity) {
-    return automaticOpacity || scene.gradientTstf.automaticRange || scene.camera.framing == Framing::Visible;
+    const bool fitsUnchanged = scene.compositorOptions.unchanged && scene.compositorOptions.unchanged->automatic;
+    return automaticOpacity || scene.gradientTstf.automaticRange || fitsUnchanged ||
+           scene.camera.framing == Framing::Visible;
 }
 
 SceneFittedOverBlocks fitOverBlocks(const MpiSession& mpi, const BlockDecomposition& blocks, Scene scene,
@@ -154,19 +156,24 @@ SceneFittedOverBlocks fitOverBlocks(const MpiSession& mpi, const BlockDecomposit
         scene.stf.curve.opacity =
             opacityNodes(opacityWindowOf(std::move(counts), averageVoxelsPerStep(displayOutline)));
     }
-    const bool latticeChanges =
-        scene.gradientTstf.automaticRange && displayOutline.size() >= 2 && !sharesOneGrid(displayOutline);
+    const bool fitsUnchanged = scene.compositorOptions.unchanged && scene.compositorOptions.unchanged->automatic;
+    const bool fitsChanges = scene.gradientTstf.automaticRange || fitsUnchanged;
+    const bool latticeChanges = fitsChanges && displayOutline.size() >= 2 && !sharesOneGrid(displayOutline);
     Bounds visible = displayOutline.worldBounds();
     if (scene.camera.framing == Framing::Visible || latticeChanges)
         visible = boundsOfVisibleNodes(displayOutline, visibleBoxesOverBlocks(mpi, scene.stf, block));
-    if (scene.gradientTstf.automaticRange) {
-        std::vector<double> changes;
+    if (fitsChanges) {
+        PlaceChanges share;
         mpi.together("taking the changes over time in this process's block",
-                     [&] { changes = changeShare(mpi, blocks, scene.stf, displayOutline, block, visible); });
-        const double change = typicalOf(mpi.gathered(changes));
-        const auto [low, high] = gradientRangeForChange(scene, displayOutline, change);
-        scene.gradientTstf.rangeLow = low;
-        scene.gradientTstf.rangeHigh = high;
+                     [&] { share = changeShare(mpi, blocks, scene.stf, displayOutline, block, visible); });
+        const PlaceChanges places{mpi.gathered(share.changes), mpi.gathered(share.noises)};
+        if (scene.gradientTstf.automaticRange) {
+            const auto [low, high] = gradientRangeForChange(scene, displayOutline, typicalOf(places.changes));
+            scene.gradientTstf.rangeLow = low;
+            scene.gradientTstf.rangeHigh = high;
+        }
+        if (fitsUnchanged)
+            scene.compositorOptions.unchanged->below = unchangedThresholdOf(places, displayOutline.size());
     }
     const Bounds framed = scene.camera.framing == Framing::Visible ? visible : framedOutline;
     return {std::move(scene), framed};

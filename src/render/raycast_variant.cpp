@@ -119,6 +119,7 @@ ShaderDefines RaycastVariant::defines() const {
         {"CUSTOM_READS_INDEX", flag(customReads == CompositorReads::IndexTstf)},
         {"PER_RAY_CACHES", flag(perRayCaches)},
         {"PRECOMPUTED_GRADIENTS", flag(precomputedGradients)},
+        {"UNCHANGED_TIME", flag(unchangedTime)},
     };
 }
 
@@ -169,6 +170,8 @@ std::vector<RaycastVariant> requestableRaycastVariants() {
                     variant.collectStatistics = !styled;
                     variant.skipEmptyBricks = styled;
                     variant.perRayCaches = !styled;
+                    // Both sides of the unchanged-time switch compile, in half of the set each.
+                    variant.unchangedTime = styled && compositorInfo(choice.compositor).takesUnchanged;
                     if (walk == TimeStepWalk::PackedGroups) {
                         // Packed series have no masks; their validities come in three kinds.
                         for (PackedValidity validity :

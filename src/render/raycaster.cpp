@@ -135,6 +135,10 @@ void Raycaster::draw(const RaycastVariant& variant, const RaycastParameters& par
     if (compositor.takesThreshold) program.set("compositorThreshold", parameters.compositorThreshold);
     program.set("stfVisibleRange", parameters.stfVisibleRange);
     if (compositor.takesSteps) program.set("compositorSteps", parameters.compositorSteps);
+    if (variant.unchangedTime) {
+        program.set("unchangedBelow", parameters.unchangedBelow);
+        program.set("unchangedTransparent", int(parameters.unchangedTransparent));
+    }
     if (variant.walk == TimeStepWalk::PackedGroups) {
         program.set("packedGroupCount", parameters.packedGroupCount);
         program.set("inversePackedAtlasSize", 1.0f / glm::vec3(parameters.packedAtlasSize));

@@ -119,6 +119,12 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     parameters.changeRange = glm::vec2(float(scene.gradientTstf.rangeLow), float(scene.gradientTstf.rangeHigh));
     parameters.compositorThreshold = float(scene.compositorOptions.threshold);
     parameters.stfVisibleRange = transferTables_.stfVisibleRange();
+    if (const auto& unchanged = scene.compositorOptions.unchanged;
+        unchanged && compositorInfo(scene.compositor).takesUnchanged) {
+        variant.unchangedTime = true;
+        parameters.unchangedBelow = float(unchanged->below);
+        parameters.unchangedTransparent = unchanged->shows == UnchangedShows::Transparent;
+    }
     if (compositorInfo(scene.compositor).takesSteps)
         parameters.compositorSteps = scene.compositorOptions.differenceSteps(gpuSeries_->timeStepCount());
     parameters.exposedSteps = options.soloTimeStep ? glm::ivec2(*options.soloTimeStep)

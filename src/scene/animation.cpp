@@ -139,11 +139,15 @@ Scene sceneAtFrame(const Scene& scene, int frame) {
     }
     try {
         Scene moved = parseScene(root.dump(), origin);
-        // A range fitted to the data ("auto", fitSceneToSeries) reads back unfitted: keep the fit.
+        // A range or threshold fitted to the data ("auto", fitSceneToSeries) reads back unfitted: keep the fit.
         if (moved.gradientTstf.automaticRange && scene.gradientTstf.automaticRange) {
             moved.gradientTstf.rangeLow = scene.gradientTstf.rangeLow;
             moved.gradientTstf.rangeHigh = scene.gradientTstf.rangeHigh;
         }
+        auto& movedUnchanged = moved.compositorOptions.unchanged;
+        const auto& fittedUnchanged = scene.compositorOptions.unchanged;
+        if (movedUnchanged && movedUnchanged->automatic && fittedUnchanged && fittedUnchanged->automatic)
+            movedUnchanged->below = fittedUnchanged->below;
         return moved;
     } catch (const InputError& error) {
         throw InputError("animation frame " + std::to_string(frame) + ": " + problemWithout(error.what(), origin));

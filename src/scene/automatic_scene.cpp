@@ -83,7 +83,9 @@ DataKind dataKindOf(const Series& series) {
     return geographic ? DataKind::Geographic : anatomical ? DataKind::Anatomical : DataKind::Other;
 }
 
-double typicalLargestChange(const Series& series, const Stf& stf) { return typicalOf(temporalChanges(series, stf)); }
+double typicalLargestChange(const Series& series, const Stf& stf) {
+    return typicalOf(temporalChanges(series, stf).changes);
+}
 
 AutomaticScene automaticScene(const Series& series, const std::filesystem::path& dataset) {
     return automaticScene(series, dataset, automaticOpacityWindow(series));
@@ -116,6 +118,10 @@ AutomaticScene automaticScene(const Series& series, const std::filesystem::path&
     applyTimeColours(scene, series.size());
     result.explanation.push_back("time: " + timeColoursText(series.size()) +
                                  "; compositor temporal-mip (each place shows the time-step where it is most opaque)");
+    scene.compositorOptions.unchanged = UnchangedTime{};
+    result.explanation.push_back(
+        "unchanged places: no time colour where a place's values change by no more than a threshold fitted to "
+        "the data (a tenth of the typical largest change, or above the noise), nor where two time-steps tie");
     return result;
 }
 
@@ -125,6 +131,10 @@ Bounds framedBounds(const Scene& scene, const Series& series) {
 
 std::pair<double, double> automaticGradientRange(const Scene& scene, const Series& series) {
     return gradientRangeForChange(scene, series, typicalLargestChange(series, scene.stf));
+}
+
+double automaticUnchangedBelow(const Scene& scene, const Series& series) {
+    return unchangedThresholdOf(temporalChanges(series, scene.stf), series.size());
 }
 
 std::pair<double, double> gradientRangeForChange(const Scene& scene, const Series& series, double change) {
@@ -145,11 +155,15 @@ std::pair<double, double> gradientRangeForChange(const Scene& scene, const Serie
 }
 
 Scene fitAutomaticParts(Scene scene, const Series& display) {
+    const bool fitsUnchanged = scene.compositorOptions.unchanged && scene.compositorOptions.unchanged->automatic;
+    if (!scene.gradientTstf.automaticRange && !fitsUnchanged) return scene;
+    const PlaceChanges places = temporalChanges(display, scene.stf);
     if (scene.gradientTstf.automaticRange) {
-        const auto [low, high] = automaticGradientRange(scene, display);
+        const auto [low, high] = gradientRangeForChange(scene, display, typicalOf(places.changes));
         scene.gradientTstf.rangeLow = low;
         scene.gradientTstf.rangeHigh = high;
     }
+    if (fitsUnchanged) scene.compositorOptions.unchanged->below = unchangedThresholdOf(places, display.size());
     return scene;
 }
 

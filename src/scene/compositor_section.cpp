@@ -1,6 +1,8 @@
 // The scene file's "compositor": a name ("temporal-mip"), or an object with a name and the
 // compositor's options ({"name": "first-arrival", "threshold": 0.4}), or the scene's own GLSL
-// ({"glsl": "...", "reads": "index-tstf"} or {"file": "peak.glsl", "reads": "gradient-tstf"}).
+// ({"glsl": "...", "reads": "index-tstf"} or {"file": "peak.glsl", "reads": "gradient-tstf"}). A
+// compositor that picks a time-step may leave unchanged places without time colour:
+// {"name": "temporal-mip", "unchanged": {"below": "auto", "shows": "neutral"}}.
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -30,6 +32,44 @@ std::string readsName(CompositorReads reads) {
     for (const auto& [entry, text] : kReadsNames)
         if (entry == reads) return text;
     return "index-tstf";
+}
+
+constexpr std::pair<UnchangedShows, const char*> kUnchangedShowsNames[] = {
+    {UnchangedShows::Neutral, "neutral"},
+    {UnchangedShows::Transparent, "transparent"},
+};
+
+std::optional<UnchangedShows> unchangedShowsFromString(const std::string& name) {
+    for (const auto& [shows, text] : kUnchangedShowsNames)
+        if (name == text) return shows;
+    return std::nullopt;
+}
+
+std::string unchangedShowsName(UnchangedShows shows) {
+    for (const auto& [entry, text] : kUnchangedShowsNames)
+        if (entry == shows) return text;
+    return "neutral";
+}
+
+// {"below": "auto" or a change in density units, "shows": "neutral" or "transparent"}, both optional.
+UnchangedTime readUnchanged(const JsonFieldReader& fields, const json& value) {
+    const std::string path = "compositor.unchanged";
+    fields.expectObject(value, path, {"below", "shows"});
+    UnchangedTime unchanged;
+    if (const json* below = JsonFieldReader::member(value, "below")) {
+        if (below->is_string()) {
+            if (below->get<std::string>() != "auto")
+                fields.fail(path + ".below", "expected \"auto\" or a change in [0, 1], got \"" +
+                                                 below->get<std::string>() + "\"");
+        } else {
+            unchanged.automatic = false;
+            unchanged.below = fields.numberIn(*below, path + ".below", Interval{0.0, 1.0});
+        }
+    }
+    if (const json* shows = JsonFieldReader::member(value, "shows"))
+        unchanged.shows = fields.name<UnchangedShows>(*shows, path + ".shows", unchangedShowsFromString,
+                                                      {"neutral", "transparent"});
+    return unchanged;
 }
 
 std::string readCodeFile(const JsonFieldReader& fields, const std::filesystem::path& file) {
@@ -82,7 +122,7 @@ void readCompositor(const JsonFieldReader& fields, const json& value, const std:
     }
     if (!value.is_object())
         fields.fail("compositor", "expected a name or an object, got " + std::string(value.type_name()));
-    fields.expectObject(value, "compositor", {"name", "threshold", "steps", "glsl", "file", "reads"});
+    fields.expectObject(value, "compositor", {"name", "threshold", "steps", "glsl", "file", "reads", "unchanged"});
     CompositorOptions& options = scene.compositorOptions;
     if (JsonFieldReader::member(value, "glsl") || JsonFieldReader::member(value, "file")) {
         if (JsonFieldReader::member(value, "name"))
@@ -110,6 +150,14 @@ void readCompositor(const JsonFieldReader& fields, const json& value, const std:
         options.differenceFrom = int(pair[0]);
         options.differenceTo = int(pair[1]);
     }
+    if (const json* unchanged = JsonFieldReader::member(value, "unchanged")) {
+        if (!info.takesUnchanged)
+            fields.fail("compositor.unchanged", std::string(info.name) +
+                                                    " does not pick a time-step, so no place is left without time "
+                                                    "colour (temporal-mip, temporal-min, time-of-max, first-arrival "
+                                                    "and last-above do)");
+        options.unchanged = readUnchanged(fields, *unchanged);
+    }
 }
 
 ordered_json compositorJson(const Scene& scene, const std::filesystem::path& sceneFolder) {
@@ -126,13 +174,20 @@ ordered_json compositorJson(const Scene& scene, const std::filesystem::path& sce
         custom["reads"] = readsName(options.custom->reads);
         return custom;
     }
-    if (!info.takesThreshold && !info.takesSteps) return info.name;
+    const bool unchanged = info.takesUnchanged && options.unchanged;
+    if (!info.takesThreshold && !info.takesSteps && !unchanged) return info.name;
     ordered_json object;
     object["name"] = info.name;
     if (info.takesThreshold) object["threshold"] = options.threshold;
     // No `to`: from the first time-step to the last, the default.
     if (info.takesSteps && options.differenceTo)
         object["steps"] = ordered_json::array({options.differenceFrom, *options.differenceTo});
+    if (unchanged) {
+        ordered_json section;
+        section["below"] = options.unchanged->automatic ? ordered_json("auto") : ordered_json(options.unchanged->below);
+        section["shows"] = unchangedShowsName(options.unchanged->shows);
+        object["unchanged"] = section;
+    }
     return object;
 }
 

@@ -2,6 +2,7 @@
 #include "tstyles/scene/temporal_change.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "tstyles/data/density_sampling.h"
 #include "tstyles/scene/visible_bounds.h"
@@ -16,6 +17,36 @@ constexpr double kChangePercentile = 0.99;
 constexpr int kChangeLattice = 32;
 // A shared grid's changes are taken at this many nodes at most.
 constexpr std::size_t kMostChangedNodes = std::size_t(1) << 20;
+// A place is unchanged below this share of the typical largest change, where noise asks no more.
+constexpr double kUnchangedShareOfChange = 0.1;
+// The noise-only range that a place exceeds this rarely is not called a change.
+constexpr double kNoiseRangeProbability = 0.01;
+// The median of |N(0, 2)| and of |N(0, 6)|: the median absolute first and second differences of
+// independent Gaussian noise of standard deviation 1 (0.67449 sqrt 2, 0.67449 sqrt 6).
+constexpr double kMedianFirstDifference = 0.953873;
+constexpr double kMedianSecondDifference = 1.652097;
+
+double medianOf(std::vector<double> values) {
+    const std::size_t middle = values.size() / 2;
+    std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(middle), values.end());
+    const double upper = values[middle];
+    if (values.size() % 2 == 1) return upper;
+    return 0.5 * (upper + *std::max_element(values.begin(), values.begin() + std::ptrdiff_t(middle)));
+}
+
+double standardNormalCdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
+
+// P(range of `count` independent standard normal values <= r): count * integral of
+// phi(x) (Phi(x + r) - Phi(x))^(count - 1) dx (the lowest value at x, the others within r above it).
+double rangeCdf(double r, std::size_t count) {
+    constexpr double kFrom = -9.0, kTo = 9.0, kStep = 0.01;
+    double sum = 0.0;
+    for (double x = kFrom; x <= kTo; x += kStep) {
+        const double density = std::exp(-0.5 * x * x) / std::sqrt(2.0 * M_PI);
+        sum += density * std::pow(standardNormalCdf(x + r) - standardNormalCdf(x), double(count - 1));
+    }
+    return double(count) * sum * kStep;
+}
 
 }  // namespace
 
@@ -44,19 +75,30 @@ std::vector<glm::dvec3> changeLatticePoints(const Bounds& visible) {
     return points;
 }
 
-void addChange(const std::vector<double>& densities, const Stf& stf, std::vector<double>& changes) {
-    double lowest = 2.0;
-    double highest = -1.0;
+double noiseOfPlace(const std::vector<double>& densities) {
+    if (densities.size() < 3) return 0.0;
+    std::vector<double> first, second;
+    for (std::size_t index = 1; index < densities.size(); ++index) {
+        first.push_back(std::abs(densities[index] - densities[index - 1]));
+        if (index >= 2) second.push_back(std::abs(densities[index] - 2.0 * densities[index - 1] + densities[index - 2]));
+    }
+    return std::min(medianOf(std::move(first)) / kMedianFirstDifference,
+                    medianOf(std::move(second)) / kMedianSecondDifference);
+}
+
+void addChange(const std::vector<double>& densities, const Stf& stf, PlaceChanges& places) {
+    std::vector<double> valid;
+    valid.reserve(densities.size());
     bool visible = false;
-    int valid = 0;
     for (double density : densities) {
         if (isMissing(float(density))) continue;
-        ++valid;
-        lowest = std::min(lowest, density);
-        highest = std::max(highest, density);
+        valid.push_back(density);
         visible = visible || stf.curve.evaluate(density).opacity > 0.0;
     }
-    if (visible && valid >= 2) changes.push_back(highest - lowest);
+    if (!visible || valid.size() < 2) return;
+    const auto [lowest, highest] = std::minmax_element(valid.begin(), valid.end());
+    places.changes.push_back(*highest - *lowest);
+    if (valid.size() >= kFewestValuesForNoise) places.noises.push_back(noiseOfPlace(valid));
 }
 
 double typicalOf(std::vector<double> changes) {
@@ -66,8 +108,24 @@ double typicalOf(std::vector<double> changes) {
     return std::clamp(*at, 1e-3, 1.0);
 }
 
-std::vector<double> temporalChanges(const Series& series, const Stf& stf) {
-    std::vector<double> changes;
+double noiseRangeQuantile(std::size_t count) {
+    if (count < 2) return 0.0;
+    double low = 0.0, high = 12.0;
+    for (int iteration = 0; iteration < 40; ++iteration) {
+        const double middle = 0.5 * (low + high);
+        (rangeCdf(middle, count) < 1.0 - kNoiseRangeProbability ? low : high) = middle;
+    }
+    return 0.5 * (low + high);
+}
+
+double unchangedThresholdOf(const PlaceChanges& places, std::size_t stepCount) {
+    const double share = kUnchangedShareOfChange * typicalOf(places.changes);
+    const double noise = places.noises.empty() ? 0.0 : medianOf(places.noises) * noiseRangeQuantile(stepCount);
+    return std::clamp(std::max(share, noise), 0.0, 1.0);
+}
+
+PlaceChanges temporalChanges(const Series& series, const Stf& stf) {
+    PlaceChanges changes;
     if (series.size() < 2) return changes;
     std::vector<double> densities(series.size());
     if (sharesOneGrid(series)) {

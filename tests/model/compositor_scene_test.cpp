@@ -94,6 +94,37 @@ TEST(CompositorScene, ThresholdAndStepsAreReadAndWrittenBack) {
     EXPECT_EQ(parseScene(sceneWith(R"({"name": "temporal-min"})"), kOrigin).compositor, TemporalCompositor::Minimum);
 }
 
+TEST(CompositorScene, UnchangedPlacesAreReadAndWrittenBack) {
+    // Fitted ("auto", the default of both keys) and neutral by default.
+    const Scene fitted = parseScene(sceneWith(R"({"name": "temporal-mip", "unchanged": {}})"), kOrigin);
+    ASSERT_TRUE(fitted.compositorOptions.unchanged);
+    EXPECT_TRUE(fitted.compositorOptions.unchanged->automatic);
+    EXPECT_EQ(fitted.compositorOptions.unchanged->shows, UnchangedShows::Neutral);
+    EXPECT_EQ(roundTrip(fitted), fitted);
+    EXPECT_NE(sceneToJson(fitted, kOrigin.parent_path()).find("\"below\": \"auto\""), std::string::npos);
+
+    const Scene given = parseScene(
+        sceneWith(R"({"name": "time-of-max", "unchanged": {"below": 0.05, "shows": "transparent"}})"), kOrigin);
+    ASSERT_TRUE(given.compositorOptions.unchanged);
+    EXPECT_FALSE(given.compositorOptions.unchanged->automatic);
+    EXPECT_EQ(given.compositorOptions.unchanged->below, 0.05);
+    EXPECT_EQ(given.compositorOptions.unchanged->shows, UnchangedShows::Transparent);
+    EXPECT_EQ(roundTrip(given), given);
+
+    // Every compositor that picks a time-step takes it; the others are named in the refusal.
+    for (const TemporalCompositorInfo& info : temporalCompositors()) {
+        if (info.compositor == TemporalCompositor::Custom) continue;
+        const std::string json = sceneWith(R"({"name": ")" + std::string(info.name) + R"(", "unchanged": {}})");
+        if (info.takesUnchanged)
+            EXPECT_EQ(roundTrip(parseScene(json, kOrigin)), parseScene(json, kOrigin)) << info.name;
+        else
+            EXPECT_NE(parseError(json).find("compositor.unchanged: " + std::string(info.name) + " does not pick"),
+                      std::string::npos) << info.name;
+    }
+    // Without the key: time colours everywhere, as the paper's compositors show them.
+    EXPECT_FALSE(parseScene(sceneWith(R"("temporal-mip")"), kOrigin).compositorOptions.unchanged);
+}
+
 TEST(CompositorScene, ASignedGradientRangeReadsAndRoundTrips) {
     const Scene scene = parseScene(
         R"({"dataset": "series.json", "compositor": "linear-trend", "tstf": {"gradient": {"range": [-0.2, 0.2]}}})",
@@ -134,6 +165,12 @@ TEST(CompositorScene, BadCompositorObjectsNameTheField) {
         {sceneWith(R"({"glsl": "  \n", "reads": "index-tstf"})"), "compositor.glsl: the compositor's code is empty"},
         {sceneWith(R"({"file": "nowhere.glsl", "reads": "index-tstf"})"), "compositor.file: no such file"},
         {sceneWith("42"), "compositor: expected a name or an object"},
+        {sceneWith(R"({"name": "temporal-mip", "unchanged": {"below": 1.5}})"), "compositor.unchanged.below: must be in"},
+        {sceneWith(R"({"name": "temporal-mip", "unchanged": {"below": "fit"}})"),
+         "compositor.unchanged.below: expected \"auto\""},
+        {sceneWith(R"({"name": "temporal-mip", "unchanged": {"shows": "grey"}})"), "compositor.unchanged.shows"},
+        {sceneWith(R"({"name": "temporal-mip", "unchanged": {"below": 0.1, "colour": 1}})"), "compositor.unchanged"},
+        {sceneWith(R"({"name": "temporal-mip", "unchanged": true})"), "compositor.unchanged"},
     };
     for (const auto& [json, expected] : cases) {
         const std::string message = parseError(json);

@@ -57,6 +57,9 @@ struct RaycastVariant {
     // Styles read gradients from the gradient atlas (render/gradient_atlas.h), one fetch where six
     // were: for even rectilinear series without missing values (Renderer decides).
     bool precomputedGradients = false;
+    // The compositor leaves unchanged places without time colour (CompositorOptions::unchanged;
+    // compositors whose table line takesUnchanged).
+    bool unchangedTime = false;
 
     auto operator<=>(const RaycastVariant&) const = default;
 

@@ -44,7 +44,8 @@ struct SceneOnSeries {
 SceneOnSeries fitSceneToSeries(Scene scene, Series series);
 
 // The second half of fitSceneToSeries, for front ends that keep a series already turned into the
-// scene's display frame across frames (the Python module): the automatic gradient range filled in.
+// scene's display frame across frames (the Python module): the automatic gradient range and the
+// automatic unchanged-place threshold (CompositorOptions::unchanged) filled in.
 Scene fitAutomaticParts(Scene scene, const Series& display);
 
 // The bounds an automatic orbit camera frames for this scene on this (display) series.
@@ -53,6 +54,9 @@ Bounds framedBounds(const Scene& scene, const Series& series);
 // The change (max - min density over time-steps) below which 99 % of the visible voxels' changes
 // lie: the automatic gradient TSTF range is [0, this].
 double typicalLargestChange(const Series& series, const Stf& stf);
+// The change below which a place of the (display) series shows no time colour, where the scene's
+// unchanged threshold is "auto" (unchangedThresholdOf over the places the scene's STF shows).
+double automaticUnchangedBelow(const Scene& scene, const Series& series);
 // The gradient TSTF's range that "auto" stands for with the scene's compositor
 // (AutomaticRange of tstyles/scene/temporal_compositors.h).
 std::pair<double, double> automaticGradientRange(const Scene& scene, const Series& series);

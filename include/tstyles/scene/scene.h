@@ -51,6 +51,21 @@ struct CustomCompositor {
     bool operator==(const CustomCompositor&) const = default;
 };
 
+// What a place shows where a compositor that picks a time-step finds its values unchanged over
+// time (UnchangedTime): the STF alone, with no time colour, or nothing.
+enum class UnchangedShows { Neutral, Transparent };
+
+// Time shown only where time shows something: where a place's densities change over the time-steps
+// by less than `below`, or where the time-step a compositor picks is ahead of another by less
+// (a tie), the place shows no time colour (docs/compositors.md, "Unchanged places").
+struct UnchangedTime {
+    // Fitted to the data ("auto": unchangedThresholdOf, by fitAutomaticParts); `below` then holds the fit.
+    bool automatic = true;
+    double below = 0.0;  // a change in density units, [0, 1]
+    UnchangedShows shows = UnchangedShows::Neutral;
+    bool operator==(const UnchangedTime&) const = default;
+};
+
 // The settings some compositors take.
 struct CompositorOptions {
     double threshold = 0.5;  // first-arrival, last-above: the density to reach
@@ -59,6 +74,9 @@ struct CompositorOptions {
     int differenceFrom = 0;
     std::optional<int> differenceTo;
     std::optional<CustomCompositor> custom;
+    // The compositors that pick a time-step (TemporalCompositorInfo::takesUnchanged): none shows
+    // time colours everywhere, as the paper does.
+    std::optional<UnchangedTime> unchanged;
     bool operator==(const CompositorOptions&) const = default;
     // [from, to] of the difference on a series of `stepCount` time-steps; an InputError naming
     // "compositor.steps" of `sceneFile` where they do not fit it.

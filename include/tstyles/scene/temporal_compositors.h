@@ -28,6 +28,7 @@ struct TemporalCompositorInfo {
     AutomaticRange range;      // GradientTstf only
     bool takesThreshold;
     bool takesSteps;
+    bool takesUnchanged;  // picks a time-step: CompositorOptions::unchanged applies
     const char* summary;       // one line for help texts and the viewer
 };
 
