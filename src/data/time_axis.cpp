@@ -345,6 +345,36 @@ TimeAxis parseTimeUnits(const std::string& units, const std::string& calendar, c
     return axis;
 }
 
+std::optional<CalendarMonthStamps> readCalendarMonths(const std::string& units, const std::string& calendar,
+                                                      const std::vector<double>& stamps,
+                                                      const std::filesystem::path& file, const std::string& field) {
+    const std::string text = lowercase(trimmed(units));
+    const auto since = text.find(" since ");
+    if (since == std::string::npos) return std::nullopt;
+    const std::string unitText = trimmed(text.substr(0, since));
+    const bool years = unitText == "years" || unitText == "year";
+    if (!years && unitText != "months" && unitText != "month") return std::nullopt;
+    CalendarMonthStamps result;
+    result.axis = parseTimeUnits("days" + text.substr(since), calendar, file, field);
+    const CalendarDate reference = result.axis.reference.value();
+    // The first of the month `months` after the reference's, at the reference's day (within the month) and time.
+    const auto monthsAfter = [&](double months) {
+        const double index = double(reference.year) * 12.0 + double(reference.month - 1) + months;
+        CalendarDate date = reference;
+        date.year = int(std::floor(index / 12.0));
+        date.month = int(index - double(date.year) * 12.0) + 1;
+        date.day = std::min(reference.day, monthLength(result.axis.calendar, date.year, date.month));
+        return valueAt(result.axis, date, file, field);
+    };
+    for (double stamp : stamps) {
+        const double months = years ? 12.0 * stamp : stamp;
+        const double whole = std::floor(months);
+        const double start = monthsAfter(whole);
+        result.days.push_back(start + (months - whole) * (monthsAfter(whole + 1.0) - start));
+    }
+    return result;
+}
+
 std::string toCfUnits(const TimeAxis& axis) {
     if (axis.unit == TimeUnit::None) return "";
     static const char* kCfNames[] = {"", "microseconds", "milliseconds", "seconds", "minutes", "hours", "days"};

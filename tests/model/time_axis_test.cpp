@@ -87,6 +87,29 @@ TEST(TimeAxis, AClimatologyIsLabelledByMonthName) {
     EXPECT_EQ(formatTimes({45, 46}, axisOf("days since 0001-01-01", "noleap")), (Labels{"Feb 15", "Feb 16"}));
 }
 
+TEST(TimeAxis, MonthsSinceADateAreCalendarMonths) {
+    // The World Ocean Atlas' monthly climatology: "months since 0000-01-01", stamps 0.5 .. 11.5 at
+    // the middle of each month (noleap here, so the days are exact): 15.5 days into January (31
+    // days), 14 into February (28), 15.5 into December (334 days after January 1st).
+    const auto months =
+        readCalendarMonths("months since 0000-01-01 00:00:00", "noleap", {0.5, 1.5, 11.5}, "woa.nc", "time");
+    ASSERT_TRUE(months);
+    EXPECT_EQ(months->axis, axisOf("days since 0000-01-01 00:00:00", "noleap"));
+    EXPECT_EQ(months->days, (std::vector<double>{15.5, 45.0, 349.5}));
+    TimeAxis climatology = months->axis;
+    climatology.climatology = true;
+    EXPECT_EQ(formatTimes(months->days, climatology), (Labels{"Jan", "Feb", "Dec"}));
+    // Years: whole years, then months of the next (1.5 years after 2000-01-01 is 2001-07-01, 181
+    // days into the noleap year).
+    const auto years = readCalendarMonths("years since 2000-01-01", "noleap", {0.0, 1.5}, "f.nc", "time");
+    ASSERT_TRUE(years);
+    EXPECT_EQ(years->days, (std::vector<double>{0.0, 546.0}));
+    // Other units are not months; a bad date is an error naming the field.
+    EXPECT_FALSE(readCalendarMonths("days since 2000-01-01", "", {1.0}, "f.nc", "time"));
+    EXPECT_FALSE(readCalendarMonths("months", "", {1.0}, "f.nc", "time"));
+    EXPECT_THROW(readCalendarMonths("months since yesterday", "", {1.0}, "f.nc", "time"), InputError);
+}
+
 TEST(TimeAxis, YearlyAndDailyDataByYearAndDate) {
     EXPECT_EQ(formatTimes({0, 365, 730}, axisOf("days since 2000-07-01", "noleap")), (Labels{"2000", "2001", "2002"}));
     EXPECT_EQ(formatTimes({0, 1, 2}, axisOf("days since 2009-07-15")),

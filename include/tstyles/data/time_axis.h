@@ -46,6 +46,20 @@ struct TimeAxis {
 TimeAxis parseTimeUnits(const std::string& units, const std::string& calendar, const std::filesystem::path& file,
                         const std::string& field);
 
+// CF's "months since DATE" and "years since DATE" read as calendar months and years, as the World
+// Ocean Atlas and other climatologies use them (CF's own month, a twelfth of a tropical year, is
+// what parseTimeUnits refuses): the stamps become days since DATE on the calendar, each one's whole
+// months after DATE (DATE's day kept, within the month) plus its fraction of the next month's days,
+// so 0.5 "months since 0000-01-01" is 0000-01-16 12:00. None for other units; an InputError naming
+// `file` and `field` for a DATE or calendar that cannot be read.
+struct CalendarMonthStamps {
+    TimeAxis axis;             // "days since DATE"
+    std::vector<double> days;  // the stamps, in days since DATE
+};
+std::optional<CalendarMonthStamps> readCalendarMonths(const std::string& units, const std::string& calendar,
+                                                      const std::vector<double>& stamps,
+                                                      const std::filesystem::path& file, const std::string& field);
+
 // The CF spelling back ("days since 1950-01-01 00:00:00"); empty for TimeUnit::None.
 std::string toCfUnits(const TimeAxis& axis);
 

@@ -104,30 +104,39 @@ CfSpatialAxis axisFrame(const NetcdfFile& nc, const NetcdfDimension& dimension, 
     return cfSpatialAxis(dimension.name, attributes, nc.readAll(*id), nc.path());
 }
 
-// CF: the time coordinate's units ("days since 1950-01-01") and calendar, and whether it is a
-// climatology (a `climatology` attribute naming its bounds).
-TimeAxis timeAxisOf(const NetcdfFile& nc, const NetcdfVariable& variable, int timeDimension) {
-    if (timeDimension < 0) return {};
-    const std::string name = variable.dimensions[std::size_t(timeDimension)].name;
-    const auto id = nc.findVariable(name);
-    if (!id || !nc.isCoordinateVariable(*id)) return {};
-    TimeAxis axis = parseTimeUnits(nc.textAttribute(*id, "units").value_or(""),
-                                   nc.textAttribute(*id, "calendar").value_or(""), nc.path(), name);
-    axis.climatology = nc.textAttribute(*id, "climatology").has_value();
-    return axis;
-}
+// CF: the time coordinate's units ("days since 1950-01-01"; "months since 0000-01-01" as calendar
+// months) and calendar, whether it is a climatology (a `climatology` attribute naming its bounds),
+// and the stamps; without a coordinate variable the time-steps' indices.
+struct StepTimes {
+    TimeAxis axis;
+    std::vector<double> times;
+};
 
-std::vector<double> stepTimes(const NetcdfFile& nc, const NetcdfVariable& variable, int timeDimension) {
-    if (timeDimension < 0) return {0.0};
+StepTimes stepTimesOf(const NetcdfFile& nc, const NetcdfVariable& variable, int timeDimension) {
+    if (timeDimension < 0) return {{}, {0.0}};
     const NetcdfDimension& dimension = variable.dimensions[std::size_t(timeDimension)];
-    requireStepCount(nc.path(), dimension.name, dimension.length);
-    std::vector<double> times(dimension.length);
-    for (std::size_t index = 0; index < times.size(); ++index) times[index] = double(index);
     const auto id = nc.findVariable(dimension.name);
-    if (!id || !nc.isCoordinateVariable(*id)) return times;
-    const std::vector<double> values = nc.readAll(*id);
-    requireIncreasingTimes(values, nc.path(), dimension.name);
-    return values;
+    const bool coordinate = id && nc.isCoordinateVariable(*id);
+    const std::string units = coordinate ? nc.textAttribute(*id, "units").value_or("") : "";
+    const std::string calendar = coordinate ? nc.textAttribute(*id, "calendar").value_or("") : "";
+    StepTimes result;
+    // Months and years are read with the stamps; any other unit is checked before they are.
+    const bool calendarMonths = readCalendarMonths(units, calendar, {}, nc.path(), dimension.name).has_value();
+    if (coordinate && !calendarMonths) result.axis = parseTimeUnits(units, calendar, nc.path(), dimension.name);
+    requireStepCount(nc.path(), dimension.name, dimension.length);
+    if (!coordinate) {
+        for (std::size_t index = 0; index < dimension.length; ++index) result.times.push_back(double(index));
+        return result;
+    }
+    result.times = nc.readAll(*id);
+    requireIncreasingTimes(result.times, nc.path(), dimension.name);
+    if (calendarMonths) {
+        CalendarMonthStamps stamps = *readCalendarMonths(units, calendar, result.times, nc.path(), dimension.name);
+        result.axis = stamps.axis;
+        result.times = std::move(stamps.days);
+    }
+    result.axis.climatology = nc.textAttribute(*id, "climatology").has_value();
+    return result;
 }
 
 }  // namespace
@@ -187,9 +196,10 @@ SourceSeries openNetcdf(const std::filesystem::path& file, const ReadOptions& op
     source.name = variable.name;
     source.file = file;
     source.format = nc->formatName();
-    source.time = timeAxisOf(*nc, variable, timeDimension);
+    StepTimes times = stepTimesOf(*nc, variable, timeDimension);
+    source.time = times.axis;
     source.valueUnit = nc->textAttribute(variable.id, "units").value_or("");
-    for (double time : stepTimes(*nc, variable, timeDimension)) {
+    for (double time : times.times) {
         source.steps.push_back({time, grid, placement, type, file});
     }
     source.readStep = [nc, variable, timeDimension, dims, frames, packing](std::size_t index) {
