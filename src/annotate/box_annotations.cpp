@@ -72,14 +72,14 @@ void tickAt(const PanelMetrics& m, double v0, double v1, double step, AxisTicks&
     }
 }
 
-std::optional<AxisTicks> ticksOfAxis(const PanelMetrics& m, glm::ivec2 size, const Series& series,
-                                     const DisplayFrame& frame, const View& view, int axisIndex) {
+std::optional<AxisTicks> ticksOnEdge(const PanelMetrics& m, glm::ivec2 size, const Series& series,
+                                     const DisplayFrame& frame, const View& view, const BoxEdge& edge) {
+    const int axisIndex = edge.axis;
     const Bounds bounds = series.worldBounds();
-    const auto edge = tickEdge(view, size, bounds, axisIndex, 3.0 * m.pixels);
     const auto centre = projectToImage(view, size, bounds.center());
-    if (!edge || !centre || glm::length(edge->end - edge->start) < 3.0 * m.pixels) return std::nullopt;
-    const glm::dvec3 dataStart = toData(frame, boxCorner(bounds, edge->from));
-    const glm::dvec3 dataEnd = toData(frame, boxCorner(bounds, edge->from | (1 << axisIndex)));
+    if (!centre || glm::length(edge.end - edge.start) < 3.0 * m.pixels) return std::nullopt;
+    const glm::dvec3 dataStart = toData(frame, boxCorner(bounds, edge.from));
+    const glm::dvec3 dataEnd = toData(frame, boxCorner(bounds, edge.from | (1 << axisIndex)));
     int dataAxis = 0;
     for (int k = 1; k < 3; ++k)
         if (std::abs(dataEnd[k] - dataStart[k]) > std::abs(dataEnd[dataAxis] - dataStart[dataAxis])) dataAxis = k;
@@ -87,14 +87,14 @@ std::optional<AxisTicks> ticksOfAxis(const PanelMetrics& m, glm::ivec2 size, con
     const double v1 = dataEnd[dataAxis];
     if (!(std::abs(v1 - v0) > 0.0)) return std::nullopt;
     AxisTicks axis;
-    axis.edge = *edge;
-    const glm::dvec2 along = glm::normalize(edge->end - edge->start);
+    axis.edge = edge;
+    const glm::dvec2 along = glm::normalize(edge.end - edge.start);
     axis.outward = {-along.y, along.x};
-    if (glm::dot(axis.outward, 0.5 * (edge->start + edge->end) - *centre) < 0.0) axis.outward = -axis.outward;
+    if (glm::dot(axis.outward, 0.5 * (edge.start + edge.end) - *centre) < 0.0) axis.outward = -axis.outward;
     axis.title = axisTitle(series.axes[std::size_t(axisIndex)], axisIndex);
     // About one tick per five text heights, at least two where a 1-2-5 step allows; then fewer
     // while their labels crowd each other.
-    const double length = glm::length(edge->end - edge->start);
+    const double length = glm::length(edge.end - edge.start);
     int most = std::max(2, int(length / (5.0 * m.pixels)));
     for (; most < 10; ++most) {
         tickAt(m, v0, v1, niceStep(std::abs(v1 - v0), most), axis);
@@ -111,6 +111,24 @@ std::optional<AxisTicks> ticksOfAxis(const PanelMetrics& m, glm::ivec2 size, con
         }
     }
     return axis;
+}
+
+// The axis's ticks on the best of its edges where at least two of their labels (or all, if fewer)
+// find free space; else on the edge where most do.
+std::optional<AxisTicks> ticksOfAxis(const LayoutSpace& space, const PanelMetrics& m, const Series& series,
+                                     const DisplayFrame& frame, const View& view, int axisIndex) {
+    std::optional<AxisTicks> best;
+    std::size_t bestFree = 0;
+    const glm::ivec2 size = space.imageSize();
+    for (const BoxEdge& edge : tickEdges(view, size, series.worldBounds(), axisIndex, 3.0 * m.pixels)) {
+        auto ticks = ticksOnEdge(m, size, series, frame, view, edge);
+        if (!ticks) continue;
+        const auto isFree = [&space](const TextBox& label) { return space.isFree(label.rect); };
+        const auto free = std::size_t(std::count_if(ticks->labels.begin(), ticks->labels.end(), isFree));
+        if (free >= std::min<std::size_t>(2, ticks->labels.size())) return ticks;
+        if (!best || free > bestFree) best = std::move(ticks), bestFree = free;
+    }
+    return best;
 }
 
 std::vector<Rect> rectsOf(const std::vector<TextBox>& labels) {
@@ -187,8 +205,7 @@ void placeBox(LayoutSpace& space, const PanelMetrics& m, const Scene& scene, con
               const DisplayFrame& frame, const View& view, AnnotationPlan& plan) {
     std::vector<AxisTicks> axes;
     for (int axis = 0; axis < 3; ++axis)
-        if (auto ticks = ticksOfAxis(m, space.imageSize(), series, frame, view, axis))
-            axes.push_back(std::move(*ticks));
+        if (auto ticks = ticksOfAxis(space, m, series, frame, view, axis)) axes.push_back(std::move(*ticks));
     const glm::vec4 lineInk = boxInk(scene.background, 0.55f);
     const glm::vec4 textInk = boxInk(scene.background, 0.95f);
     plan.drawUnderlay = [&view, bounds = series.worldBounds(), axes, lineInk, textInk, m](Canvas& canvas) {

@@ -1,6 +1,7 @@
 // Which box edges face the viewer, found from which box faces do.
 #include "box_projection.h"
 
+#include <algorithm>
 #include <cmath>
 #include <tuple>
 
@@ -36,15 +37,14 @@ glm::dvec3 boxCorner(const Bounds& bounds, int bits) {
             bits & 4 ? bounds.upper.z : bounds.lower.z};
 }
 
-std::optional<BoxEdge> tickEdge(const View& view, glm::ivec2 imageSize, const Bounds& bounds, int axis,
-                                double shortest) {
+std::vector<BoxEdge> tickEdges(const View& view, glm::ivec2 imageSize, const Bounds& bounds, int axis,
+                               double shortest) {
     const int first = (axis + 1) % 3;
     const int second = (axis + 2) % 3;
     const double size = glm::length(bounds.upper - bounds.lower);
-    std::optional<BoxEdge> chosen;
-    // Lexicographic: usable, on the outline, nearer (depth rounded so that mirror images tie),
-    // lower.
-    std::tuple<bool, bool, double, double> best{};
+    // Lexicographic: usable, on the outline, nearer (depth rounded so that mirror images tie), lower.
+    using Score = std::tuple<bool, bool, double, double>;
+    std::vector<std::pair<Score, BoxEdge>> scored;
     for (int from = 0; from < 8; ++from) {
         if (from & (1 << axis)) continue;
         const glm::dvec3 start = boxCorner(bounds, from);
@@ -55,14 +55,16 @@ std::optional<BoxEdge> tickEdge(const View& view, glm::ivec2 imageSize, const Bo
         const glm::dvec2 middle = 0.5 * (*a + *b);
         const bool onImage = middle.x >= 0.0 && middle.y >= 0.0 && middle.x <= imageSize.x && middle.y <= imageSize.y;
         const bool usable = onImage && glm::length(*b - *a) >= shortest;
-        const bool outline =
-            faceSeen(view, bounds, first, (from >> first) & 1) != faceSeen(view, bounds, second, (from >> second) & 1);
+        const bool outline = faceSeen(view, bounds, first, (from >> first) & 1) !=
+                             faceSeen(view, bounds, second, (from >> second) & 1);
         const double nearness = -std::round(depthOf(view, 0.5 * (start + end)) / (1e-6 * size + 1e-300));
         const double lower = axis == 1 ? -middle.x : middle.y;
-        const std::tuple<bool, bool, double, double> score{usable, outline, nearness, lower};
-        if (!chosen || score > best) best = score, chosen = BoxEdge{axis, from, *a, *b};
+        scored.push_back({Score{usable, outline, nearness, lower}, BoxEdge{axis, from, *a, *b}});
     }
-    return chosen;
+    std::stable_sort(scored.begin(), scored.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+    std::vector<BoxEdge> edges;
+    for (const auto& entry : scored) edges.push_back(entry.second);
+    return edges;
 }
 
 }  // namespace tstyles

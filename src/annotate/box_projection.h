@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -25,12 +26,12 @@ struct BoxEdge {
     glm::dvec2 end{0.0};
 };
 
-// The edge that carries the axis's ticks: of the four, one on the box's outline (one of the faces
-// it joins faces the viewer, the other faces away) and, of those, the nearest the viewer, so that
-// its labels stand outside the box on the side toward the viewer; on a tie the lower one (the left
-// one for the vertical axis). Edges whose middle is off the image or shorter than `shortest` pixels
-// are taken only where no other is left; none where every edge is behind the eye.
-std::optional<BoxEdge> tickEdge(const View& view, glm::ivec2 imageSize, const Bounds& bounds, int axis,
-                                double shortest);
+// The axis's four edges, best first for carrying its ticks: edges on the box's outline (one of the
+// faces it joins faces the viewer, the other faces away) before the others and, of those, the
+// nearest the viewer, so that labels stand outside the box on the side toward the viewer; on a tie
+// the lower one (the left one for the vertical axis). Edges whose middle is off the image or
+// shorter than `shortest` pixels come last; edges behind the eye are left out.
+std::vector<BoxEdge> tickEdges(const View& view, glm::ivec2 imageSize, const Bounds& bounds, int axis,
+                               double shortest);
 
 }  // namespace tstyles
