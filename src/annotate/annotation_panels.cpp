@@ -1,4 +1,4 @@
-// Panel placement and the tick arithmetic shared by legends, box and scale bar.
+// Panel sizes and the tick arithmetic shared by legends, box and scale bar.
 #include "annotation_panels.h"
 
 #include <cmath>
@@ -6,27 +6,24 @@
 
 namespace tstyles {
 
-PanelStack::PanelStack(Canvas& canvas, const Font& font, int pixels) : canvas_(canvas), font_(font) {
-    metrics_.font = &font;
-    metrics_.pixels = pixels;
-    metrics_.pad = 0.6 * pixels;
-    metrics_.gap = 0.5 * pixels;
-    metrics_.row = std::ceil(1.4 * pixels);
-    metrics_.swatch = std::round(0.9 * pixels);
-    metrics_.baseline = std::round(0.5 * (metrics_.row + font.ascent(pixels) - font.descent(pixels)));
+PanelMetrics panelMetrics(const Font& font, int pixels) {
+    PanelMetrics metrics;
+    metrics.font = &font;
+    metrics.pixels = pixels;
+    metrics.pad = 0.6 * pixels;
+    metrics.gap = 0.5 * pixels;
+    metrics.row = std::ceil(1.4 * pixels);
+    metrics.swatch = std::round(0.9 * pixels);
+    metrics.baseline = std::round(0.5 * (metrics.row + font.ascent(pixels) - font.descent(pixels)));
+    return metrics;
 }
 
-Rect PanelStack::place(Corner corner, double width, double height) {
-    const double margin = metrics_.pad;
-    const bool left = corner == Corner::TopLeft || corner == Corner::BottomLeft;
-    const bool top = corner == Corner::TopLeft || corner == Corner::TopRight;
-    double& used = used_[corner];
-    const Rect panel{std::round(left ? margin : canvas_.width() - margin - width),
-                     std::round(top ? margin + used : canvas_.height() - margin - used - height), std::ceil(width),
-                     std::ceil(height)};
-    used += height + 0.5 * margin;
-    canvas_.fillRect(panel, {0.0f, 0.0f, 0.0f, 0.6f});
-    return panel;
+void fillPanel(Canvas& canvas, const Rect& panel) { canvas.fillRect(panel, {0.0f, 0.0f, 0.0f, 0.6f}); }
+
+void addElement(AnnotationPlan& plan, AnnotationKind kind, const Rect& rect, std::string text,
+                std::function<void(Canvas&)> draw) {
+    plan.layout.elements.push_back({kind, rect, std::move(text)});
+    plan.drawElements.push_back(std::move(draw));
 }
 
 double niceStep(double span, int count) {

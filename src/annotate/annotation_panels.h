@@ -1,8 +1,9 @@
-// Panels stacked inward from the image's corners, with the text metrics they are laid out by; and
-// the drawings under them (box, scale bar). Private to src/annotate.
+// The sizes the annotations are laid out by, and a panel before it is placed: its size and how to
+// draw it once the layout has put it somewhere. Private to src/annotate.
 #pragma once
 
-#include <map>
+#include <functional>
+#include <string>
 #include <string_view>
 
 #include "tstyles/annotate/canvas.h"
@@ -14,32 +15,32 @@ namespace tstyles {
 struct PanelMetrics {
     const Font* font = nullptr;
     int pixels = 13;
-    double pad = 8.0;       // inside a panel
-    double gap = 6.0;       // between a swatch and its label
-    double row = 18.0;      // one line of text
-    double swatch = 12.0;   // a swatch's side
-    double baseline = 13.0; // from a row's top to its baseline
+    double pad = 8.0;        // inside a panel, and a panel's distance from the image's edges
+    double gap = 6.0;        // between a swatch and its label
+    double row = 18.0;       // one line of text
+    double swatch = 12.0;    // a swatch's side
+    double baseline = 13.0;  // from a row's top to its baseline
     double textWidth(std::string_view text) const { return font->width(text, pixels); }
 };
 
-class PanelStack {
-public:
-    PanelStack(Canvas& canvas, const Font& font, int pixels);
-    // A panel of this size in the corner, below (or above) those already there, with its background drawn.
-    Rect place(Corner corner, double width, double height);
-    Canvas& canvas() { return canvas_; }
-    const Font& font() const { return font_; }
-    const PanelMetrics& metrics() const { return metrics_; }
+PanelMetrics panelMetrics(const Font& font, int pixels);
 
-private:
-    Canvas& canvas_;
-    const Font& font_;
-    PanelMetrics metrics_;
-    std::map<Corner, double> used_;
+// A panel not placed yet. `draw` paints it all (background included) inside the rectangle it is
+// given; `record` notes what the viewer picks in it (the legend's swatches) and may be empty.
+struct PanelDraft {
+    AnnotationKind kind = AnnotationKind::Legend;
+    std::string text;  // its heading or text, for the layout
+    double width = 0.0;
+    double height = 0.0;
+    std::function<void(Canvas&, const Rect&)> draw;
+    std::function<void(const Rect&, AnnotationLayout&)> record;
 };
 
-// The series' bounding box with ticks in the file's units, and the scale bar, as the scene asks.
-void drawBoxAndScaleBar(PanelStack& panels, const Scene& scene, const Series& series, const DisplayFrame& frame,
-                        const View& view);
+// The dark, translucent ground under a panel's text.
+void fillPanel(Canvas& canvas, const Rect& panel);
+
+// An element placed: into the layout, with its drawing.
+void addElement(AnnotationPlan& plan, AnnotationKind kind, const Rect& rect, std::string text,
+                std::function<void(Canvas&)> draw);
 
 }  // namespace tstyles

@@ -17,11 +17,25 @@
 
 namespace tstyles {
 
+// What a placed element of the annotations is (docs/annotations.md, "Layout").
+enum class AnnotationKind { Title, Caption, Legend, ScaleBar, ScaleBarLabel, AxisTitle, TickLabel };
+std::string toString(AnnotationKind kind);  // "title", "caption", "legend", "scale bar", ...
+
+// One element the layout placed: its rectangle (whole pixels) holds all it draws, and no two
+// elements' rectangles overlap or leave the image. The box's edges and tick marks are not elements:
+// they are part of the picture, under the elements, like the volume.
+struct PlacedAnnotation {
+    AnnotationKind kind = AnnotationKind::Title;
+    Rect rect;
+    std::string text;  // the text shown (shortened with "\u2026" where it did not fit); a legend's heading
+};
+
 // What the annotations drew where, for tests and for the viewer's hit-testing.
 struct AnnotationLayout {
-    std::vector<Rect> panels;       // every legend, title and caption panel
-    std::vector<Rect> stepSwatches;  // the index TSTF legend's swatch of each exposed time-step
-    std::vector<int> swatchSteps;    // the time-step of each swatch
+    std::vector<PlacedAnnotation> elements;  // everything placed, in the order it was placed
+    std::vector<Rect> panels;                // every legend, title and caption panel
+    std::vector<Rect> stepSwatches;          // the index TSTF legend's swatch of each exposed time-step
+    std::vector<int> swatchSteps;            // the time-step of each swatch
     std::vector<std::string> swatchLabels;
 };
 
@@ -29,8 +43,22 @@ struct AnnotationLayout {
 // swatch shows its lit sphere; null or an empty function: flat swatches of the tint.
 using StyleImages = std::function<const Image*(const std::string& style)>;
 
+// The annotations laid out for an image of `imageSize`, not drawn yet: the layout, and how to draw
+// what lies under the elements (the box's edges and tick marks) and each element alone. The
+// drawings refer to the arguments, which must outlive the plan.
+struct AnnotationPlan {
+    AnnotationLayout layout;
+    std::function<void(Canvas&)> drawUnderlay;
+    std::vector<std::function<void(Canvas&)>> drawElements;  // one per layout.elements entry
+};
+
 // `series` is the display series (fitSceneToSeries), `frame` the display frame it was turned by:
 // ticks and the scale bar are given in the file's units.
+AnnotationPlan planAnnotations(glm::ivec2 imageSize, const Scene& scene, const Series& series,
+                               const DisplayFrame& frame, const View& view, const Font& font,
+                               const StyleImages& styles = {});
+
+// The plan drawn: the underlay, then every element.
 AnnotationLayout drawAnnotations(Image& image, const Scene& scene, const Series& series, const DisplayFrame& frame,
                                  const View& view, const Font& font, const StyleImages& styles = {});
 

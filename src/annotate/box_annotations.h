@@ -1,0 +1,20 @@
+// The series' box with labelled ticks, and the scale bar, laid out in what space the panels left.
+// Private to src/annotate.
+#pragma once
+
+#include "annotation_panels.h"
+#include "layout_space.h"
+
+namespace tstyles {
+
+// A 1-2-5 length in the file's horizontal unit with its label, in the bottom-right corner: the bar
+// and its label as two elements, or nothing where there is no room.
+void placeScaleBar(LayoutSpace& space, const PanelMetrics& m, const Series& series, const DisplayFrame& frame,
+                   const View& view, AnnotationPlan& plan);
+
+// The box's edges and tick marks as the plan's underlay; then each axis's title beside its tick
+// labels, and the tick labels (fewer where they crowd) where they fit.
+void placeBox(LayoutSpace& space, const PanelMetrics& m, const Scene& scene, const Series& series,
+              const DisplayFrame& frame, const View& view, AnnotationPlan& plan);
+
+}  // namespace tstyles
