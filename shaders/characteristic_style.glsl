@@ -15,10 +15,12 @@ vec4 styledCharacteristic(TemporalCharacteristic c, vec3 position, inout int fet
     if (COMPOSITOR_READS == READS_COMPOSITED) return c.colorOpacity;
     if (COMPOSITOR_READS == READS_INDEX_TSTF) {
         if (UNCHANGED_TIME == 0 || c.reads == READS_INDEX_TSTF) return styledTimeStep(c.representative, position, fetches);
-        // An unchanged place: the STF alone, as final processing shows it outside a mask.
-        TimeStepSample unchanged = c.representative;
-        unchanged.inMask = false;
-        return styledFinal(unchanged, position, vec4(0.0), INDEX_TSTF_TRACK, 0.0, fetches);
+        // No time colour (pickedCharacteristic): the STF alone, as final processing shows it outside
+        // a mask; an unchanged place as opaque as the scene asks.
+        TimeStepSample neutral = c.representative;
+        neutral.inMask = false;
+        vec4 stf = styledFinal(neutral, position, vec4(0.0), INDEX_TSTF_TRACK, 0.0, fetches);
+        return vec4(stf.rgb, c.value == STF_UNCHANGED ? stf.a * unchangedOpacity : stf.a);
     }
     // READS_STF: the representative's STF alone, as final processing shows it outside a mask.
     TimeStepSample shown = c.representative;

@@ -1,7 +1,7 @@
 // Last time above: the latest time-step whose density at the sample reaches the threshold (a
 // departure map), by its STF and the index TSTF. Where no time-step reaches it, nothing shows.
 // With UNCHANGED_TIME, a place whose densities change by no more than unchangedBelow over the
-// time-steps shows no time colour.
+// time-steps shows no time colour (there is no tie: the first or last to reach the threshold is one).
 #include "temporal_sample.glsl"
 
 const int COMPOSITOR_READS = READS_INDEX_TSTF;
@@ -34,6 +34,7 @@ void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 po
 
 TemporalCharacteristic compositorFinish(CompositorState state, vec3 position, inout int fetches) {
     if (state.last.step < 0 || state.last.stf.a <= 0.0) return transparentCharacteristic();
-    if (state.withData >= 2 && !timeDecides(state.highest - state.lowest)) return unchangedCharacteristic(state.last);
-    return characteristicOf(READS_INDEX_TSTF, float(state.last.step), state.last);
+    // One time-step with data: no change to measure, and nothing to tie with.
+    float range = state.withData >= 2 ? state.highest - state.lowest : 2.0;
+    return pickedCharacteristic(state.last, range, 2.0);
 }

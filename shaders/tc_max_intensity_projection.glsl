@@ -2,9 +2,9 @@
 // wins, and the index TSTF shows which one it is. Inside overlapping opaque bodies the STF
 // opacities tie; then the time-step that the index TSTF shows most strongly wins (the focus of
 // Figure 1 stays opaque where its neighbours overlap it), then the earlier time-step.
-// With UNCHANGED_TIME the time-steps rank by STF opacity, then density, then time; where the winner's
-// density is within unchangedBelow of the runner-up's (a tie: overlapping bodies, a place that does
-// not change, noise), the place shows no time colour. Every time-step is then needed, transparent
+// With UNCHANGED_TIME the time-steps rank by STF opacity, then density, then time; a place whose
+// densities do not change, or where the winner's density is within a tie of the runner-up's
+// (overlapping bodies, noise), shows no time colour. Every time-step is then needed, transparent
 // ones too: a place that is transparent at one time and faintly visible at the next has not changed.
 #include "temporal_sample.glsl"
 
@@ -15,11 +15,14 @@ const bool COMPOSITOR_READS_TRANSPARENT_COLOUR = false;
 struct CompositorState {
     TimeStepSample winner;
     float winnerTstfOpacity;  // the index TSTF's opacity at the winner (the colour is read in the finish)
-    TimeStepSample runnerUp;  // UNCHANGED_TIME: the second in rank
+    // UNCHANGED_TIME: the second in rank, and the densities' range over all time-steps.
+    TimeStepSample runnerUp;
+    float lowest;
+    float highest;
 };
 
 CompositorState compositorInit() {
-    return CompositorState(noTimeStep(), 0.0, noTimeStep());
+    return CompositorState(noTimeStep(), 0.0, noTimeStep(), 2.0, -1.0);
 }
 
 // UNCHANGED_TIME's ranking: higher STF opacity, then higher density, then the earlier time-step.
@@ -30,6 +33,8 @@ bool ranksAbove(TimeStepSample a, TimeStepSample b) {
 
 void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 position, inout int fetches) {
     if (UNCHANGED_TIME != 0) {
+        state.lowest = min(state.lowest, s.density);
+        state.highest = max(state.highest, s.density);
         if (ranksAbove(s, state.winner)) {
             state.runnerUp = state.winner;
             state.winner = s;
@@ -50,7 +55,8 @@ void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 po
 
 TemporalCharacteristic compositorFinish(CompositorState state, vec3 position, inout int fetches) {
     if (state.winner.step < 0 || state.winner.stf.a <= 0.0) return transparentCharacteristic();
-    if (state.runnerUp.step >= 0 && !timeDecides(abs(state.winner.density - state.runnerUp.density)))
-        return unchangedCharacteristic(state.winner);
-    return characteristicOf(READS_INDEX_TSTF, float(state.winner.step), state.winner);
+    // One time-step with data: no change to measure, and nothing to tie with.
+    if (state.runnerUp.step < 0) return pickedCharacteristic(state.winner, 2.0, 2.0);
+    return pickedCharacteristic(state.winner, state.highest - state.lowest,
+                                abs(state.winner.density - state.runnerUp.density));
 }

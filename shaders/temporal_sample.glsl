@@ -87,20 +87,28 @@ TemporalCharacteristic compositedCharacteristic(vec4 colorOpacity) {
     return TemporalCharacteristic(READS_COMPOSITED, 0.0, noTimeStep(), colorOpacity);
 }
 
-// Unchanged places (UNCHANGED_TIME, CompositorOptions::unchanged): where the time-step a compositor
-// picks is ahead of another by no more than `unchangedBelow` (density units), or the densities at the
-// sample change by no more than that, the pick means nothing (a tie, noise) and no time colour shows.
+// Unchanged places (UNCHANGED_TIME, CompositorOptions::unchanged): where the densities at a sample
+// change over the time-steps by no more than `unchangedBelow` (density units) the place is
+// unchanged, and shows the STF alone with unchangedOpacity of its opacity; where the time-step a
+// compositor picks is ahead of the runner-up by no more than `unchangedTie`, it changes but at no
+// one time, and shows the STF alone as opaque as it is. Either way no time colour.
 uniform float unchangedBelow;
-uniform bool unchangedTransparent;
+uniform float unchangedTie;
+uniform float unchangedOpacity;
 
-// Whether a pick ahead by `margin` names a time-step: always without UNCHANGED_TIME.
-bool timeDecides(float margin) {
-    return UNCHANGED_TIME == 0 || margin > unchangedBelow;
-}
+// READS_STF's `value` under UNCHANGED_TIME: how the STF alone shows.
+const float STF_UNCHANGED = 0.0;  // with unchangedOpacity of its opacity
+const float STF_TIED = 1.0;       // as opaque as it is
 
-// What an unchanged sample shows: the STF of the time-step the compositor picked, or nothing.
-TemporalCharacteristic unchangedCharacteristic(TimeStepSample shown) {
-    return unchangedTransparent ? transparentCharacteristic() : characteristicOf(READS_STF, 0.0, shown);
+// The characteristic of the time-step a compositor picked, where the densities at the sample span
+// `range` and the pick is ahead of the runner-up by `margin` (pass a margin above every tie where
+// the compositor has no runner-up): its index, or the STF alone where that means nothing.
+TemporalCharacteristic pickedCharacteristic(TimeStepSample picked, float range, float margin) {
+    if (UNCHANGED_TIME != 0 && range <= unchangedBelow)
+        return unchangedOpacity <= 0.0 ? transparentCharacteristic()
+                                       : characteristicOf(READS_STF, STF_UNCHANGED, picked);
+    if (UNCHANGED_TIME != 0 && margin <= unchangedTie) return characteristicOf(READS_STF, STF_TIED, picked);
+    return characteristicOf(READS_INDEX_TSTF, float(picked.step), picked);
 }
 
 // Where the time-step's style is read at this sample (6 fetches when styled, 1 with precomputed

@@ -90,7 +90,7 @@ Scene PythonRenderer::fitted(const Scene& scene) {
             fit.compositorOptions.unchanged = UnchangedTime{};
             fit = fitAutomaticParts(fit, *shown.displaySeries);
             shown.gradientRangeHigh = fit.gradientTstf.rangeHigh;
-            shown.unchangedBelow = fit.compositorOptions.unchanged->below;
+            shown.unchangedFit = {fit.compositorOptions.unchanged->below, fit.compositorOptions.unchanged->tie};
             shown.gradientRangeStf = scene.stf;
         }
     }
@@ -98,7 +98,7 @@ Scene PythonRenderer::fitted(const Scene& scene) {
         result.gradientTstf.rangeLow = 0.0;
         result.gradientTstf.rangeHigh = *shown.gradientRangeHigh;
     }
-    if (fitsUnchanged) result.compositorOptions.unchanged->below = *shown.unchangedBelow;
+    if (fitsUnchanged) takeFit(*result.compositorOptions.unchanged, shown.unchangedFit);
     shown.framed = framedBounds(result, *shown.displaySeries);
     return result;
 }

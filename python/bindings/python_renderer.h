@@ -13,6 +13,7 @@
 #include "tstyles/image/image.h"
 #include "tstyles/render/annotated_rendering.h"
 #include "tstyles/render/renderer.h"
+#include "tstyles/scene/temporal_change.h"
 
 namespace tstyles::python {
 
@@ -45,7 +46,7 @@ private:
         Bounds framed;
         Stf gradientRangeStf;  // the automatic gradient range and unchanged threshold below were fitted for this STF
         std::optional<double> gradientRangeHigh;
-        std::optional<double> unchangedBelow;
+        UnchangedFit unchangedFit;
         std::unique_ptr<AnnotatedRendering> annotated;
     };
     void show(const SharedSeries& series, const Scene& scene);

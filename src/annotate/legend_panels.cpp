@@ -93,6 +93,25 @@ void drawText(Canvas& canvas, const PanelMetrics& m, const std::string& text, gl
     canvas.drawText(*m.font, text, at, m.pixels, ink);
 }
 
+// The row under the time-steps of a compositor that leaves unchanged places without time colour
+// (CompositorOptions::unchanged): "no change <= 0.31 degC", in the series' units; empty without one.
+std::string unchangedLabel(const LegendInputs& in) {
+    const auto& unchanged = in.scene.compositorOptions.unchanged;
+    if (!unchanged || !compositorInfo(in.scene.compositor).takesUnchanged) return {};
+    const double change = unchanged->below * (in.series.valueRange[1] - in.series.valueRange[0]);
+    std::string text = "no change \u2264 " + tickLabel(change, niceStep(change, 4) / 10.0);
+    if (!in.series.valueUnit.empty()) text += " " + in.series.valueUnit;
+    return unchanged->opacity <= 0.0 ? text + ": not shown" : text;
+}
+
+// Its swatch: the neutral white that unchanged places show, as strong as they are opaque (an empty
+// outline where they are not shown).
+void drawUnchangedSwatch(Canvas& canvas, const Rect& swatch, const Scene& scene) {
+    const float opacity = float(std::clamp(scene.compositorOptions.unchanged->opacity, 0.0, 1.0));
+    if (opacity > 0.0f) canvas.fillRect(swatch, glm::vec4(0.85f, 0.85f, 0.85f, 0.2f + 0.8f * opacity));
+    canvas.strokeRect(swatch, 1.0, kFaintText);
+}
+
 // The labels of the exposed time-steps, each shortened to `room`.
 std::vector<std::string> shortenedLabels(const LegendInputs& in, double room) {
     std::vector<std::string> labels;
@@ -104,17 +123,20 @@ std::vector<std::string> shortenedLabels(const LegendInputs& in, double room) {
 // One row per time-step: swatch and label, the focus marked with an outline and a bright label.
 PanelDraft swatchRows(const LegendInputs& in) {
     const PanelMetrics m = in.metrics;
-    const std::vector<std::string> labels = shortenedLabels(in, in.maxWidth - 2 * m.pad - m.swatch - m.gap);
-    double labelWidth = m.textWidth("time");
+    const double labelRoom = in.maxWidth - 2 * m.pad - m.swatch - m.gap;
+    const std::vector<std::string> labels = shortenedLabels(in, labelRoom);
+    const std::string unchanged = shortenToWidth(*m.font, unchangedLabel(in), m.pixels, labelRoom);
+    double labelWidth = std::max(m.textWidth("time"), m.textWidth(unchanged));
     for (const std::string& label : labels) labelWidth = std::max(labelWidth, m.textWidth(label));
     const int count = int(labels.size());
+    const int rows = count + (unchanged.empty() ? 0 : 1);
     const auto swatchOfRow = [m](const Rect& panel, int i) {
         const double top = panel.y + m.pad + m.row * (i + 1);
         return Rect{panel.x + m.pad, top + 0.5 * (m.row - m.swatch), m.swatch, m.swatch};
     };
     PanelDraft draft{AnnotationKind::Legend,          "time", 2 * m.pad + m.swatch + m.gap + labelWidth,
-                     2 * m.pad + m.row * (count + 1), {},     {}};
-    draft.draw = [&scene = in.scene, styles = in.styles, steps = in.steps, labels, m, swatchOfRow,
+                     2 * m.pad + m.row * (rows + 1), {},     {}};
+    draft.draw = [&scene = in.scene, styles = in.styles, steps = in.steps, labels, unchanged, m, swatchOfRow,
                   focus = focusSteps(in.scene, in.steps)](Canvas& canvas, const Rect& panel) {
         fillPanel(canvas, panel);
         drawText(canvas, m, "time", {panel.x + m.pad, panel.y + m.pad + m.baseline}, kFaintText);
@@ -129,6 +151,12 @@ PanelDraft swatchRows(const LegendInputs& in) {
                      {swatch.right() + m.gap, panel.y + m.pad + m.row * (i + 1) + m.baseline},
                      focused ? kText : kFaintText);
         }
+        if (unchanged.empty()) return;
+        const int row = int(labels.size());
+        const Rect swatch = swatchOfRow(panel, row);
+        drawUnchangedSwatch(canvas, swatch, scene);
+        drawText(canvas, m, unchanged, {swatch.right() + m.gap, panel.y + m.pad + m.row * (row + 1) + m.baseline},
+                 kFaintText);
     };
     draft.record = [steps = in.steps, labels = in.labels, swatchOfRow](const Rect& panel, AnnotationLayout& layout) {
         for (int step = steps.x; step <= steps.y; ++step) {
@@ -162,9 +190,13 @@ PanelDraft swatchStrip(const LegendInputs& in) {
     const auto cellOf = [m, cell](const Rect& panel, int i) {
         return Rect{panel.x + m.pad + i * cell, panel.y + m.pad + m.row + 0.5 * (m.row - m.swatch), cell, m.swatch};
     };
-    PanelDraft draft{AnnotationKind::Legend, "time", 2 * m.pad + stripWidth, 2 * m.pad + 3 * m.row, {}, {}};
-    draft.draw = [&scene = in.scene, styles = in.styles, steps = in.steps, m, cellOf, focus, first, last, focusText](
-                     Canvas& canvas, const Rect& panel) {
+    const std::string unchanged =
+        shortenToWidth(*m.font, unchangedLabel(in), m.pixels, stripWidth - m.swatch - m.gap);
+    // Rows: the heading, the strip, the end labels, the focus and the unchanged places where there are.
+    const int rows = 3 + (focusText.empty() ? 0 : 1) + (unchanged.empty() ? 0 : 1);
+    PanelDraft draft{AnnotationKind::Legend, "time", 2 * m.pad + stripWidth, 2 * m.pad + rows * m.row, {}, {}};
+    draft.draw = [&scene = in.scene, styles = in.styles, steps = in.steps, m, cellOf, focus, first, last, focusText,
+                  unchanged](Canvas& canvas, const Rect& panel) {
         fillPanel(canvas, panel);
         drawText(canvas, m, "time", {panel.x + m.pad, panel.y + m.pad + m.baseline}, kFaintText);
         for (int i = 0; i < steps.y - steps.x + 1; ++i) {
@@ -178,6 +210,11 @@ PanelDraft swatchStrip(const LegendInputs& in) {
         if (!focusText.empty())
             drawText(canvas, m, focusText,
                      {panel.x + 0.5 * (panel.width - m.textWidth(focusText)), labelBaseline + m.row}, kText);
+        if (unchanged.empty()) return;
+        const double top = panel.y + m.pad + (focusText.empty() ? 3 : 4) * m.row;
+        const Rect swatch{panel.x + m.pad, top + 0.5 * (m.row - m.swatch), m.swatch, m.swatch};
+        drawUnchangedSwatch(canvas, swatch, scene);
+        drawText(canvas, m, unchanged, {swatch.right() + m.gap, top + m.baseline}, kFaintText);
     };
     draft.record = [steps = in.steps, labels = in.labels, cellOf](const Rect& panel, AnnotationLayout& layout) {
         for (int step = steps.x; step <= steps.y; ++step) {

@@ -58,42 +58,49 @@ std::string compositorHelp() {
     return help;
 }
 
-// The scene's unchanged-place setting with --unchanged and --unchanged-shows applied, checked by
+// The scene's unchanged-place setting with --unchanged and --unchanged-opacity applied, checked by
 // the scene reader as the same keys in a file are.
 std::optional<UnchangedTime> unchangedFromOptions(const Scene& scene, const SceneOverrides& overrides) {
     if (overrides.unchanged == "off") {
-        if (overrides.unchangedShows)
-            throwInputError("", "--unchanged-shows", "says what unchanged places show, but --unchanged is off");
+        if (overrides.unchangedOpacity)
+            throwInputError("", "--unchanged-opacity", "says how unchanged places show, but --unchanged is off");
         return std::nullopt;
     }
     nlohmann::json unchanged = nlohmann::json::object();
     if (const auto& kept = scene.compositorOptions.unchanged) {
         unchanged["below"] = kept->automatic ? nlohmann::json("auto") : nlohmann::json(kept->below);
-        unchanged["shows"] = kept->shows == UnchangedShows::Transparent ? "transparent" : "neutral";
+        if (!kept->automatic) unchanged["tie"] = kept->tie;
+        unchanged["opacity"] = kept->opacity;
     }
-    if (overrides.unchanged) unchanged["below"] = valueFromText(*overrides.unchanged);
-    if (overrides.unchangedShows) unchanged["shows"] = *overrides.unchangedShows;
-    const std::string option = overrides.unchanged ? "--unchanged" : "--unchanged-shows";
+    if (overrides.unchanged) {
+        unchanged["below"] = valueFromText(*overrides.unchanged);
+        if (unchanged["below"] == "auto") unchanged.erase("tie");
+    }
+    if (overrides.unchangedOpacity) unchanged["opacity"] = *overrides.unchangedOpacity;
+    const std::string option = overrides.unchanged ? "--unchanged" : "--unchanged-opacity";
     const nlohmann::json snippet = {{"dataset", "-"},
                                     {"compositor", {{"name", toString(scene.compositor)}, {"unchanged", unchanged}}}};
     try {
         return parseScene(snippet.dump(), "").compositorOptions.unchanged;
     } catch (const InputError& error) {
         std::string message = error.what();
-        for (const std::string key : {"compositor.unchanged.below: ", "compositor.unchanged.shows: ",
+        std::string field = option;
+        if (message.rfind("compositor.unchanged.opacity: ", 0) == 0) field = "--unchanged-opacity";
+        if (message.rfind("compositor.unchanged.below: ", 0) == 0) field = "--unchanged";
+        for (const std::string key : {"compositor.unchanged.below: ", "compositor.unchanged.opacity: ",
                                       "compositor.unchanged: "})
             if (message.rfind(key, 0) == 0) message.erase(0, key.size());
-        throwInputError("", option, message);
+        throwInputError("", field, message);
     }
 }
 
 std::string unchangedText(const std::optional<UnchangedTime>& unchanged) {
-    std::string text = "unchanged places (--unchanged, --unchanged-shows): ";
+    std::string text = "unchanged places (--unchanged, --unchanged-opacity): ";
     if (!unchanged) return text + "time colours everywhere";
     text += unchanged->automatic ? "no time colour below a change fitted to the data"
                                  : "no time colour below a change of " + nlohmann::json(unchanged->below).dump() +
                                        " in density units";
-    return text + (unchanged->shows == UnchangedShows::Transparent ? ", transparent there" : ", neutral there");
+    return text + ", neutral there at " + nlohmann::json(unchanged->opacity).dump() + " of the STF's opacity";
 }
 
 }  // namespace
@@ -111,9 +118,9 @@ void addSceneOverrides(CLI::App& command, SceneOverrides& overrides) {
                        "Compositors that pick a time-step: no time colour where a place's densities change by no "
                        "more than this (0 to 1, in density units), or two time-steps tie; auto (fitted to the "
                        "data, the automatic scene's choice) or off (time colours everywhere)");
-    command.add_option("--unchanged-shows", overrides.unchangedShows,
-                       "What an unchanged place shows: neutral (the STF alone) or transparent")
-        ->check(CLI::IsMember({"neutral", "transparent"}));
+    command.add_option("--unchanged-opacity", overrides.unchangedOpacity,
+                       "An unchanged place shows the STF alone with this share of its opacity: 1 as the STF has "
+                       "it, 0 transparent");
 }
 
 void applySceneOverrides(SceneAndSeries& opened, const SceneOverrides& overrides) {
@@ -127,7 +134,7 @@ void applySceneOverrides(SceneAndSeries& opened, const SceneOverrides& overrides
                                          (info.reads == CompositorReads::GradientTstf ? "; " + colours : ""));
         }
     }
-    if (overrides.unchanged || overrides.unchangedShows) {
+    if (overrides.unchanged || overrides.unchangedOpacity) {
         scene.compositorOptions.unchanged = unchangedFromOptions(scene, overrides);
         if (!opened.explanation.empty()) opened.explanation.push_back(unchangedText(scene.compositorOptions.unchanged));
     }

@@ -21,7 +21,7 @@ struct SceneOverrides {
     std::optional<std::string> aspect;                 // --aspect physical|cubic|auto|SX,SY,SZ
     std::optional<std::string> verticalExaggeration;   // --vertical-exaggeration X|auto
     std::optional<std::string> unchanged;              // --unchanged auto|off|CHANGE
-    std::optional<std::string> unchangedShows;         // --unchanged-shows neutral|transparent
+    std::optional<double> unchangedOpacity;            // --unchanged-opacity SHARE
 };
 void addSceneOverrides(CLI::App& command, SceneOverrides& overrides);
 

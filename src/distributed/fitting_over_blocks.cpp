@@ -173,7 +173,7 @@ SceneFittedOverBlocks fitOverBlocks(const MpiSession& mpi, const BlockDecomposit
             scene.gradientTstf.rangeHigh = high;
         }
         if (fitsUnchanged)
-            scene.compositorOptions.unchanged->below = unchangedThresholdOf(places, displayOutline.size());
+            takeFit(*scene.compositorOptions.unchanged, unchangedFitOf(places, displayOutline.size()));
     }
     const Bounds framed = scene.camera.framing == Framing::Visible ? visible : framedOutline;
     return {std::move(scene), framed};

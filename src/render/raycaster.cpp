@@ -137,7 +137,8 @@ void Raycaster::draw(const RaycastVariant& variant, const RaycastParameters& par
     if (compositor.takesSteps) program.set("compositorSteps", parameters.compositorSteps);
     if (variant.unchangedTime) {
         program.set("unchangedBelow", parameters.unchangedBelow);
-        program.set("unchangedTransparent", int(parameters.unchangedTransparent));
+        program.set("unchangedTie", parameters.unchangedTie);
+        program.set("unchangedOpacity", parameters.unchangedOpacity);
     }
     if (variant.walk == TimeStepWalk::PackedGroups) {
         program.set("packedGroupCount", parameters.packedGroupCount);

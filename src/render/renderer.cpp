@@ -123,7 +123,8 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
         unchanged && compositorInfo(scene.compositor).takesUnchanged) {
         variant.unchangedTime = true;
         parameters.unchangedBelow = float(unchanged->below);
-        parameters.unchangedTransparent = unchanged->shows == UnchangedShows::Transparent;
+        parameters.unchangedTie = float(unchanged->tie);
+        parameters.unchangedOpacity = float(unchanged->opacity);
     }
     if (compositorInfo(scene.compositor).takesSteps)
         parameters.compositorSteps = scene.compositorOptions.differenceSteps(gpuSeries_->timeStepCount());

@@ -11,6 +11,7 @@
 #include "tstyles/core/errors.h"
 #include "tstyles/core/user_paths.h"
 #include "tstyles/scene/scene.h"
+#include "tstyles/scene/temporal_change.h"
 #include "tstyles/scene/scene_file.h"
 
 namespace tstyles {
@@ -147,7 +148,7 @@ Scene sceneAtFrame(const Scene& scene, int frame) {
         auto& movedUnchanged = moved.compositorOptions.unchanged;
         const auto& fittedUnchanged = scene.compositorOptions.unchanged;
         if (movedUnchanged && movedUnchanged->automatic && fittedUnchanged && fittedUnchanged->automatic)
-            movedUnchanged->below = fittedUnchanged->below;
+            takeFit(*movedUnchanged, {fittedUnchanged->below, fittedUnchanged->tie});
         return moved;
     } catch (const InputError& error) {
         throw InputError("animation frame " + std::to_string(frame) + ": " + problemWithout(error.what(), origin));

@@ -133,8 +133,8 @@ std::pair<double, double> automaticGradientRange(const Scene& scene, const Serie
     return gradientRangeForChange(scene, series, typicalLargestChange(series, scene.stf));
 }
 
-double automaticUnchangedBelow(const Scene& scene, const Series& series) {
-    return unchangedThresholdOf(temporalChanges(series, scene.stf), series.size());
+UnchangedFit automaticUnchangedFit(const Scene& scene, const Series& series) {
+    return unchangedFitOf(temporalChanges(series, scene.stf), series.size());
 }
 
 std::pair<double, double> gradientRangeForChange(const Scene& scene, const Series& series, double change) {
@@ -163,7 +163,7 @@ Scene fitAutomaticParts(Scene scene, const Series& display) {
         scene.gradientTstf.rangeLow = low;
         scene.gradientTstf.rangeHigh = high;
     }
-    if (fitsUnchanged) scene.compositorOptions.unchanged->below = unchangedThresholdOf(places, display.size());
+    if (fitsUnchanged) takeFit(*scene.compositorOptions.unchanged, unchangedFitOf(places, display.size()));
     return scene;
 }
 

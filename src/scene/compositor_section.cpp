@@ -2,7 +2,7 @@
 // compositor's options ({"name": "first-arrival", "threshold": 0.4}), or the scene's own GLSL
 // ({"glsl": "...", "reads": "index-tstf"} or {"file": "peak.glsl", "reads": "gradient-tstf"}). A
 // compositor that picks a time-step may leave unchanged places without time colour:
-// {"name": "temporal-mip", "unchanged": {"below": "auto", "shows": "neutral"}}.
+// {"name": "temporal-mip", "unchanged": {"below": "auto", "opacity": 0.2}}.
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -34,27 +34,11 @@ std::string readsName(CompositorReads reads) {
     return "index-tstf";
 }
 
-constexpr std::pair<UnchangedShows, const char*> kUnchangedShowsNames[] = {
-    {UnchangedShows::Neutral, "neutral"},
-    {UnchangedShows::Transparent, "transparent"},
-};
-
-std::optional<UnchangedShows> unchangedShowsFromString(const std::string& name) {
-    for (const auto& [shows, text] : kUnchangedShowsNames)
-        if (name == text) return shows;
-    return std::nullopt;
-}
-
-std::string unchangedShowsName(UnchangedShows shows) {
-    for (const auto& [entry, text] : kUnchangedShowsNames)
-        if (entry == shows) return text;
-    return "neutral";
-}
-
-// {"below": "auto" or a change in density units, "shows": "neutral" or "transparent"}, both optional.
+// {"below": "auto" or a change in density units, "tie": a difference in density units (with a
+// number for "below"), "opacity": the share of the STF's opacity kept}, all optional.
 UnchangedTime readUnchanged(const JsonFieldReader& fields, const json& value) {
     const std::string path = "compositor.unchanged";
-    fields.expectObject(value, path, {"below", "shows"});
+    fields.expectObject(value, path, {"below", "tie", "opacity"});
     UnchangedTime unchanged;
     if (const json* below = JsonFieldReader::member(value, "below")) {
         if (below->is_string()) {
@@ -66,9 +50,13 @@ UnchangedTime readUnchanged(const JsonFieldReader& fields, const json& value) {
             unchanged.below = fields.numberIn(*below, path + ".below", Interval{0.0, 1.0});
         }
     }
-    if (const json* shows = JsonFieldReader::member(value, "shows"))
-        unchanged.shows = fields.name<UnchangedShows>(*shows, path + ".shows", unchangedShowsFromString,
-                                                      {"neutral", "transparent"});
+    if (const json* tie = JsonFieldReader::member(value, "tie")) {
+        if (unchanged.automatic)
+            fields.fail(path + ".tie", "is fitted with \"below\": \"auto\"; give \"below\" as a number with it");
+        unchanged.tie = fields.numberIn(*tie, path + ".tie", Interval{0.0, 1.0});
+    }
+    if (const json* opacity = JsonFieldReader::member(value, "opacity"))
+        unchanged.opacity = fields.numberIn(*opacity, path + ".opacity", Interval{0.0, 1.0});
     return unchanged;
 }
 
@@ -185,7 +173,8 @@ ordered_json compositorJson(const Scene& scene, const std::filesystem::path& sce
     if (unchanged) {
         ordered_json section;
         section["below"] = options.unchanged->automatic ? ordered_json("auto") : ordered_json(options.unchanged->below);
-        section["shows"] = unchangedShowsName(options.unchanged->shows);
+        if (!options.unchanged->automatic) section["tie"] = options.unchanged->tie;
+        section["opacity"] = options.unchanged->opacity;
         object["unchanged"] = section;
     }
     return object;

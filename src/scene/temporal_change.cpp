@@ -76,29 +76,32 @@ std::vector<glm::dvec3> changeLatticePoints(const Bounds& visible) {
 }
 
 double noiseOfPlace(const std::vector<double>& densities) {
-    if (densities.size() < 3) return 0.0;
+    if (densities.size() < 2) return 0.0;
     std::vector<double> first, second;
     for (std::size_t index = 1; index < densities.size(); ++index) {
         first.push_back(std::abs(densities[index] - densities[index - 1]));
         if (index >= 2) second.push_back(std::abs(densities[index] - 2.0 * densities[index - 1] + densities[index - 2]));
     }
-    return std::min(medianOf(std::move(first)) / kMedianFirstDifference,
-                    medianOf(std::move(second)) / kMedianSecondDifference);
+    const double fromFirst = medianOf(std::move(first)) / kMedianFirstDifference;
+    return second.empty() ? fromFirst : std::min(fromFirst, medianOf(std::move(second)) / kMedianSecondDifference);
 }
 
 void addChange(const std::vector<double>& densities, const Stf& stf, PlaceChanges& places) {
     std::vector<double> valid;
     valid.reserve(densities.size());
-    bool visible = false;
+    std::size_t visible = 0;
     for (double density : densities) {
         if (isMissing(float(density))) continue;
         valid.push_back(density);
-        visible = visible || stf.curve.evaluate(density).opacity > 0.0;
+        visible += stf.curve.evaluate(density).opacity > 0.0 ? 1 : 0;
     }
-    if (!visible || valid.size() < 2) return;
+    if (visible == 0 || valid.size() < 2) return;
     const auto [lowest, highest] = std::minmax_element(valid.begin(), valid.end());
     places.changes.push_back(*highest - *lowest);
-    if (valid.size() >= kFewestValuesForNoise) places.noises.push_back(noiseOfPlace(valid));
+    // The noise of what is seen: a place of the transparent background that noise lifts into the STF
+    // now and then is not (its quieter noise would lower the estimate).
+    if (2 * visible >= valid.size())
+        places.noises.push_back(noiseOfPlace(valid));
 }
 
 double typicalOf(std::vector<double> changes) {
@@ -118,10 +121,16 @@ double noiseRangeQuantile(std::size_t count) {
     return 0.5 * (low + high);
 }
 
-double unchangedThresholdOf(const PlaceChanges& places, std::size_t stepCount) {
+UnchangedFit unchangedFitOf(const PlaceChanges& places, std::size_t stepCount) {
     const double share = kUnchangedShareOfChange * typicalOf(places.changes);
-    const double noise = places.noises.empty() ? 0.0 : medianOf(places.noises) * noiseRangeQuantile(stepCount);
-    return std::clamp(std::max(share, noise), 0.0, 1.0);
+    const double noise = places.noises.empty() ? 0.0 : medianOf(places.noises);
+    return {std::clamp(std::max(share, noise * noiseRangeQuantile(stepCount)), 0.0, 1.0),
+            std::clamp(noise * noiseRangeQuantile(2), 0.0, 1.0)};
+}
+
+void takeFit(UnchangedTime& unchanged, const UnchangedFit& fit) {
+    unchanged.below = fit.below;
+    unchanged.tie = fit.tie;
 }
 
 PlaceChanges temporalChanges(const Series& series, const Stf& stf) {

@@ -79,6 +79,42 @@ void drawCompositorChoice(Scene& scene, const Series& series) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", compositorInfo(scene.compositor).summary);
 }
 
+// Unchanged places (CompositorOptions::unchanged): on or off, the threshold (dragging it leaves
+// "auto"), and the share of the STF's opacity they keep.
+void drawUnchangedPlaces(Scene& scene, const Series& series) {
+    std::optional<UnchangedTime>& unchanged = scene.compositorOptions.unchanged;
+    bool on = unchanged.has_value();
+    if (ImGui::Checkbox("time only where it changes", &on)) {
+        unchanged.reset();
+        if (on) {
+            unchanged = UnchangedTime{};
+            if (series.size() > 0) takeFit(*unchanged, automaticUnchangedFit(scene, series));
+        }
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("No time colour where a place's values change by no more than the threshold, nor where two "
+                          "time-steps tie (docs/compositors.md, \"Unchanged places\").");
+    if (!unchanged) return;
+    const double low = 0.0;
+    const double high = 1.0;
+    if (ImGui::SliderScalar(unchanged->automatic ? "unchanged below (auto)" : "unchanged below", ImGuiDataType_Double,
+                            &unchanged->below, &low, &high, "%.4f", ImGuiSliderFlags_Logarithmic))
+        unchanged->automatic = false;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("A change in density units (0 to 1); \"auto\" is fitted to the data: a tenth of the typical "
+                          "largest change, or above the noise.");
+    if (ImGui::SliderScalar("tie", ImGuiDataType_Double, &unchanged->tie, &low, &high, "%.4f",
+                            ImGuiSliderFlags_Logarithmic))
+        unchanged->automatic = false;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Two time-steps whose densities differ by no more than this tie (density units); \"auto\": "
+                          "what the data's noise puts between two equal values.");
+    ImGui::SliderScalar("unchanged opacity", ImGuiDataType_Double, &unchanged->opacity, &low, &high, "%.2f");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Unchanged places show the STF alone with this share of its opacity: 1 as the STF has it, 0 "
+                          "transparent.");
+}
+
 // The options of the chosen compositor: a threshold, the two time-steps of a difference, or what
 // the scene's own code is read by.
 void drawCompositorOptions(Scene& scene, const Series& series) {
@@ -100,6 +136,7 @@ void drawCompositorOptions(Scene& scene, const Series& series) {
         }
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("The difference shows density(to) - density(from).");
     }
+    if (info.takesUnchanged) drawUnchangedPlaces(scene, series);
     if (scene.compositor == TemporalCompositor::Custom && options.custom) {
         const bool index = options.custom->reads == CompositorReads::IndexTstf;
         ImGui::TextDisabled("the scene's own GLSL, read by the %s TSTF", index ? "index" : "gradient");

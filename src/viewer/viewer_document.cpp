@@ -40,9 +40,9 @@ std::shared_ptr<const Series> fitSeries(Scene& scene, const std::vector<std::fil
         if (auto& unchanged = scene.compositorOptions.unchanged; unchanged && unchanged->automatic) {
             // Fitted to the STF's visible places: refit only when the STF changed.
             const auto& kept = current->scene.compositorOptions.unchanged;
-            unchanged->below = kept && kept->automatic && current->scene.stf == scene.stf
-                                   ? kept->below
-                                   : automaticUnchangedBelow(scene, *current->series);
+            takeFit(*unchanged, kept && kept->automatic && current->scene.stf == scene.stf
+                                    ? UnchangedFit{kept->below, kept->tie}
+                                    : automaticUnchangedFit(scene, *current->series));
         }
         frame = current->frame;
         return current->series;

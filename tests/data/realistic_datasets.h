@@ -31,4 +31,36 @@ void writeMovingBlobNifti(const std::filesystem::path& file);
 // which a lesion (120 HU) grows in the body. xyzt_units mm and s, TR 60 s.
 void writeCtPhantom(const std::filesystem::path& file);
 
+// The five shapes of issue 40's first pictures, each as the files scientists have them:
+// A global monthly ocean climatology as the World Ocean Atlas writes it: t_an(time 12, depth 19,
+// lat 45, lon 90), degrees_celsius, 4-degree cells, the 19 standard levels 0 .. 1000 m (uneven),
+// time "months since 0000-01-01 00:00:00" at mid-month (0.5 .. 11.5) with a `climatology`
+// attribute and its bounds; continents (and shelves widening with depth) as _FillValue. The surface
+// follows the seasons (the north warmest in August, the south in February); the deep water does
+// not change.
+void writeOceanClimatology(const std::filesystem::path& file);
+
+// A regional forecast as ECMWF's grids come: clwc(time 7, level 10, latitude 81, longitude 121),
+// kg kg**-1, 0.25 degrees over 30..50 N, -110..-80 E, pressure levels 1000 .. 300 hPa, time "hours
+// since 2026-11-28 00:00:00" every 6 hours (+0 h .. +36 h). A cold front's cloud band sweeps east
+// and deepens; a cloud over the mountains in the west stays the same at every step.
+void writeRegionalForecast(const std::filesystem::path& file);
+
+// A low-resolution fMRI run: NIfTI-1 int16, 64 x 64 x 30 voxels of 3.5 x 3.5 x 4 mm, 40 volumes,
+// TR 2 s. A brain (about 600) in a dim background, temporal noise of standard deviation 6 (a
+// temporal SNR of 100), and a block design (10 volumes on, 10 off) that raises two small regions
+// (visual cortex at the back, motor cortex at the top) by 3 %.
+void writeFmriRun(const std::filesystem::path& file);
+
+// A brain scanned twice (baseline and follow-up): NIfTI-1 int16, 80 x 96 x 72 voxels of 2 mm, 2
+// volumes. Grey and white matter, dark ventricles, independent noise of 2 % in each scan, and a
+// bright lesion whose radius grows from 5 to 7 voxels.
+void writeBrainFollowUp(const std::filesystem::path& file);
+
+// A CT perfusion of the head: NIfTI-1 int16 HU, 96 x 96 x 48 voxels of 2 x 2 x 3 mm, 4 time-steps
+// 4 s apart. Air at -1000 HU, a skull at 1200 HU, brain at 35 HU with ventricles at 8 HU, noise of
+// 6 HU in each time-step; contrast fills three arteries (40 to 320 HU, peaking at the third
+// time-step) and the right hemisphere's tissue enhances by 15 HU.
+void writeCtHeadPerfusion(const std::filesystem::path& file);
+
 }  // namespace tstyles::testdata

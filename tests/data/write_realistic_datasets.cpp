@@ -19,6 +19,11 @@ int main(int argc, char** argv) {
         writeOceanEddy(folder / "ocean-eddy.nc");
         writeMovingBlobNifti(folder / "moving-blob.nii");
         writeCtPhantom(folder / "ct-phantom.nii");
+        writeOceanClimatology(folder / "woa-climatology.nc");
+        writeRegionalForecast(folder / "forecast.nc");
+        writeFmriRun(folder / "fmri-run.nii");
+        writeBrainFollowUp(folder / "brain-follow-up.nii");
+        writeCtHeadPerfusion(folder / "ct-head-perfusion.nii");
     } catch (const std::exception& error) {
         std::cerr << "write_realistic_datasets: " << error.what() << "\n";
         return 2;

@@ -99,16 +99,18 @@ TEST(CompositorScene, UnchangedPlacesAreReadAndWrittenBack) {
     const Scene fitted = parseScene(sceneWith(R"({"name": "temporal-mip", "unchanged": {}})"), kOrigin);
     ASSERT_TRUE(fitted.compositorOptions.unchanged);
     EXPECT_TRUE(fitted.compositorOptions.unchanged->automatic);
-    EXPECT_EQ(fitted.compositorOptions.unchanged->shows, UnchangedShows::Neutral);
+    EXPECT_EQ(fitted.compositorOptions.unchanged->opacity, 1.0);
     EXPECT_EQ(roundTrip(fitted), fitted);
     EXPECT_NE(sceneToJson(fitted, kOrigin.parent_path()).find("\"below\": \"auto\""), std::string::npos);
 
     const Scene given = parseScene(
-        sceneWith(R"({"name": "time-of-max", "unchanged": {"below": 0.05, "shows": "transparent"}})"), kOrigin);
+        sceneWith(R"({"name": "time-of-max", "unchanged": {"below": 0.05, "tie": 0.01, "opacity": 0.25}})"),
+        kOrigin);
     ASSERT_TRUE(given.compositorOptions.unchanged);
     EXPECT_FALSE(given.compositorOptions.unchanged->automatic);
     EXPECT_EQ(given.compositorOptions.unchanged->below, 0.05);
-    EXPECT_EQ(given.compositorOptions.unchanged->shows, UnchangedShows::Transparent);
+    EXPECT_EQ(given.compositorOptions.unchanged->tie, 0.01);
+    EXPECT_EQ(given.compositorOptions.unchanged->opacity, 0.25);
     EXPECT_EQ(roundTrip(given), given);
 
     // Every compositor that picks a time-step takes it; the others are named in the refusal.
@@ -168,7 +170,12 @@ TEST(CompositorScene, BadCompositorObjectsNameTheField) {
         {sceneWith(R"({"name": "temporal-mip", "unchanged": {"below": 1.5}})"), "compositor.unchanged.below: must be in"},
         {sceneWith(R"({"name": "temporal-mip", "unchanged": {"below": "fit"}})"),
          "compositor.unchanged.below: expected \"auto\""},
-        {sceneWith(R"({"name": "temporal-mip", "unchanged": {"shows": "grey"}})"), "compositor.unchanged.shows"},
+        {sceneWith(R"({"name": "temporal-mip", "unchanged": {"tie": 0.1}})"),
+         "compositor.unchanged.tie: is fitted with \"below\": \"auto\""},
+        {sceneWith(R"({"name": "temporal-mip", "unchanged": {"below": 0.1, "tie": 2}})"), "compositor.unchanged.tie"},
+        {sceneWith(R"({"name": "temporal-mip", "unchanged": {"opacity": -0.5}})"),
+         "compositor.unchanged.opacity: must be in"},
+        {sceneWith(R"({"name": "temporal-mip", "unchanged": {"shows": "grey"}})"), "compositor.unchanged"},
         {sceneWith(R"({"name": "temporal-mip", "unchanged": {"below": 0.1, "colour": 1}})"), "compositor.unchanged"},
         {sceneWith(R"({"name": "temporal-mip", "unchanged": true})"), "compositor.unchanged"},
     };

@@ -1,7 +1,7 @@
 // Unchanged places (CompositorOptions::unchanged): the compositors that pick a time-step show no
-// time colour where a place's densities do not change by more than the threshold, nor where two
-// time-steps tie. The final image is the TSTF alone over an opaque white STF, so that a pixel is
-// white (the STF alone: no time colour), a time-step's pure colour, or transparent.
+// time colour where a place's densities do not change by more than `below`, nor where two
+// time-steps tie (within `tie`). The final image is the TSTF alone over an opaque white STF, so that
+// a pixel is white (the STF alone: no time colour), a time-step's pure colour, or transparent.
 #include <string>
 #include <vector>
 
@@ -50,7 +50,7 @@ Series stackedBoxes(const std::vector<float>& densities) {
 
 // An opaque white STF, the TSTF alone, time-step 0 red, 1 green, 2 blue; every time-step reaches
 // the threshold of first-arrival and last-above.
-Scene pickingScene(TemporalCompositor compositor, std::optional<double> below) {
+Scene pickingScene(TemporalCompositor compositor, std::optional<double> below, double tie = 0.0) {
     Scene scene = orthographicSceneLookingDownZ(kCentre, kViewHeight, kSize);
     scene.stf.curve = constantFunction({1, 1, 1}, 1.0);
     scene.compositor = compositor;
@@ -58,7 +58,7 @@ Scene pickingScene(TemporalCompositor compositor, std::optional<double> below) {
     scene.finalMode = FinalMode::Tstf;
     scene.indexTstf.curve.opacity = {{0.0, 1.0}};
     scene.indexTstf.curve.color = {{0.0, {1, 0, 0}}, {1.0, {0, 1, 0}}, {2.0, {0, 0, 1}}};
-    if (below) scene.compositorOptions.unchanged = UnchangedTime{false, *below, UnchangedShows::Neutral};
+    if (below) scene.compositorOptions.unchanged = UnchangedTime{false, *below, tie, 1.0};
     return scene;
 }
 
@@ -86,6 +86,7 @@ TEST(UnchangedTimeRender, ASeriesConstantOverTimeShowsNoTimeColourAnywhere) {
         fitted.compositorOptions.unchanged->automatic = true;
         fitted = fitAutomaticParts(fitted, series);
         EXPECT_NEAR(fitted.compositorOptions.unchanged->below, 1e-4, 1e-12) << name;
+        EXPECT_EQ(fitted.compositorOptions.unchanged->tie, 0.0) << name;  // three values: no noise estimate
         const Image image = renderSeries(series, fitted);
         expectPixel(image, kCentre, kWhite, name);
         expectOnly(image, kWhite, name);
@@ -94,21 +95,28 @@ TEST(UnchangedTimeRender, ASeriesConstantOverTimeShowsNoTimeColourAnywhere) {
 
 TEST(UnchangedTimeRender, TiesNeverChooseAColour) {
     // Time-steps 0 and 2 share the highest density (and, under the opaque STF, the highest opacity):
-    // with a threshold of 0, only the tie itself is unchanged.
+    // with thresholds of 0, only the tie itself shows no time colour.
     const Series peakTwice = stackedBoxes({0.8f, 0.3f, 0.8f});
     for (TemporalCompositor compositor : {TemporalCompositor::TimeOfMaximum, TemporalCompositor::MaxIntensityProjection})
         expectPixel(renderSeries(peakTwice, pickingScene(compositor, 0.0)), kCentre, kWhite, toString(compositor));
     expectPixel(renderSeries(stackedBoxes({0.3f, 0.8f, 0.3f}), pickingScene(TemporalCompositor::Minimum, 0.0)),
                 kCentre, kWhite, "temporal-min, a tie of the lowest");
-    // Ahead by 0.05: a colour below a threshold of 0.04, none at 0.06.
+    // Ahead by 0.05: a colour with a tie of 0.04, none with 0.06.
     const Series peakOnce = stackedBoxes({0.8f, 0.3f, 0.85f});
     for (TemporalCompositor compositor : {TemporalCompositor::TimeOfMaximum, TemporalCompositor::MaxIntensityProjection}) {
-        expectPixel(renderSeries(peakOnce, pickingScene(compositor, 0.04)), kCentre, kBlue, toString(compositor));
-        expectPixel(renderSeries(peakOnce, pickingScene(compositor, 0.06)), kCentre, kWhite, toString(compositor));
+        expectPixel(renderSeries(peakOnce, pickingScene(compositor, 0.0, 0.04)), kCentre, kBlue, toString(compositor));
+        expectPixel(renderSeries(peakOnce, pickingScene(compositor, 0.0, 0.06)), kCentre, kWhite, toString(compositor));
     }
     const Series lowOnce = stackedBoxes({0.35f, 0.8f, 0.3f});
-    expectPixel(renderSeries(lowOnce, pickingScene(TemporalCompositor::Minimum, 0.04)), kCentre, kBlue, "temporal-min");
-    expectPixel(renderSeries(lowOnce, pickingScene(TemporalCompositor::Minimum, 0.06)), kCentre, kWhite, "temporal-min");
+    expectPixel(renderSeries(lowOnce, pickingScene(TemporalCompositor::Minimum, 0.0, 0.04)), kCentre, kBlue,
+                "temporal-min");
+    expectPixel(renderSeries(lowOnce, pickingScene(TemporalCompositor::Minimum, 0.0, 0.06)), kCentre, kWhite,
+                "temporal-min");
+    // A tie is a place that changes, at no one time: it keeps the STF's whole opacity where unchanged
+    // places are transparent.
+    Scene tiedButChanging = pickingScene(TemporalCompositor::TimeOfMaximum, 0.0);
+    tiedButChanging.compositorOptions.unchanged->opacity = 0.0;
+    expectPixel(renderSeries(peakTwice, tiedButChanging), kCentre, kWhite, "a tie, unchanged places transparent");
 }
 
 TEST(UnchangedTimeRender, ArrivalsShowTimeWhereTheRangeExceedsTheThreshold) {
@@ -127,13 +135,20 @@ TEST(UnchangedTimeRender, ArrivalsShowTimeWhereTheRangeExceedsTheThreshold) {
     expectPixel(renderSeries(series, departure), kCentre, kWhite, "last-above, threshold 0.75");
 }
 
-TEST(UnchangedTimeRender, UnchangedPlacesCanBeTransparent) {
+TEST(UnchangedTimeRender, UnchangedPlacesKeepTheirShareOfTheStfsOpacity) {
     const Series series = stackedBoxes({0.5f, 0.5f, 0.5f});
     for (TemporalCompositor compositor : kPickingCompositors) {
         Scene scene = pickingScene(compositor, 0.0);
-        scene.compositorOptions.unchanged->shows = UnchangedShows::Transparent;
+        scene.compositorOptions.unchanged->opacity = 0.0;
         expectOnly(renderSeries(series, scene), kTransparent, toString(compositor));
     }
+    // A quarter of the opacity per reference length: a slab of the box's width (7 reference
+    // lengths) gathers 1 - 0.75^7 (Beer-Lambert with the renderer's opacity correction), white.
+    Scene faint = pickingScene(TemporalCompositor::MaxIntensityProjection, 0.0);
+    faint.compositorOptions.unchanged->opacity = 0.25;
+    const float opacity = float(slabOpacity(0.25, kConstantBoxWidth));
+    expectPixel(renderSeries(series, faint), kCentre, glm::vec4(opacity, opacity, opacity, opacity),
+                "a quarter of the STF's opacity, premultiplied");
 }
 
 FrameOptions rayList() {
@@ -149,30 +164,33 @@ FrameOptions naive() {
 }
 
 TEST(UnchangedTimeRender, AMovingBlobColoursOnlyItsPath) {
-    // 16 x 4 x 4 voxels 0.1 apart over a background of 0.3; at time-step i a slab three voxels wide
-    // (x = 1 + 4 i .. 3 + 4 i, through the whole depth) holds 0.9. Seen from above, the slab's
-    // middle column at each time shows that time-step's colour; the columns it never reaches (13 and
-    // 14; 15 is the box's edge) are white.
+    // 24 x 4 x 4 voxels 0.1 apart over a background of 0.3; at time-step i a slab three voxels wide
+    // (x = 1 + 4 i .. 3 + 4 i, through the whole depth) holds 0.9, so that it passes over fewer than
+    // half of the places (the fitted noise is that of the others: none). Seen from above, the slab's
+    // middle column at each time shows that time-step's colour; the columns it never reaches (13 to
+    // 22; 23 is the box's edge) are white.
     std::vector<BoxSpec> boxes;
     for (int step = 0; step < 3; ++step) {
         BoxSpec box;
-        box.dims = {16, 4, 4};
+        box.dims = {24, 4, 4};
         box.density = [step](glm::ivec3 voxel) {
             return voxel.x >= 1 + 4 * step && voxel.x <= 3 + 4 * step ? 0.9f : 0.3f;
         };
         boxes.push_back(box);
     }
     const Series series = makeSeries(boxes);
-    const glm::dvec2 centre(0.75, 0.15);
+    const glm::dvec2 centre(1.15, 0.15);
+    const double viewHeight = 2.6;
     Scene picking = pickingScene(TemporalCompositor::MaxIntensityProjection, 0.0);
-    picking.camera = orthographicSceneLookingDownZ(centre, kViewHeight, kSize).camera;
+    picking.camera = orthographicSceneLookingDownZ(centre, viewHeight, kSize).camera;
     picking.compositorOptions.unchanged->automatic = true;
     for (TemporalCompositor compositor : {TemporalCompositor::MaxIntensityProjection, TemporalCompositor::TimeOfMaximum}) {
         picking.compositor = compositor;
         const Scene fitted = fitAutomaticParts(picking, series);
         // Changes of 0.6 on the path and 0 elsewhere; three values are too few for noise: 0.06.
         EXPECT_NEAR(fitted.compositorOptions.unchanged->below, 0.06, 1e-6);
-        const auto at = [&](int voxelX) { return pixelOf({0.1 * voxelX, 0.15}, centre, kViewHeight, kSize); };
+        EXPECT_EQ(fitted.compositorOptions.unchanged->tie, 0.0);
+        const auto at = [&](int voxelX) { return pixelOf({0.1 * voxelX, 0.15}, centre, viewHeight, kSize); };
         // Each walk over the time-steps: the packed groups (the series is aligned), the ray's list, naive.
         for (const auto& [walk, options] :
              {std::pair{TimeStepWalk::PackedGroups, FrameOptions{}}, std::pair{TimeStepWalk::RayList, rayList()},
@@ -184,7 +202,7 @@ TEST(UnchangedTimeRender, AMovingBlobColoursOnlyItsPath) {
             expectPixelAt(image, at(2), kRed, name + ", time-step 0's slab");
             expectPixelAt(image, at(6), kGreen, name + ", time-step 1's slab");
             expectPixelAt(image, at(10), kBlue, name + ", time-step 2's slab");
-            for (int never : {13, 14}) expectPixelAt(image, at(never), kWhite, name + ", never reached");
+            for (int never = 13; never <= 22; ++never) expectPixelAt(image, at(never), kWhite, name + ", never reached");
         }
         // Without the option the never-reached background takes time-step 0's colour by the tie.
         Scene everywhere = fitted;

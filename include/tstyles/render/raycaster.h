@@ -34,10 +34,12 @@ struct RaycastParameters {
     // visibleDensityRange of the STF's table: time-steps outside it are transparent.
     glm::vec2 stfVisibleRange{0.0f, 1.0f};
     glm::ivec2 compositorSteps{0};
-    // CompositorOptions::unchanged (RaycastVariant::unchangedTime): the change below which a place
-    // shows no time colour, and whether it is then transparent instead of neutral.
+    // CompositorOptions::unchanged (RaycastVariant::unchangedTime): the change up to which a place
+    // is unchanged, the difference up to which two time-steps tie, and the share of the STF's
+    // opacity an unchanged place keeps.
     float unchangedBelow = 0.0f;
-    bool unchangedTransparent = false;
+    float unchangedTie = 0.0f;
+    float unchangedOpacity = 1.0f;
     // The time-steps that take part, first and last inclusive (the scene's exposure, or a solo step).
     glm::ivec2 exposedSteps{0, std::numeric_limits<int>::max()};
     // The packed atlas (RaycastVariant::walk PackedGroups).

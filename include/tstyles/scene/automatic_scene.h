@@ -12,6 +12,7 @@
 #include "tstyles/data/series.h"
 #include "tstyles/scene/automatic_opacity.h"
 #include "tstyles/scene/scene.h"
+#include "tstyles/scene/temporal_change.h"
 
 namespace tstyles {
 
@@ -54,9 +55,9 @@ Bounds framedBounds(const Scene& scene, const Series& series);
 // The change (max - min density over time-steps) below which 99 % of the visible voxels' changes
 // lie: the automatic gradient TSTF range is [0, this].
 double typicalLargestChange(const Series& series, const Stf& stf);
-// The change below which a place of the (display) series shows no time colour, where the scene's
-// unchanged threshold is "auto" (unchangedThresholdOf over the places the scene's STF shows).
-double automaticUnchangedBelow(const Scene& scene, const Series& series);
+// The thresholds of unchanged places on the (display) series where the scene's are "auto"
+// (unchangedFitOf over the places the scene's STF shows).
+UnchangedFit automaticUnchangedFit(const Scene& scene, const Series& series);
 // The gradient TSTF's range that "auto" stands for with the scene's compositor
 // (AutomaticRange of tstyles/scene/temporal_compositors.h).
 std::pair<double, double> automaticGradientRange(const Scene& scene, const Series& series);

@@ -51,18 +51,17 @@ struct CustomCompositor {
     bool operator==(const CustomCompositor&) const = default;
 };
 
-// What a place shows where a compositor that picks a time-step finds its values unchanged over
-// time (UnchangedTime): the STF alone, with no time colour, or nothing.
-enum class UnchangedShows { Neutral, Transparent };
-
 // Time shown only where time shows something: where a place's densities change over the time-steps
-// by less than `below`, or where the time-step a compositor picks is ahead of another by less
-// (a tie), the place shows no time colour (docs/compositors.md, "Unchanged places").
+// by no more than `below`, or where the time-step a compositor picks is ahead of another by no more
+// than `tie`, the place shows no time colour (docs/compositors.md, "Unchanged places").
 struct UnchangedTime {
-    // Fitted to the data ("auto": unchangedThresholdOf, by fitAutomaticParts); `below` then holds the fit.
+    // Fitted to the data ("auto": unchangedFitOf, by fitAutomaticParts); `below` and `tie` then hold the fit.
     bool automatic = true;
     double below = 0.0;  // a change in density units, [0, 1]
-    UnchangedShows shows = UnchangedShows::Neutral;
+    double tie = 0.0;    // a difference in density units, [0, 1]: 0 leaves only exact ties
+    // An unchanged place shows the STF alone (no time colour) with this share of its opacity, in
+    // [0, 1]: 1 as the STF has it, 0 transparent, between a faint neutral ghost.
+    double opacity = 1.0;
     bool operator==(const UnchangedTime&) const = default;
 };
 

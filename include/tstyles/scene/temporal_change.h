@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "tstyles/data/series.h"
+#include "tstyles/scene/scene.h"
 #include "tstyles/scene/transfer_function.h"
 
 namespace tstyles {
@@ -29,33 +30,41 @@ std::vector<glm::dvec3> changeLatticePoints(const Bounds& visible);
 // The visible places' changes over time, and the noise in them.
 struct PlaceChanges {
     std::vector<double> changes;  // each place's largest minus smallest density
-    // Of the places with at least kFewestValuesForNoise values: the standard deviation of the noise
+    // Of the places visible in at least half of their values: the standard deviation of the noise
     // in their densities (noiseOfPlace).
     std::vector<double> noises;
 };
 
-// A place's noise is estimated from this many values with data up.
-inline constexpr std::size_t kFewestValuesForNoise = 6;
-
 // The standard deviation of independent noise on a place's densities (in time order, with data),
 // told apart from real change by taking the smaller of two robust estimates: the median absolute
 // first difference (0 where the place holds one value most of the time: an event, a passing body)
-// and the median absolute second difference (about 0 where it changes smoothly: a trend, a season),
-// each divided by what it is for Gaussian noise of standard deviation 1.
+// and the median absolute second difference (about 0 where it changes smoothly: a trend, a season;
+// from three values up), each divided by what it is for Gaussian noise of standard deviation 1. Over
+// many places the median of this estimate is 0.87 to 1.0 of the noise's standard deviation (1.0
+// for two values, 0.87 for four, 0.94 for forty), so that the places' median noise is the data's
+// noise wherever fewer than half of the places hold an event or a jump.
 double noiseOfPlace(const std::vector<double>& densities);
 
 // A place's densities over time (missing ones included): where the STF shows at least one of them
-// and two have data, its change (max - min) appended to `places.changes`, and with
-// kFewestValuesForNoise values its noise to `places.noises`.
+// and two have data, its change (max - min) appended to `places.changes`, and where the STF shows
+// at least half of them, its noise to `places.noises`.
 void addChange(const std::vector<double>& densities, const Stf& stf, PlaceChanges& places);
 
 // The change below which 99 % of `changes` lie, within [1e-3, 1]; 1 where there are none.
 double typicalOf(std::vector<double> changes);
 
-// The change below which a place is unchanged, in a series of `stepCount` time-steps: a tenth of
-// the typical largest change, or more where the noise needs it: the change that the places' median
-// noise reaches over `stepCount` values at most once in a hundred (docs/automatic-scene.md).
-double unchangedThresholdOf(const PlaceChanges& places, std::size_t stepCount);
+// The automatic thresholds of UnchangedTime for a series of `stepCount` time-steps
+// (docs/automatic-scene.md): `below`, the change up to which a place is unchanged, is a tenth of the
+// typical largest change, or more where the noise needs it: the range that the places' median
+// noise reaches over `stepCount` values at most once in a hundred; `tie`, the difference up to which
+// two time-steps tie, is what that noise puts between two equal values at most once in a hundred.
+struct UnchangedFit {
+    double below = 0.0;
+    double tie = 0.0;
+};
+UnchangedFit unchangedFitOf(const PlaceChanges& places, std::size_t stepCount);
+// `unchanged`'s thresholds set to the fit.
+void takeFit(UnchangedTime& unchanged, const UnchangedFit& fit);
 
 // The range that `count` independent standard normal values exceed with probability 0.01.
 double noiseRangeQuantile(std::size_t count);
