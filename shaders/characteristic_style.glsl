@@ -14,13 +14,18 @@ vec4 styledCharacteristic(TemporalCharacteristic c, vec3 position, inout int fet
     if (c.reads == READS_NOTHING) return vec4(0.0);
     if (COMPOSITOR_READS == READS_COMPOSITED) return c.colorOpacity;
     if (COMPOSITOR_READS == READS_INDEX_TSTF) {
-        if (UNCHANGED_TIME == 0 || c.reads == READS_INDEX_TSTF) return styledTimeStep(c.representative, position, fetches);
+        if (UNCHANGED_TIME == 0) return styledTimeStep(c.representative, position, fetches);
+        if (c.reads == READS_INDEX_TSTF) {
+            // A place whose time shows: as opaque as a slab `changedGain` times as thick.
+            vec4 timed = styledTimeStep(c.representative, position, fetches);
+            return vec4(timed.rgb, 1.0 - pow(1.0 - clamp(timed.a, 0.0, 1.0), changedGain));
+        }
         // No time colour (pickedCharacteristic): the STF alone, as final processing shows it outside
-        // a mask; an unchanged place as opaque as the scene asks.
+        // a mask, as opaque as the scene asks.
         TimeStepSample neutral = c.representative;
         neutral.inMask = false;
         vec4 stf = styledFinal(neutral, position, vec4(0.0), INDEX_TSTF_TRACK, 0.0, fetches);
-        return vec4(stf.rgb, c.value == STF_UNCHANGED ? stf.a * unchangedOpacity : stf.a);
+        return vec4(stf.rgb, stf.a * unchangedOpacity);
     }
     // READS_STF: the representative's STF alone, as final processing shows it outside a mask.
     TimeStepSample shown = c.representative;

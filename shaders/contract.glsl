@@ -56,6 +56,11 @@ CONTRACT_CONSTANT(int, PACKED_VALIDITY_NONE, 0)
 CONTRACT_CONSTANT(int, PACKED_VALIDITY_PER_GROUP, 1)
 CONTRACT_CONSTANT(int, PACKED_VALIDITY_SHARED, 2)
 
+// Unchanged places (temporal_sample.glsl, CompositorOptions::unchanged): their thresholds are given
+// per band of density, this many equal bands over [0, 1], so that noisier values (bone in a CT) have
+// their own.
+CONTRACT_CONSTANT(int, UNCHANGED_DENSITY_BANDS, 16)
+
 // The uniform finalMode (final_processing.glsl): what a sample returns.
 CONTRACT_CONSTANT(int, FINAL_STF, 0)
 CONTRACT_CONSTANT(int, FINAL_TSTF, 1)

@@ -88,26 +88,23 @@ TemporalCharacteristic compositedCharacteristic(vec4 colorOpacity) {
 }
 
 // Unchanged places (UNCHANGED_TIME, CompositorOptions::unchanged): where the densities at a sample
-// change over the time-steps by no more than `unchangedBelow` (density units) the place is
-// unchanged, and shows the STF alone with unchangedOpacity of its opacity; where the time-step a
-// compositor picks is ahead of the runner-up by no more than `unchangedTie`, it changes but at no
-// one time, and shows the STF alone as opaque as it is. Either way no time colour.
-uniform float unchangedBelow;
-uniform float unchangedTie;
+// change over the time-steps by no more than `unchangedBelow` (density units), or the time-step a
+// compositor picks is ahead of the runner-up by no more than `unchangedTie` (a tie: the time is
+// noise's choice), no time colour shows: the STF alone, with unchangedOpacity of its opacity.
+// Both per band of the picked time-step's density (contract.glsl's UNCHANGED_DENSITY_BANDS).
+uniform float unchangedBelow[UNCHANGED_DENSITY_BANDS];
+uniform float unchangedTie[UNCHANGED_DENSITY_BANDS];
 uniform float unchangedOpacity;
-
-// READS_STF's `value` under UNCHANGED_TIME: how the STF alone shows.
-const float STF_UNCHANGED = 0.0;  // with unchangedOpacity of its opacity
-const float STF_TIED = 1.0;       // as opaque as it is
+// A place whose time shows is as opaque as if this many times as thick (CompositorOptions::unchanged's gain).
+uniform float changedGain;
 
 // The characteristic of the time-step a compositor picked, where the densities at the sample span
 // `range` and the pick is ahead of the runner-up by `margin` (pass a margin above every tie where
 // the compositor has no runner-up): its index, or the STF alone where that means nothing.
 TemporalCharacteristic pickedCharacteristic(TimeStepSample picked, float range, float margin) {
-    if (UNCHANGED_TIME != 0 && range <= unchangedBelow)
-        return unchangedOpacity <= 0.0 ? transparentCharacteristic()
-                                       : characteristicOf(READS_STF, STF_UNCHANGED, picked);
-    if (UNCHANGED_TIME != 0 && margin <= unchangedTie) return characteristicOf(READS_STF, STF_TIED, picked);
+    int band = clamp(int(picked.density * float(UNCHANGED_DENSITY_BANDS)), 0, UNCHANGED_DENSITY_BANDS - 1);
+    if (UNCHANGED_TIME != 0 && (range <= unchangedBelow[band] || margin <= unchangedTie[band]))
+        return unchangedOpacity <= 0.0 ? transparentCharacteristic() : characteristicOf(READS_STF, 0.0, picked);
     return characteristicOf(READS_INDEX_TSTF, float(picked.step), picked);
 }
 

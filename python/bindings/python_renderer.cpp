@@ -90,7 +90,7 @@ Scene PythonRenderer::fitted(const Scene& scene) {
             fit.compositorOptions.unchanged = UnchangedTime{};
             fit = fitAutomaticParts(fit, *shown.displaySeries);
             shown.gradientRangeHigh = fit.gradientTstf.rangeHigh;
-            shown.unchangedFit = {fit.compositorOptions.unchanged->below, fit.compositorOptions.unchanged->tie};
+            shown.unchangedFit = fittedOf(*fit.compositorOptions.unchanged);
             shown.gradientRangeStf = scene.stf;
         }
     }

@@ -69,12 +69,18 @@ std::optional<UnchangedTime> unchangedFromOptions(const Scene& scene, const Scen
     nlohmann::json unchanged = nlohmann::json::object();
     if (const auto& kept = scene.compositorOptions.unchanged) {
         unchanged["below"] = kept->automatic ? nlohmann::json("auto") : nlohmann::json(kept->below);
-        if (!kept->automatic) unchanged["tie"] = kept->tie;
+        if (!kept->automatic) {
+            unchanged["tie"] = kept->tie;
+            unchanged["gain"] = kept->gain;
+        }
         unchanged["opacity"] = kept->opacity;
     }
     if (overrides.unchanged) {
         unchanged["below"] = valueFromText(*overrides.unchanged);
-        if (unchanged["below"] == "auto") unchanged.erase("tie");
+        if (unchanged["below"] == "auto") {
+            unchanged.erase("tie");
+            unchanged.erase("gain");
+        }
     }
     if (overrides.unchangedOpacity) unchanged["opacity"] = *overrides.unchangedOpacity;
     const std::string option = overrides.unchanged ? "--unchanged" : "--unchanged-opacity";

@@ -166,7 +166,8 @@ SceneFittedOverBlocks fitOverBlocks(const MpiSession& mpi, const BlockDecomposit
         PlaceChanges share;
         mpi.together("taking the changes over time in this process's block",
                      [&] { share = changeShare(mpi, blocks, scene.stf, displayOutline, block, visible); });
-        const PlaceChanges places{mpi.gathered(share.changes), mpi.gathered(share.noises)};
+        const PlaceChanges places{mpi.gathered(share.changes), mpi.gathered(share.noises),
+                                  mpi.gathered(share.noiseDensities)};
         if (scene.gradientTstf.automaticRange) {
             const auto [low, high] = gradientRangeForChange(scene, displayOutline, typicalOf(places.changes));
             scene.gradientTstf.rangeLow = low;

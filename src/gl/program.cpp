@@ -172,6 +172,9 @@ void Program::set(const char* name, const glm::ivec2& value) const {
 void Program::set(const char* name, const glm::ivec3& value) const {
     glProgramUniform3i(id(), location(name), value.x, value.y, value.z);
 }
+void Program::set(const char* name, std::span<const float> values) const {
+    glProgramUniform1fv(id(), location(name), GLsizei(values.size()), values.data());
+}
 void Program::set(const char* name, const glm::mat3& value) const {
     glProgramUniformMatrix3fv(id(), location(name), 1, GL_FALSE, glm::value_ptr(value));
 }

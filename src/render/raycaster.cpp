@@ -136,8 +136,9 @@ void Raycaster::draw(const RaycastVariant& variant, const RaycastParameters& par
     program.set("stfVisibleRange", parameters.stfVisibleRange);
     if (compositor.takesSteps) program.set("compositorSteps", parameters.compositorSteps);
     if (variant.unchangedTime) {
-        program.set("unchangedBelow", parameters.unchangedBelow);
-        program.set("unchangedTie", parameters.unchangedTie);
+        program.set("unchangedBelow", std::span<const float>(parameters.unchangedBelow));
+        program.set("unchangedTie", std::span<const float>(parameters.unchangedTie));
+        program.set("changedGain", parameters.changedGain);
         program.set("unchangedOpacity", parameters.unchangedOpacity);
     }
     if (variant.walk == TimeStepWalk::PackedGroups) {

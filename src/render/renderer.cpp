@@ -8,6 +8,8 @@
 #include "tstyles/gl/cpu_rasterizer.h"
 #include "tstyles/gl/gl_loader.h"
 #include "tstyles/render/covered_pixels.h"
+#include "tstyles/render/shader_contract.h"
+#include "tstyles/scene/temporal_change.h"
 #include "tstyles/scene/temporal_compositors.h"
 
 namespace tstyles {
@@ -122,8 +124,15 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     if (const auto& unchanged = scene.compositorOptions.unchanged;
         unchanged && compositorInfo(scene.compositor).takesUnchanged) {
         variant.unchangedTime = true;
-        parameters.unchangedBelow = float(unchanged->below);
-        parameters.unchangedTie = float(unchanged->tie);
+        static_assert(kUnchangedDensityBands == contract::UNCHANGED_DENSITY_BANDS);
+        for (int band = 0; band < contract::UNCHANGED_DENSITY_BANDS; ++band) {
+            const auto at = std::size_t(band);
+            parameters.unchangedBelow[at] =
+                float(unchanged->belowByDensity.size() > at ? unchanged->belowByDensity[at] : unchanged->below);
+            parameters.unchangedTie[at] =
+                float(unchanged->tieByDensity.size() > at ? unchanged->tieByDensity[at] : unchanged->tie);
+        }
+        parameters.changedGain = float(unchanged->gain);
         parameters.unchangedOpacity = float(unchanged->opacity);
     }
     if (compositorInfo(scene.compositor).takesSteps)

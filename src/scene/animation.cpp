@@ -148,7 +148,7 @@ Scene sceneAtFrame(const Scene& scene, int frame) {
         auto& movedUnchanged = moved.compositorOptions.unchanged;
         const auto& fittedUnchanged = scene.compositorOptions.unchanged;
         if (movedUnchanged && movedUnchanged->automatic && fittedUnchanged && fittedUnchanged->automatic)
-            takeFit(*movedUnchanged, {fittedUnchanged->below, fittedUnchanged->tie});
+            takeFit(*movedUnchanged, fittedOf(*fittedUnchanged));
         return moved;
     } catch (const InputError& error) {
         throw InputError("animation frame " + std::to_string(frame) + ": " + problemWithout(error.what(), origin));

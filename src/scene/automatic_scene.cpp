@@ -17,6 +17,8 @@ namespace {
 
 // The neutral lit-sphere style that gives the first picture its shading.
 constexpr const char* kNeutralStyle = "matte-white";
+// Unchanged places keep this share of the STF's opacity: a faint ghost of the data around what changes.
+constexpr double kUnchangedOpacity = 0.15;
 
 std::string number(double value) {
     std::ostringstream text;
@@ -119,9 +121,12 @@ AutomaticScene automaticScene(const Series& series, const std::filesystem::path&
     result.explanation.push_back("time: " + timeColoursText(series.size()) +
                                  "; compositor temporal-mip (each place shows the time-step where it is most opaque)");
     scene.compositorOptions.unchanged = UnchangedTime{};
+    scene.compositorOptions.unchanged->opacity = kUnchangedOpacity;
     result.explanation.push_back(
-        "unchanged places: no time colour where a place's values change by no more than a threshold fitted to "
-        "the data (a tenth of the typical largest change, or above the noise), nor where two time-steps tie");
+        "unchanged places: no time colour and " + number(kUnchangedOpacity) +
+        " of the opacity where a place's values change by no more than a threshold fitted to the data (a tenth of "
+        "the typical largest change, or above the noise); no time colour where two time-steps tie; what changes "
+        "as opaque as the STF makes a ray through all the data");
     return result;
 }
 

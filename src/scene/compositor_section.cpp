@@ -34,11 +34,11 @@ std::string readsName(CompositorReads reads) {
     return "index-tstf";
 }
 
-// {"below": "auto" or a change in density units, "tie": a difference in density units (with a
-// number for "below"), "opacity": the share of the STF's opacity kept}, all optional.
+// {"below": "auto" or a change in density units, "tie": a difference in density units and "gain"
+// (with a number for "below"), "opacity": the share of the STF's opacity kept}, all optional.
 UnchangedTime readUnchanged(const JsonFieldReader& fields, const json& value) {
     const std::string path = "compositor.unchanged";
-    fields.expectObject(value, path, {"below", "tie", "opacity"});
+    fields.expectObject(value, path, {"below", "tie", "gain", "opacity"});
     UnchangedTime unchanged;
     if (const json* below = JsonFieldReader::member(value, "below")) {
         if (below->is_string()) {
@@ -54,6 +54,11 @@ UnchangedTime readUnchanged(const JsonFieldReader& fields, const json& value) {
         if (unchanged.automatic)
             fields.fail(path + ".tie", "is fitted with \"below\": \"auto\"; give \"below\" as a number with it");
         unchanged.tie = fields.numberIn(*tie, path + ".tie", Interval{0.0, 1.0});
+    }
+    if (const json* gain = JsonFieldReader::member(value, "gain")) {
+        if (unchanged.automatic)
+            fields.fail(path + ".gain", "is fitted with \"below\": \"auto\"; give \"below\" as a number with it");
+        unchanged.gain = fields.numberIn(*gain, path + ".gain", Interval{1.0, 8.0});
     }
     if (const json* opacity = JsonFieldReader::member(value, "opacity"))
         unchanged.opacity = fields.numberIn(*opacity, path + ".opacity", Interval{0.0, 1.0});
@@ -173,7 +178,10 @@ ordered_json compositorJson(const Scene& scene, const std::filesystem::path& sce
     if (unchanged) {
         ordered_json section;
         section["below"] = options.unchanged->automatic ? ordered_json("auto") : ordered_json(options.unchanged->below);
-        if (!options.unchanged->automatic) section["tie"] = options.unchanged->tie;
+        if (!options.unchanged->automatic) {
+            section["tie"] = options.unchanged->tie;
+            section["gain"] = options.unchanged->gain;
+        }
         section["opacity"] = options.unchanged->opacity;
         object["unchanged"] = section;
     }

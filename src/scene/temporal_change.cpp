@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "tstyles/data/density_sampling.h"
 #include "tstyles/scene/visible_bounds.h"
@@ -25,6 +26,8 @@ constexpr double kNoiseRangeProbability = 0.01;
 // independent Gaussian noise of standard deviation 1 (0.67449 sqrt 2, 0.67449 sqrt 6).
 constexpr double kMedianFirstDifference = 0.953873;
 constexpr double kMedianSecondDifference = 1.652097;
+// The changing places' opacity gain is at most this.
+constexpr double kMostGain = 8.0;
 
 double medianOf(std::vector<double> values) {
     const std::size_t middle = values.size() / 2;
@@ -100,8 +103,10 @@ void addChange(const std::vector<double>& densities, const Stf& stf, PlaceChange
     places.changes.push_back(*highest - *lowest);
     // The noise of what is seen: a place of the transparent background that noise lifts into the STF
     // now and then is not (its quieter noise would lower the estimate).
-    if (2 * visible >= valid.size())
+    if (2 * visible >= valid.size()) {
         places.noises.push_back(noiseOfPlace(valid));
+        places.noiseDensities.push_back(std::accumulate(valid.begin(), valid.end(), 0.0) / double(valid.size()));
+    }
 }
 
 double typicalOf(std::vector<double> changes) {
@@ -121,16 +126,44 @@ double noiseRangeQuantile(std::size_t count) {
     return 0.5 * (low + high);
 }
 
+int unchangedDensityBand(double density) {
+    return std::clamp(int(density * kUnchangedDensityBands), 0, kUnchangedDensityBands - 1);
+}
+
 UnchangedFit unchangedFitOf(const PlaceChanges& places, std::size_t stepCount) {
     const double share = kUnchangedShareOfChange * typicalOf(places.changes);
+    const double rangeQuantile = noiseRangeQuantile(stepCount);
+    const double tieQuantile = noiseRangeQuantile(2);
     const double noise = places.noises.empty() ? 0.0 : medianOf(places.noises);
-    return {std::clamp(std::max(share, noise * noiseRangeQuantile(stepCount)), 0.0, 1.0),
-            std::clamp(noise * noiseRangeQuantile(2), 0.0, 1.0)};
+    UnchangedFit fit;
+    fit.below = std::clamp(std::max(share, noise * rangeQuantile), 0.0, 1.0);
+    fit.tie = std::clamp(noise * tieQuantile, 0.0, 1.0);
+    std::vector<std::vector<double>> bandNoises(kUnchangedDensityBands);
+    for (std::size_t place = 0; place < places.noises.size(); ++place)
+        bandNoises[std::size_t(unchangedDensityBand(places.noiseDensities[place]))].push_back(places.noises[place]);
+    for (std::vector<double>& band : bandNoises) {
+        const bool ownNoise = stepCount >= kFewestStepsForBands && band.size() >= kFewestPlacesPerBand;
+        const double bandNoise = ownNoise ? medianOf(std::move(band)) : noise;
+        fit.belowByDensity.push_back(std::clamp(std::max(share, bandNoise * rangeQuantile), 0.0, 1.0));
+        fit.tieByDensity.push_back(std::clamp(bandNoise * tieQuantile, 0.0, 1.0));
+    }
+    const auto changing = std::count_if(places.changes.begin(), places.changes.end(),
+                                        [&](double change) { return change > fit.below; });
+    if (changing > 0)
+        fit.gain = std::clamp(std::cbrt(double(places.changes.size()) / double(changing)), 1.0, kMostGain);
+    return fit;
 }
 
 void takeFit(UnchangedTime& unchanged, const UnchangedFit& fit) {
     unchanged.below = fit.below;
     unchanged.tie = fit.tie;
+    unchanged.gain = fit.gain;
+    unchanged.belowByDensity = fit.belowByDensity;
+    unchanged.tieByDensity = fit.tieByDensity;
+}
+
+UnchangedFit fittedOf(const UnchangedTime& unchanged) {
+    return {unchanged.below, unchanged.tie, unchanged.gain, unchanged.belowByDensity, unchanged.tieByDensity};
 }
 
 PlaceChanges temporalChanges(const Series& series, const Stf& stf) {

@@ -113,6 +113,13 @@ void drawUnchangedPlaces(Scene& scene, const Series& series) {
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Unchanged places show the STF alone with this share of its opacity: 1 as the STF has it, 0 "
                           "transparent.");
+    const double lowestGain = 1.0;
+    const double highestGain = 8.0;
+    if (ImGui::SliderScalar("changed gain", ImGuiDataType_Double, &unchanged->gain, &lowestGain, &highestGain, "%.2f"))
+        unchanged->automatic = false;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Places that change show as if this many times as thick; \"auto\": the ratio of the ray "
+                          "lengths through all visible places and through the changing ones.");
 }
 
 // The options of the chosen compositor: a threshold, the two time-steps of a difference, or what

@@ -41,7 +41,7 @@ std::shared_ptr<const Series> fitSeries(Scene& scene, const std::vector<std::fil
             // Fitted to the STF's visible places: refit only when the STF changed.
             const auto& kept = current->scene.compositorOptions.unchanged;
             takeFit(*unchanged, kept && kept->automatic && current->scene.stf == scene.stf
-                                    ? UnchangedFit{kept->below, kept->tie}
+                                    ? fittedOf(*kept)
                                     : automaticUnchangedFit(scene, *current->series));
         }
         frame = current->frame;

@@ -104,12 +104,13 @@ TEST(CompositorScene, UnchangedPlacesAreReadAndWrittenBack) {
     EXPECT_NE(sceneToJson(fitted, kOrigin.parent_path()).find("\"below\": \"auto\""), std::string::npos);
 
     const Scene given = parseScene(
-        sceneWith(R"({"name": "time-of-max", "unchanged": {"below": 0.05, "tie": 0.01, "opacity": 0.25}})"),
+        sceneWith(R"({"name": "time-of-max", "unchanged": {"below": 0.05, "tie": 0.01, "gain": 2.5, "opacity": 0.25}})"),
         kOrigin);
     ASSERT_TRUE(given.compositorOptions.unchanged);
     EXPECT_FALSE(given.compositorOptions.unchanged->automatic);
     EXPECT_EQ(given.compositorOptions.unchanged->below, 0.05);
     EXPECT_EQ(given.compositorOptions.unchanged->tie, 0.01);
+    EXPECT_EQ(given.compositorOptions.unchanged->gain, 2.5);
     EXPECT_EQ(given.compositorOptions.unchanged->opacity, 0.25);
     EXPECT_EQ(roundTrip(given), given);
 
@@ -173,6 +174,9 @@ TEST(CompositorScene, BadCompositorObjectsNameTheField) {
         {sceneWith(R"({"name": "temporal-mip", "unchanged": {"tie": 0.1}})"),
          "compositor.unchanged.tie: is fitted with \"below\": \"auto\""},
         {sceneWith(R"({"name": "temporal-mip", "unchanged": {"below": 0.1, "tie": 2}})"), "compositor.unchanged.tie"},
+        {sceneWith(R"({"name": "temporal-mip", "unchanged": {"gain": 2}})"), "compositor.unchanged.gain: is fitted"},
+        {sceneWith(R"({"name": "temporal-mip", "unchanged": {"below": 0.1, "gain": 0.5}})"),
+         "compositor.unchanged.gain: must be in"},
         {sceneWith(R"({"name": "temporal-mip", "unchanged": {"opacity": -0.5}})"),
          "compositor.unchanged.opacity: must be in"},
         {sceneWith(R"({"name": "temporal-mip", "unchanged": {"shows": "grey"}})"), "compositor.unchanged"},

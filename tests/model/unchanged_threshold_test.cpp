@@ -87,6 +87,40 @@ TEST(UnchangedThreshold, ShortSeriesHaveTheirNoiseMeasuredToo) {
     }
 }
 
+TEST(UnchangedThreshold, NoisierValuesHaveTheirOwnThresholds) {
+    // Soft tissue around density 0.2 with noise 0.01, bone around 0.8 with noise 0.04 (a CT's): each
+    // band takes its own places' noise (each estimate within 10 % of 0.944 sigma, as above); a band
+    // without places takes the median of all.
+    PlaceChanges places;
+    const std::size_t count = 40;
+    for (auto place : noisyPlaces(600, count, 0.01)) {
+        for (double& value : place) value -= 0.3;
+        addChange(place, everythingVisible(), places);
+    }
+    for (auto place : noisyPlaces(400, count, 0.04)) {
+        for (double& value : place) value += 0.3;
+        addChange(place, everythingVisible(), places);
+    }
+    const UnchangedFit fit = unchangedFitOf(places, count);
+    ASSERT_EQ(fit.belowByDensity.size(), std::size_t(kUnchangedDensityBands));
+    // Three time-steps are too few to tell a band's noise from a step: every band the median's.
+    const UnchangedFit fromThree = unchangedFitOf(places, 3);
+    EXPECT_EQ(fromThree.belowByDensity[std::size_t(unchangedDensityBand(0.8))], fromThree.below);
+    const double quantile = noiseRangeQuantile(count);
+    const auto expectBand = [&](double density, double sigma) {
+        const auto band = std::size_t(unchangedDensityBand(density));
+        EXPECT_NEAR(fit.belowByDensity[band], 0.944 * sigma * quantile, 0.10 * sigma * quantile) << density;
+        EXPECT_NEAR(fit.tieByDensity[band], 0.944 * sigma * noiseRangeQuantile(2), 0.10 * sigma * 3.64) << density;
+    };
+    expectBand(0.2, 0.01);
+    expectBand(0.8, 0.04);
+    // The median of all places (in the upper part of soft tissue's, 600 of 1000) is the summary's
+    // and the empty bands'.
+    EXPECT_EQ(fit.belowByDensity[std::size_t(unchangedDensityBand(0.5))], fit.below);
+    EXPECT_GT(fit.below, fit.belowByDensity[std::size_t(unchangedDensityBand(0.2))]);
+    EXPECT_LT(fit.below, fit.belowByDensity[std::size_t(unchangedDensityBand(0.8))]);
+}
+
 TEST(UnchangedThreshold, ATenthOfTheTypicalLargestChangeWithoutNoise) {
     // Places that never change and places an event passes (change 0.6): 0.1 * 0.6.
     PlaceChanges places;

@@ -2,6 +2,7 @@
 // time colour where a place's densities do not change by more than `below`, nor where two
 // time-steps tie (within `tie`). The final image is the TSTF alone over an opaque white STF, so that
 // a pixel is white (the STF alone: no time colour), a time-step's pure colour, or transparent.
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -58,7 +59,13 @@ Scene pickingScene(TemporalCompositor compositor, std::optional<double> below, d
     scene.finalMode = FinalMode::Tstf;
     scene.indexTstf.curve.opacity = {{0.0, 1.0}};
     scene.indexTstf.curve.color = {{0.0, {1, 0, 0}}, {1.0, {0, 1, 0}}, {2.0, {0, 0, 1}}};
-    if (below) scene.compositorOptions.unchanged = UnchangedTime{false, *below, tie, 1.0};
+    if (below) {
+        UnchangedTime unchanged;
+        unchanged.automatic = false;
+        unchanged.below = *below;
+        unchanged.tie = tie;
+        scene.compositorOptions.unchanged = unchanged;
+    }
     return scene;
 }
 
@@ -112,11 +119,10 @@ TEST(UnchangedTimeRender, TiesNeverChooseAColour) {
                 "temporal-min");
     expectPixel(renderSeries(lowOnce, pickingScene(TemporalCompositor::Minimum, 0.0, 0.06)), kCentre, kWhite,
                 "temporal-min");
-    // A tie is a place that changes, at no one time: it keeps the STF's whole opacity where unchanged
-    // places are transparent.
-    Scene tiedButChanging = pickingScene(TemporalCompositor::TimeOfMaximum, 0.0);
-    tiedButChanging.compositorOptions.unchanged->opacity = 0.0;
-    expectPixel(renderSeries(peakTwice, tiedButChanging), kCentre, kWhite, "a tie, unchanged places transparent");
+    // A tie shows as an unchanged place does: transparent where they are.
+    Scene tiedTransparent = pickingScene(TemporalCompositor::TimeOfMaximum, 0.0);
+    tiedTransparent.compositorOptions.unchanged->opacity = 0.0;
+    expectPixel(renderSeries(peakTwice, tiedTransparent), kCentre, kTransparent, "a tie, unchanged places transparent");
 }
 
 TEST(UnchangedTimeRender, ArrivalsShowTimeWhereTheRangeExceedsTheThreshold) {
@@ -163,6 +169,23 @@ FrameOptions naive() {
     return options;
 }
 
+TEST(UnchangedTimeRender, PlacesThatChangeShowAsIfGainTimesAsThick) {
+    // STF opacity 0.25 per reference length modulated by an opaque index TSTF: a place that changes
+    // (first arrival at time-step 1, green) gathers 1 - 0.75^2 per reference length with a gain of 2,
+    // over the box's 7 reference lengths; an unchanged one (a constant series) 0.25, as the STF has it.
+    Scene scene = pickingScene(TemporalCompositor::FirstArrival, 0.1);
+    scene.compositorOptions.threshold = 0.5;
+    scene.compositorOptions.unchanged->gain = 2.0;
+    scene.stf.curve = constantFunction({1, 1, 1}, 0.25);
+    scene.finalMode = FinalMode::Modulate;
+    const float changed = float(slabOpacity(1.0 - 0.75 * 0.75, kConstantBoxWidth));
+    expectPixel(renderSeries(stackedBoxes({0.2f, 0.6f, 0.9f}), scene), kCentre,
+                glm::vec4(0.0f, changed, 0.0f, changed), "changes: as if twice as thick");
+    const float unchanged = float(slabOpacity(0.25, kConstantBoxWidth));
+    expectPixel(renderSeries(stackedBoxes({0.6f, 0.6f, 0.6f}), scene), kCentre,
+                glm::vec4(unchanged, unchanged, unchanged, unchanged), "unchanged: as the STF has it");
+}
+
 TEST(UnchangedTimeRender, AMovingBlobColoursOnlyItsPath) {
     // 24 x 4 x 4 voxels 0.1 apart over a background of 0.3; at time-step i a slab three voxels wide
     // (x = 1 + 4 i .. 3 + 4 i, through the whole depth) holds 0.9, so that it passes over fewer than
@@ -190,6 +213,9 @@ TEST(UnchangedTimeRender, AMovingBlobColoursOnlyItsPath) {
         // Changes of 0.6 on the path and 0 elsewhere; three values are too few for noise: 0.06.
         EXPECT_NEAR(fitted.compositorOptions.unchanged->below, 0.06, 1e-6);
         EXPECT_EQ(fitted.compositorOptions.unchanged->tie, 0.0);
+        // 384 visible places, 144 of them on the path: rays through the path are cbrt(384 / 144)
+        // times shorter.
+        EXPECT_NEAR(fitted.compositorOptions.unchanged->gain, std::cbrt(384.0 / 144.0), 1e-9);
         const auto at = [&](int voxelX) { return pixelOf({0.1 * voxelX, 0.15}, centre, viewHeight, kSize); };
         // Each walk over the time-steps: the packed groups (the series is aligned), the ray's list, naive.
         for (const auto& [walk, options] :

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -59,6 +60,7 @@ public:
     void set(const char* name, const glm::ivec3& value) const;
     void set(const char* name, const glm::mat3& value) const;
     void set(const char* name, const glm::mat4& value) const;
+    void set(const char* name, std::span<const float> values) const;  // a float array
 
 private:
     explicit Program(GLuint id) : handle_(id) {}

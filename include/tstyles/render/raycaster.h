@@ -12,6 +12,7 @@
 #include "tstyles/gl/objects.h"
 #include "tstyles/gl/program.h"
 #include "tstyles/render/raycast_variant.h"
+#include "tstyles/render/shader_contract.h"
 #include "tstyles/scene/scene.h"
 
 namespace tstyles {
@@ -36,9 +37,10 @@ struct RaycastParameters {
     glm::ivec2 compositorSteps{0};
     // CompositorOptions::unchanged (RaycastVariant::unchangedTime): the change up to which a place
     // is unchanged, the difference up to which two time-steps tie, and the share of the STF's
-    // opacity an unchanged place keeps.
-    float unchangedBelow = 0.0f;
-    float unchangedTie = 0.0f;
+    // opacity an unchanged place keeps; a changing place's opacity as if `changedGain` times as thick.
+    std::array<float, contract::UNCHANGED_DENSITY_BANDS> unchangedBelow{};  // per density band
+    std::array<float, contract::UNCHANGED_DENSITY_BANDS> unchangedTie{};
+    float changedGain = 1.0f;
     float unchangedOpacity = 1.0f;
     // The time-steps that take part, first and last inclusive (the scene's exposure, or a solo step).
     glm::ivec2 exposedSteps{0, std::numeric_limits<int>::max()};

@@ -59,9 +59,17 @@ struct UnchangedTime {
     bool automatic = true;
     double below = 0.0;  // a change in density units, [0, 1]
     double tie = 0.0;    // a difference in density units, [0, 1]: 0 leaves only exact ties
+    // Fitted: `below` and `tie` per band of density (contract::UNCHANGED_DENSITY_BANDS equal bands
+    // over [0, 1], by the density of the time-step a compositor picks), for data whose noise
+    // depends on the value; empty: `below` and `tie` everywhere.
+    std::vector<double> belowByDensity;
+    std::vector<double> tieByDensity;
     // An unchanged place shows the STF alone (no time colour) with this share of its opacity, in
     // [0, 1]: 1 as the STF has it, 0 transparent, between a faint neutral ghost.
     double opacity = 1.0;
+    // A place that changes shows as if `gain` times as thick ([1, 8]): the STF's opacity is fitted to
+    // rays through all of the visible data, and the changing part of it is thinner.
+    double gain = 1.0;
     bool operator==(const UnchangedTime&) const = default;
 };
 

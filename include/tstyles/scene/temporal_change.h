@@ -31,9 +31,21 @@ std::vector<glm::dvec3> changeLatticePoints(const Bounds& visible);
 struct PlaceChanges {
     std::vector<double> changes;  // each place's largest minus smallest density
     // Of the places visible in at least half of their values: the standard deviation of the noise
-    // in their densities (noiseOfPlace).
+    // in their densities (noiseOfPlace), and their mean density.
     std::vector<double> noises;
+    std::vector<double> noiseDensities;
 };
+
+// The density bands of UnchangedTime's fitted thresholds, and the band of a density.
+inline constexpr int kUnchangedDensityBands = 16;
+int unchangedDensityBand(double density);
+// A band's own noise is taken from this many places with noise up, in series of this many
+// time-steps up; else the median of all places. With three time-steps one step (40, 40, 120: a
+// lesion that grows) is as large as its noise estimate, and the places a change passes through
+// fill the bands between the two values: their noise would be the change's. From four up, a place
+// that steps once has a median first difference of 0.
+inline constexpr std::size_t kFewestPlacesPerBand = 32;
+inline constexpr std::size_t kFewestStepsForBands = 4;
 
 // The standard deviation of independent noise on a place's densities (in time order, with data),
 // told apart from real change by taking the smaller of two robust estimates: the median absolute
@@ -58,13 +70,22 @@ double typicalOf(std::vector<double> changes);
 // typical largest change, or more where the noise needs it: the range that the places' median
 // noise reaches over `stepCount` values at most once in a hundred; `tie`, the difference up to which
 // two time-steps tie, is what that noise puts between two equal values at most once in a hundred.
+// `gain` is the ratio of the ray lengths through all visible places and through the changing ones
+// (the cube root of their numbers), within [1, 8], so that a ray through the changing places
+// gathers about the opacity that one through all of them did. The same thresholds per density band,
+// from the noise of the places whose mean density is in the band, go into `belowByDensity` and
+// `tieByDensity`.
 struct UnchangedFit {
     double below = 0.0;
     double tie = 0.0;
+    double gain = 1.0;
+    std::vector<double> belowByDensity;
+    std::vector<double> tieByDensity;
 };
 UnchangedFit unchangedFitOf(const PlaceChanges& places, std::size_t stepCount);
-// `unchanged`'s thresholds set to the fit.
+// `unchanged`'s thresholds set to the fit, and back.
 void takeFit(UnchangedTime& unchanged, const UnchangedFit& fit);
+UnchangedFit fittedOf(const UnchangedTime& unchanged);
 
 // The range that `count` independent standard normal values exceed with probability 0.01.
 double noiseRangeQuantile(std::size_t count);
