@@ -5,9 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "annotation_panels.h"
 #include "box_annotations.h"
+#include "coastline.h"
 #include "layout_space.h"
 #include "legend_panels.h"
 #include "text_box.h"
@@ -17,6 +19,7 @@ namespace tstyles {
 namespace {
 
 constexpr glm::vec4 kLineText{1.0f, 1.0f, 1.0f, 1.0f};  // a title or caption
+constexpr glm::vec4 kCoastInk{0.85f, 0.85f, 0.8f, 0.9f};
 
 std::string captionText(const Scene& scene, glm::ivec2 steps, const std::vector<std::string>& labels) {
     std::string text = toString(scene.compositor) + " \u00b7 ";
@@ -135,6 +138,14 @@ AnnotationPlan planAnnotations(glm::ivec2 imageSize, const Scene& scene, const S
     for (const PanelDraft& legend : legends) placePanel(space, legendCorner, legend, plan);
     if (wanted.scaleBar) placeScaleBar(space, m, series, frame, view, plan);
     if (wanted.box) placeBox(space, m, scene, series, frame, view, plan);
+    if (wanted.coast) {
+        // Under the box and every element: the coast lies on the picture itself.
+        auto segments = std::make_shared<const std::vector<WorldSegment>>(coastSegments(series));
+        plan.drawUnderlay = [segments, box = std::move(plan.drawUnderlay), &view](Canvas& canvas) {
+            drawCoast(canvas, *segments, view, kCoastInk);
+            if (box) box(canvas);
+        };
+    }
     return plan;
 }
 

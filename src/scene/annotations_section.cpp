@@ -30,7 +30,7 @@ std::vector<std::string> cornerNames() { return allNames(cornerNameTable); }
 
 Annotations readAnnotations(const JsonFieldReader& fields, const json& value) {
     const std::string path = "annotations";
-    fields.expectObject(value, path, {"legend", "title", "caption", "box", "scale_bar", "font_size"});
+    fields.expectObject(value, path, {"legend", "title", "caption", "box", "scale_bar", "coast", "font_size"});
     Annotations annotations;
     if (const json* legend = JsonFieldReader::member(value, "legend")) {
         const std::string legendPath = childPath(path, "legend");
@@ -54,6 +54,8 @@ Annotations readAnnotations(const JsonFieldReader& fields, const json& value) {
         annotations.box = readSwitch(fields, *box, childPath(path, "box"));
     if (const json* scaleBar = JsonFieldReader::member(value, "scale_bar"))
         annotations.scaleBar = readSwitch(fields, *scaleBar, childPath(path, "scale_bar"));
+    if (const json* coast = JsonFieldReader::member(value, "coast"))
+        annotations.coast = readSwitch(fields, *coast, childPath(path, "coast"));
     if (const json* fontSize = JsonFieldReader::member(value, "font_size"))
         annotations.fontSize = fields.numberIn(*fontSize, childPath(path, "font_size"), {4.0, 200.0});
     return annotations;
@@ -67,6 +69,7 @@ nlohmann::ordered_json annotationsJson(const Annotations& annotations) {
     result["caption"] = annotations.caption;
     result["box"] = annotations.box;
     result["scale_bar"] = annotations.scaleBar;
+    if (annotations.coast) result["coast"] = true;  // written where it is on: scenes before it stay as they were
     result["font_size"] = annotations.fontSize;
     return result;
 }

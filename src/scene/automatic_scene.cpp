@@ -107,6 +107,10 @@ AutomaticScene automaticScene(const Series& series, const std::filesystem::path&
     scene.camera.pose = automaticOrbit(kind);
     scene.camera.framing = Framing::Visible;
     result.explanation.push_back("camera: " + kindText(kind) + ", framed on the visible data");
+    // A map's land is the missing values at its surface: the coast drawn where they meet the data.
+    scene.annotations.coast = kind == DataKind::Geographic;
+    if (kind == DataKind::Geographic)
+        result.explanation.push_back("coast: a line where the surface's missing values (land) meet its data");
 
     scene.stf.curve.opacity = opacityNodes(window);
     scene.stf.curve.color = {ColorNode{0.0, glm::dvec3(1.0), kNeutralStyle}};

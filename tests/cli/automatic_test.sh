@@ -26,6 +26,7 @@ case_info_explains() {
     expect_stdout_contains "orientation: right = +x (lon, east), up = +z (depth, up), toward the viewer = -y (lat, north)"
     expect_stdout_contains "aspect: map (the axes' units differ: degrees_east, m, degrees_north)"
     expect_stdout_contains "camera: geographic: seen from above, north up"
+    expect_stdout_contains "unchanged places: no time colour and 0.15 of the opacity"
     run_tstyles -- info "$SCRATCH/data/ct-phantom.nii"
     expect_exit 0
     expect_stdout_contains "transparent"
@@ -58,6 +59,38 @@ case_scene_refits_other_dataset() {
     expect_exit 0
     expect_image "$SCRATCH/eddy.png" 64 64
     expect_stdout_contains "6 time-steps"
+}
+
+# Unchanged places from the command line: off, a number with an opacity share, and each refusal
+# naming its option, with nothing written.
+case_unchanged_options() {
+    write_samples
+    run_tstyles -- scene "$SCRATCH/data/ct-phantom.nii" -o "$SCRATCH/auto.json"
+    expect_exit 0
+    grep -q '"below": "auto"' "$SCRATCH/auto.json" || fail "the automatic scene has no fitted unchanged places"
+    run_tstyles -- scene "$SCRATCH/data/ct-phantom.nii" -o "$SCRATCH/off.json" --unchanged off
+    expect_exit 0
+    grep -q '"unchanged"' "$SCRATCH/off.json" && fail "--unchanged off wrote unchanged places"
+    run_tstyles -- scene "$SCRATCH/data/ct-phantom.nii" -o "$SCRATCH/given.json" --unchanged 0.05 \
+        --unchanged-opacity 0.3
+    expect_exit 0
+    grep -q '"below": 0.05' "$SCRATCH/given.json" || fail "--unchanged 0.05 not in the scene"
+    grep -q '"opacity": 0.3' "$SCRATCH/given.json" || fail "--unchanged-opacity 0.3 not in the scene"
+    run_tstyles -- render "$SCRATCH/given.json" -o "$SCRATCH/given.png" --width 64 --height 64
+    expect_exit 0
+    run_tstyles -- render "$SCRATCH/data/ct-phantom.nii" -o "$SCRATCH/out.png" --unchanged 2
+    expect_exit 2
+    expect_stderr_contains "--unchanged: must be in [0, 1], got 2"
+    run_tstyles -- render "$SCRATCH/data/ct-phantom.nii" -o "$SCRATCH/out.png" --unchanged-opacity 1.5
+    expect_exit 2
+    expect_stderr_contains "--unchanged-opacity: must be in [0, 1], got 1.5"
+    run_tstyles -- render "$SCRATCH/data/ct-phantom.nii" -o "$SCRATCH/out.png" --tc temporal-average --unchanged 0.1
+    expect_exit 2
+    expect_stderr_contains "--unchanged: temporal-average does not pick a time-step"
+    run_tstyles -- render "$SCRATCH/data/ct-phantom.nii" -o "$SCRATCH/out.png" --unchanged off --unchanged-opacity 0.2
+    expect_exit 2
+    expect_stderr_contains "--unchanged-opacity: says how unchanged places show, but --unchanged is off"
+    expect_no_output "$SCRATCH/out.png"
 }
 
 case_bad_aspect_option() {

@@ -21,10 +21,13 @@ struct Annotations {
     bool caption = false;  // the compositor, the exposed time-steps and their time range
     bool box = false;      // the series' bounding box with ticks in the data's units
     bool scaleBar = false;
+    // A map's coast: the edge between the surface's missing values (land) and its data, drawn at
+    // the surface (src/annotate/coastline.h).
+    bool coast = false;
     // Text height in pixels on a 512-pixel-high image; larger and smaller images scale it.
     double fontSize = 13.0;
     bool operator==(const Annotations&) const = default;
-    bool any() const { return legend || !title.empty() || caption || box || scaleBar; }
+    bool any() const { return legend || !title.empty() || caption || box || scaleBar || coast; }
 };
 
 }  // namespace tstyles
