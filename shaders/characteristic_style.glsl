@@ -25,7 +25,15 @@ vec4 styledCharacteristic(TemporalCharacteristic c, vec3 position, inout int fet
         TimeStepSample neutral = c.representative;
         neutral.inMask = false;
         vec4 stf = styledFinal(neutral, position, vec4(0.0), INDEX_TSTF_TRACK, 0.0, fetches);
-        return vec4(stf.rgb, stf.a * unchangedOpacity);
+        float share = unchangedOpacity;
+        if (unchangedBoundary > 0.0) {
+            // Boundaries stay, regions of one value fade to UNCHANGED_INTERIOR of the share (6
+            // fetches; 1 with precomputed gradients).
+            fetches += PRECOMPUTED_GRADIENTS != 0 ? 1 : 6;
+            float steepness = clamp(length(worldGradient(neutral.step, position)) / unchangedBoundary, 0.0, 1.0);
+            share *= mix(UNCHANGED_INTERIOR, 1.0, steepness);
+        }
+        return vec4(stf.rgb, stf.a * share);
     }
     // READS_STF: the representative's STF alone, as final processing shows it outside a mask.
     TimeStepSample shown = c.representative;

@@ -97,6 +97,11 @@ uniform float unchangedTie[UNCHANGED_DENSITY_BANDS];
 uniform float unchangedOpacity;
 // A place whose time shows is as opaque as if this many times as thick (CompositorOptions::unchanged's gain).
 uniform float changedGain;
+// An unchanged place keeps its whole share where the value gradient is this steep (density per world
+// length), down to UNCHANGED_INTERIOR of it where the value is flat; 0: the whole share everywhere
+// (CompositorOptions::unchanged's boundary).
+uniform float unchangedBoundary;
+const float UNCHANGED_INTERIOR = 0.25;
 
 // The characteristic of the time-step a compositor picked, where the densities at the sample span
 // `range` and the pick is ahead of the runner-up by `margin` (pass a margin above every tie where

@@ -72,6 +72,7 @@ std::optional<UnchangedTime> unchangedFromOptions(const Scene& scene, const Scen
         if (!kept->automatic) {
             unchanged["tie"] = kept->tie;
             unchanged["gain"] = kept->gain;
+            unchanged["boundary"] = kept->boundary;
         }
         unchanged["opacity"] = kept->opacity;
     }
@@ -80,6 +81,7 @@ std::optional<UnchangedTime> unchangedFromOptions(const Scene& scene, const Scen
         if (unchanged["below"] == "auto") {
             unchanged.erase("tie");
             unchanged.erase("gain");
+            unchanged.erase("boundary");
         }
     }
     if (overrides.unchangedOpacity) unchanged["opacity"] = *overrides.unchangedOpacity;

@@ -9,6 +9,7 @@
 #include "tstyles/data/grid_axes.h"
 #include "tstyles/scene/automatic_opacity.h"
 #include "tstyles/scene/automatic_scene.h"
+#include "tstyles/scene/boundary_gradient.h"
 #include "tstyles/scene/temporal_change.h"
 #include "tstyles/scene/visible_bounds.h"
 
@@ -173,8 +174,16 @@ SceneFittedOverBlocks fitOverBlocks(const MpiSession& mpi, const BlockDecomposit
             scene.gradientTstf.rangeLow = low;
             scene.gradientTstf.rangeHigh = high;
         }
-        if (fitsUnchanged)
-            takeFit(*scene.compositorOptions.unchanged, unchangedFitOf(places, displayOutline.size()));
+        if (fitsUnchanged) {
+            // The value gradient within each process's block (its faces one-sided), gathered.
+            std::vector<double> magnitudes;
+            if (!block.series.steps.empty())
+                addGradientMagnitudes(block.series.steps.front(), scene.stf, changeNodeStride(displayOutline),
+                                      magnitudes);
+            UnchangedFit fit = unchangedFitOf(places, displayOutline.size());
+            fit.boundary = boundaryGradientOf(mpi.gathered(magnitudes));
+            takeFit(*scene.compositorOptions.unchanged, fit);
+        }
     }
     const Bounds framed = scene.camera.framing == Framing::Visible ? visible : framedOutline;
     return {std::move(scene), framed};

@@ -42,7 +42,9 @@ void readAll(int fd, void* data, std::size_t count, std::uint64_t offset) {
 
 Image readImageIsolated(const std::filesystem::path& file, std::uint64_t maxBytes) {
     if (readingInProcessRequested()) return readImage(file, maxBytes);
-    IsolationLimits limits;
+    // The series readers' deadline (30 s of silence, longer under a sanitizer): a viewer on a loaded
+    // two-core machine was once silent for over 10 s while reading a bundled style.
+    IsolationLimits limits = isolationLimitsFor({file}, ReadOptions{});
     limits.memoryBytes = 2 * maxBytes + (std::uint64_t(1) << 30);
     const IsolatedResult result = runIsolated(
         file,

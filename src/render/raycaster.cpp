@@ -139,6 +139,7 @@ void Raycaster::draw(const RaycastVariant& variant, const RaycastParameters& par
         program.set("unchangedBelow", std::span<const float>(parameters.unchangedBelow));
         program.set("unchangedTie", std::span<const float>(parameters.unchangedTie));
         program.set("changedGain", parameters.changedGain);
+        program.set("unchangedBoundary", parameters.unchangedBoundary);
         program.set("unchangedOpacity", parameters.unchangedOpacity);
     }
     if (variant.walk == TimeStepWalk::PackedGroups) {

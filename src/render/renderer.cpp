@@ -133,6 +133,7 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
                 float(unchanged->tieByDensity.size() > at ? unchanged->tieByDensity[at] : unchanged->tie);
         }
         parameters.changedGain = float(unchanged->gain);
+        parameters.unchangedBoundary = float(unchanged->boundary);
         parameters.unchangedOpacity = float(unchanged->opacity);
     }
     if (compositorInfo(scene.compositor).takesSteps)

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "tstyles/scene/automatic_opacity.h"
+#include "tstyles/scene/boundary_gradient.h"
 #include "tstyles/scene/temporal_change.h"
 #include "tstyles/scene/temporal_compositors.h"
 #include "tstyles/scene/visible_bounds.h"
@@ -17,8 +18,9 @@ namespace {
 
 // The neutral lit-sphere style that gives the first picture its shading.
 constexpr const char* kNeutralStyle = "matte-white";
-// Unchanged places keep this share of the STF's opacity: a faint ghost of the data around what changes.
-constexpr double kUnchangedOpacity = 0.15;
+// Unchanged places keep this share of the STF's opacity on their boundaries (a quarter of it inside
+// regions of one value): a faint ghost of the data's structure around what changes.
+constexpr double kUnchangedOpacity = 0.35;
 
 std::string number(double value) {
     std::ostringstream text;
@@ -128,9 +130,10 @@ AutomaticScene automaticScene(const Series& series, const std::filesystem::path&
     scene.compositorOptions.unchanged->opacity = kUnchangedOpacity;
     result.explanation.push_back(
         "unchanged places: no time colour and " + number(kUnchangedOpacity) +
-        " of the opacity where a place's values change by no more than a threshold fitted to the data (a tenth of "
-        "the typical largest change, or above the noise); no time colour where two time-steps tie; what changes "
-        "as opaque as the STF makes a ray through all the data");
+        " of the opacity on boundaries (a quarter of that inside regions of one value) where a place's values "
+        "change by no more than a threshold fitted to the data (a tenth of the typical largest change, or above the "
+        "noise); no time colour where two time-steps tie; what changes as opaque as the STF makes a ray through all "
+        "the data");
     return result;
 }
 
@@ -143,7 +146,9 @@ std::pair<double, double> automaticGradientRange(const Scene& scene, const Serie
 }
 
 UnchangedFit automaticUnchangedFit(const Scene& scene, const Series& series) {
-    return unchangedFitOf(temporalChanges(series, scene.stf), series.size());
+    UnchangedFit fit = unchangedFitOf(temporalChanges(series, scene.stf), series.size());
+    fit.boundary = boundaryGradientOf(gradientMagnitudes(series, scene.stf));
+    return fit;
 }
 
 std::pair<double, double> gradientRangeForChange(const Scene& scene, const Series& series, double change) {
@@ -172,7 +177,11 @@ Scene fitAutomaticParts(Scene scene, const Series& display) {
         scene.gradientTstf.rangeLow = low;
         scene.gradientTstf.rangeHigh = high;
     }
-    if (fitsUnchanged) takeFit(*scene.compositorOptions.unchanged, unchangedFitOf(places, display.size()));
+    if (fitsUnchanged) {
+        UnchangedFit fit = unchangedFitOf(places, display.size());
+        fit.boundary = boundaryGradientOf(gradientMagnitudes(display, scene.stf));
+        takeFit(*scene.compositorOptions.unchanged, fit);
+    }
     return scene;
 }
 

@@ -5,6 +5,7 @@
 // {"name": "temporal-mip", "unchanged": {"below": "auto", "opacity": 0.2}}.
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "custom_compositor_check.h"
@@ -38,7 +39,7 @@ std::string readsName(CompositorReads reads) {
 // (with a number for "below"), "opacity": the share of the STF's opacity kept}, all optional.
 UnchangedTime readUnchanged(const JsonFieldReader& fields, const json& value) {
     const std::string path = "compositor.unchanged";
-    fields.expectObject(value, path, {"below", "tie", "gain", "opacity"});
+    fields.expectObject(value, path, {"below", "tie", "gain", "boundary", "opacity"});
     UnchangedTime unchanged;
     if (const json* below = JsonFieldReader::member(value, "below")) {
         if (below->is_string()) {
@@ -59,6 +60,13 @@ UnchangedTime readUnchanged(const JsonFieldReader& fields, const json& value) {
         if (unchanged.automatic)
             fields.fail(path + ".gain", "is fitted with \"below\": \"auto\"; give \"below\" as a number with it");
         unchanged.gain = fields.numberIn(*gain, path + ".gain", Interval{1.0, 8.0});
+    }
+    if (const json* boundary = JsonFieldReader::member(value, "boundary")) {
+        if (unchanged.automatic)
+            fields.fail(path + ".boundary",
+                        "is fitted with \"below\": \"auto\"; give \"below\" as a number with it");
+        unchanged.boundary = fields.numberIn(*boundary, path + ".boundary",
+                                             Interval{0.0, std::numeric_limits<double>::max()});
     }
     if (const json* opacity = JsonFieldReader::member(value, "opacity"))
         unchanged.opacity = fields.numberIn(*opacity, path + ".opacity", Interval{0.0, 1.0});
@@ -181,6 +189,7 @@ ordered_json compositorJson(const Scene& scene, const std::filesystem::path& sce
         if (!options.unchanged->automatic) {
             section["tie"] = options.unchanged->tie;
             section["gain"] = options.unchanged->gain;
+            section["boundary"] = options.unchanged->boundary;
         }
         section["opacity"] = options.unchanged->opacity;
         object["unchanged"] = section;

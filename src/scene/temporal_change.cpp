@@ -158,12 +158,14 @@ void takeFit(UnchangedTime& unchanged, const UnchangedFit& fit) {
     unchanged.below = fit.below;
     unchanged.tie = fit.tie;
     unchanged.gain = fit.gain;
+    unchanged.boundary = fit.boundary;
     unchanged.belowByDensity = fit.belowByDensity;
     unchanged.tieByDensity = fit.tieByDensity;
 }
 
 UnchangedFit fittedOf(const UnchangedTime& unchanged) {
-    return {unchanged.below, unchanged.tie, unchanged.gain, unchanged.belowByDensity, unchanged.tieByDensity};
+    return {unchanged.below,    unchanged.tie,           unchanged.gain,
+            unchanged.boundary, unchanged.belowByDensity, unchanged.tieByDensity};
 }
 
 PlaceChanges temporalChanges(const Series& series, const Stf& stf) {

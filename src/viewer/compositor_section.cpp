@@ -120,6 +120,13 @@ void drawUnchangedPlaces(Scene& scene, const Series& series) {
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Places that change show as if this many times as thick; \"auto\": the ratio of the ray "
                           "lengths through all visible places and through the changing ones.");
+    const double flattest = 0.0;
+    if (ImGui::DragScalar("boundary", ImGuiDataType_Double, &unchanged->boundary, 0.01f, &flattest, nullptr, "%.3f"))
+        unchanged->automatic = false;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Unchanged places keep their whole share of opacity where the value gradient is this steep "
+                          "(density per length), less where it is flatter: regions of one value fade, boundaries "
+                          "stay; 0: everywhere. \"auto\": the 99th percentile of the visible places' gradient.");
 }
 
 // The options of the chosen compositor: a threshold, the two time-steps of a difference, or what

@@ -26,7 +26,7 @@ case_info_explains() {
     expect_stdout_contains "orientation: right = +x (lon, east), up = +z (depth, up), toward the viewer = -y (lat, north)"
     expect_stdout_contains "aspect: map (the axes' units differ: degrees_east, m, degrees_north)"
     expect_stdout_contains "camera: geographic: seen from above, north up"
-    expect_stdout_contains "unchanged places: no time colour and 0.15 of the opacity"
+    expect_stdout_contains "unchanged places: no time colour and 0.35 of the opacity on boundaries"
     run_tstyles -- info "$SCRATCH/data/ct-phantom.nii"
     expect_exit 0
     expect_stdout_contains "transparent"

@@ -104,13 +104,15 @@ TEST(CompositorScene, UnchangedPlacesAreReadAndWrittenBack) {
     EXPECT_NE(sceneToJson(fitted, kOrigin.parent_path()).find("\"below\": \"auto\""), std::string::npos);
 
     const Scene given = parseScene(
-        sceneWith(R"({"name": "time-of-max", "unchanged": {"below": 0.05, "tie": 0.01, "gain": 2.5, "opacity": 0.25}})"),
+        sceneWith(R"({"name": "time-of-max", "unchanged": {"below": 0.05, "tie": 0.01, "gain": 2.5, "boundary": 3.5,
+                                                 "opacity": 0.25}})"),
         kOrigin);
     ASSERT_TRUE(given.compositorOptions.unchanged);
     EXPECT_FALSE(given.compositorOptions.unchanged->automatic);
     EXPECT_EQ(given.compositorOptions.unchanged->below, 0.05);
     EXPECT_EQ(given.compositorOptions.unchanged->tie, 0.01);
     EXPECT_EQ(given.compositorOptions.unchanged->gain, 2.5);
+    EXPECT_EQ(given.compositorOptions.unchanged->boundary, 3.5);
     EXPECT_EQ(given.compositorOptions.unchanged->opacity, 0.25);
     EXPECT_EQ(roundTrip(given), given);
 
@@ -168,13 +170,18 @@ TEST(CompositorScene, BadCompositorObjectsNameTheField) {
         {sceneWith(R"({"glsl": "  \n", "reads": "index-tstf"})"), "compositor.glsl: the compositor's code is empty"},
         {sceneWith(R"({"file": "nowhere.glsl", "reads": "index-tstf"})"), "compositor.file: no such file"},
         {sceneWith("42"), "compositor: expected a name or an object"},
-        {sceneWith(R"({"name": "temporal-mip", "unchanged": {"below": 1.5}})"), "compositor.unchanged.below: must be in"},
+        {sceneWith(R"({"name": "temporal-mip", "unchanged": {"below": 1.5}})"),
+         "compositor.unchanged.below: must be in"},
         {sceneWith(R"({"name": "temporal-mip", "unchanged": {"below": "fit"}})"),
          "compositor.unchanged.below: expected \"auto\""},
         {sceneWith(R"({"name": "temporal-mip", "unchanged": {"tie": 0.1}})"),
          "compositor.unchanged.tie: is fitted with \"below\": \"auto\""},
         {sceneWith(R"({"name": "temporal-mip", "unchanged": {"below": 0.1, "tie": 2}})"), "compositor.unchanged.tie"},
         {sceneWith(R"({"name": "temporal-mip", "unchanged": {"gain": 2}})"), "compositor.unchanged.gain: is fitted"},
+        {sceneWith(R"({"name": "temporal-mip", "unchanged": {"boundary": 2}})"),
+         "compositor.unchanged.boundary: is fitted"},
+        {sceneWith(R"({"name": "temporal-mip", "unchanged": {"below": 0.1, "boundary": -1}})"),
+         "compositor.unchanged.boundary"},
         {sceneWith(R"({"name": "temporal-mip", "unchanged": {"below": 0.1, "gain": 0.5}})"),
          "compositor.unchanged.gain: must be in"},
         {sceneWith(R"({"name": "temporal-mip", "unchanged": {"opacity": -0.5}})"),

@@ -8,40 +8,14 @@
 #include <gtest/gtest.h>
 
 #include "render_test_support.h"
+#include "stacked_boxes.h"
 
 namespace tstyles::testing {
 namespace {
 
-constexpr int kSize = 64;
-constexpr double kViewHeight = 2.0;
-const glm::dvec2 kCentre(0.35, 0.35);
-// As in analytic_render_test.cpp: densities through 16-bit textures, transfer functions through
-// 1024-entry tables, float arithmetic along the ray.
-constexpr float kTolerance = 2e-3f;
-
-const glm::vec4 kRed{1, 0, 0, 1};
-const glm::vec4 kGreen{0, 1, 0, 1};
-const glm::vec4 kBlue{0, 0, 1, 1};
-const glm::vec4 kTransparent{0, 0, 0, 0};
-
-void expectPixel(const Image& image, glm::dvec2 world, glm::vec4 expected, const std::string& what) {
-    const glm::ivec2 pixel = pixelOf(world, kCentre, kViewHeight, kSize);
-    const glm::vec4 actual = image.at(pixel.x, pixel.y);
-    for (int c = 0; c < 4; ++c)
-        EXPECT_NEAR(actual[c], expected[c], kTolerance)
-            << what << " at pixel (" << pixel.x << ", " << pixel.y << ") channel " << c;
-}
-
-// Boxes over one another at the origin, one per time-step, with these densities.
-Series stackedBoxes(const std::vector<float>& densities) {
-    std::vector<BoxSpec> boxes;
-    for (float density : densities) boxes.push_back(constantBox({0, 0, 0}, density));
-    return makeSeries(boxes);
-}
-
 // Every sample opaque in the STF, the final image the TSTF alone: a pixel is the TSTF's colour.
 Scene tstfScene(TemporalCompositor compositor) {
-    Scene scene = orthographicSceneLookingDownZ(kCentre, kViewHeight, kSize);
+    Scene scene = orthographicSceneLookingDownZ(kStackCentre, kStackViewHeight, kStackSize);
     scene.stf.curve = constantFunction({1, 1, 1}, 1.0);
     scene.compositor = compositor;
     scene.finalMode = FinalMode::Tstf;
@@ -72,11 +46,11 @@ TEST(CompositorRender, TemporalMinimumShowsTheLowestDensitysTimeStep) {
     const Series series = stackedBoxes({0.5f, 0.2f, 0.7f});
     Scene scene = tstfScene(TemporalCompositor::Minimum);
     colourEachStep(scene);
-    expectPixel(renderSeries(series, scene), kCentre, kGreen, "time-step 1 is lowest");
+    expectStackPixel(renderSeries(series, scene), kStackCentre, kGreen, "time-step 1 is lowest");
     // Where the lowest density is transparent in the STF, nothing shows: what persists through
     // the whole series, not the most visible time-step.
     scene.stf.curve.opacity = {{0.0, 0.0}, {0.29, 0.0}, {0.3, 1.0}};
-    expectPixel(renderSeries(series, scene), kCentre, kTransparent, "the lowest is below the STF");
+    expectStackPixel(renderSeries(series, scene), kStackCentre, kTransparent, "the lowest is below the STF");
 }
 
 TEST(CompositorRender, TimeOfMaximumShowsTheHighestDensitysTimeStepWhateverItsOpacity) {
@@ -86,12 +60,12 @@ TEST(CompositorRender, TimeOfMaximumShowsTheHighestDensitysTimeStepWhateverItsOp
     Scene scene = tstfScene(TemporalCompositor::TimeOfMaximum);
     scene.stf.curve.opacity = {{0.0, 1.0}, {1.0, 0.1}};
     colourEachStep(scene);
-    expectPixel(renderSeries(series, scene), kCentre, kGreen, "time-step 1 is densest");
+    expectStackPixel(renderSeries(series, scene), kStackCentre, kGreen, "time-step 1 is densest");
     scene.compositor = TemporalCompositor::MaxIntensityProjection;
-    expectPixel(renderSeries(series, scene), kCentre, kRed, "temporal MIP: time-step 0 is most opaque");
+    expectStackPixel(renderSeries(series, scene), kStackCentre, kRed, "temporal MIP: time-step 0 is most opaque");
     // A tie goes to the earlier time-step.
     scene.compositor = TemporalCompositor::TimeOfMaximum;
-    expectPixel(renderSeries(stackedBoxes({0.8f, 0.3f, 0.8f}), scene), kCentre, kRed, "tie: time-step 0");
+    expectStackPixel(renderSeries(stackedBoxes({0.8f, 0.3f, 0.8f}), scene), kStackCentre, kRed, "tie: time-step 0");
 }
 
 TEST(CompositorRender, FirstArrivalShowsTheFirstTimeStepAtTheThreshold) {
@@ -99,13 +73,13 @@ TEST(CompositorRender, FirstArrivalShowsTheFirstTimeStepAtTheThreshold) {
     Scene scene = tstfScene(TemporalCompositor::FirstArrival);
     colourEachStep(scene);
     scene.compositorOptions.threshold = 0.5;
-    expectPixel(renderSeries(series, scene), kCentre, kGreen, "0.6 >= 0.5 first at time-step 1");
+    expectStackPixel(renderSeries(series, scene), kStackCentre, kGreen, "0.6 >= 0.5 first at time-step 1");
     scene.compositorOptions.threshold = 0.9;  // "at or above"
-    expectPixel(renderSeries(series, scene), kCentre, kBlue, "0.9 reaches 0.9 at time-step 2");
+    expectStackPixel(renderSeries(series, scene), kStackCentre, kBlue, "0.9 reaches 0.9 at time-step 2");
     scene.compositorOptions.threshold = 0.1;
-    expectPixel(renderSeries(series, scene), kCentre, kRed, "every time-step reaches 0.1");
+    expectStackPixel(renderSeries(series, scene), kStackCentre, kRed, "every time-step reaches 0.1");
     scene.compositorOptions.threshold = 0.95;
-    expectPixel(renderSeries(series, scene), kCentre, kTransparent, "none reaches 0.95");
+    expectStackPixel(renderSeries(series, scene), kStackCentre, kTransparent, "none reaches 0.95");
 }
 
 TEST(CompositorRender, LastAboveShowsTheLastTimeStepAtTheThreshold) {
@@ -113,11 +87,11 @@ TEST(CompositorRender, LastAboveShowsTheLastTimeStepAtTheThreshold) {
     Scene scene = tstfScene(TemporalCompositor::LastAbove);
     colourEachStep(scene);
     scene.compositorOptions.threshold = 0.5;
-    expectPixel(renderSeries(series, scene), kCentre, kGreen, "0.6 >= 0.5 last at time-step 1");
+    expectStackPixel(renderSeries(series, scene), kStackCentre, kGreen, "0.6 >= 0.5 last at time-step 1");
     scene.compositorOptions.threshold = 0.1;
-    expectPixel(renderSeries(series, scene), kCentre, kBlue, "every time-step reaches 0.1");
+    expectStackPixel(renderSeries(series, scene), kStackCentre, kBlue, "every time-step reaches 0.1");
     scene.compositorOptions.threshold = 0.95;
-    expectPixel(renderSeries(series, scene), kCentre, kTransparent, "none reaches 0.95");
+    expectStackPixel(renderSeries(series, scene), kStackCentre, kTransparent, "none reaches 0.95");
 }
 
 TEST(CompositorRender, StandardDeviationOfKnownDensities) {
@@ -130,18 +104,18 @@ TEST(CompositorRender, StandardDeviationOfKnownDensities) {
     const double deviation = std::sqrt(variance);                         // 0.2944
     Scene scene = tstfScene(TemporalCompositor::StandardDeviation);
     rampOver(scene, 0.0, 0.5);
-    expectPixel(renderSeries(series, scene), kCentre, rampColour(deviation, 0.0, 0.5), "standard deviation");
+    expectStackPixel(renderSeries(series, scene), kStackCentre, rampColour(deviation, 0.0, 0.5), "standard deviation");
 }
 
 TEST(CompositorRender, LinearTrendIsTheSlopeOverTheTimeStamps) {
     Scene scene = tstfScene(TemporalCompositor::LinearTrend);
     // Densities 0.2, 0.4, 0.6 at times 0, 1, 2: 0.2 per unit time, the middle of [0, 0.4].
     rampOver(scene, 0.0, 0.4);
-    expectPixel(renderSeries(stackedBoxes({0.2f, 0.4f, 0.6f}), scene), kCentre, {0.5f, 0.75f, 0.0f, 1.0f},
+    expectStackPixel(renderSeries(stackedBoxes({0.2f, 0.4f, 0.6f}), scene), kStackCentre, {0.5f, 0.75f, 0.0f, 1.0f},
                 "slope 0.2");
     // Falling: -0.2 per unit time on the signed range [-0.4, 0.4].
     rampOver(scene, -0.4, 0.4);
-    expectPixel(renderSeries(stackedBoxes({0.6f, 0.4f, 0.2f}), scene), kCentre, rampColour(-0.2, -0.4, 0.4),
+    expectStackPixel(renderSeries(stackedBoxes({0.6f, 0.4f, 0.2f}), scene), kStackCentre, rampColour(-0.2, -0.4, 0.4),
                 "slope -0.2");
     // Uneven stamps far from 0: the least-squares slope over the stamps, not over the indices.
     Series uneven = stackedBoxes({0.2f, 0.4f, 0.6f});
@@ -154,7 +128,7 @@ TEST(CompositorRender, LinearTrendIsTheSlopeOverTheTimeStamps) {
         covariance += (times[i] - meanTime) * (densities[i] - 0.4);
         timeVariance += (times[i] - meanTime) * (times[i] - meanTime);
     }
-    expectPixel(renderSeries(uneven, scene), kCentre, rampColour(covariance / timeVariance, -0.4, 0.4),
+    expectStackPixel(renderSeries(uneven, scene), kStackCentre, rampColour(covariance / timeVariance, -0.4, 0.4),
                 "slope over uneven stamps (0.0643)");
 }
 
@@ -169,15 +143,15 @@ TEST(CompositorRender, DifferenceOfTwoChosenTimeStepsIsSigned) {
     const glm::dvec2 withoutStep2(0.15, 0.35);
     // No steps given: from the first time-step to the last, density(2) - density(0) = -0.5.
     const Image firstToLast = renderSeries(series, scene);
-    expectPixel(firstToLast, overlap, rampColour(-0.5, -1.0, 1.0), "0.2 - 0.7");
-    expectPixel(firstToLast, withoutStep2, kTransparent, "time-step 2 has no data there");
+    expectStackPixel(firstToLast, overlap, rampColour(-0.5, -1.0, 1.0), "0.2 - 0.7");
+    expectStackPixel(firstToLast, withoutStep2, kTransparent, "time-step 2 has no data there");
     scene.compositorOptions.differenceFrom = 2;
     scene.compositorOptions.differenceTo = 1;
     const Image backwards = renderSeries(series, scene);
-    expectPixel(backwards, overlap, rampColour(0.2, -1.0, 1.0), "0.4 - 0.2");
+    expectStackPixel(backwards, overlap, rampColour(0.2, -1.0, 1.0), "0.4 - 0.2");
     scene.compositorOptions.differenceFrom = 0;
     scene.compositorOptions.differenceTo = 1;
-    expectPixel(renderSeries(series, scene), withoutStep2, rampColour(-0.3, -1.0, 1.0), "0.4 - 0.7");
+    expectStackPixel(renderSeries(series, scene), withoutStep2, rampColour(-0.3, -1.0, 1.0), "0.4 - 0.7");
 }
 
 // Chronovolume: per sample, the time-steps' styled colours (STF times index TSTF) composited front
@@ -195,7 +169,7 @@ TEST(CompositorRender, ChronovolumeCompositesTheTimeStepsInTimeOrder) {
     // Time-step 0 (density 0.5) red, time-step 1 (density 1) blue; the STF gives opacity 0.2 x
     // density: 0.1 and 0.2 per reference length.
     const Series series = stackedBoxes({0.5f, 1.0f});
-    Scene scene = orthographicSceneLookingDownZ(kCentre, kViewHeight, kSize);
+    Scene scene = orthographicSceneLookingDownZ(kStackCentre, kStackViewHeight, kStackSize);
     scene.stf.curve.opacity = {{0.0, 0.0}, {1.0, 0.2}};
     scene.stf.curve.color = {{0.0, {1, 1, 1}}};
     scene.indexTstf.curve.opacity = {{0.0, 1.0}};
@@ -204,13 +178,13 @@ TEST(CompositorRender, ChronovolumeCompositesTheTimeStepsInTimeOrder) {
     scene.compositor = TemporalCompositor::Chronovolume;
     const glm::dvec4 red(1, 0, 0, 0.1);
     const glm::dvec4 blue(0, 0, 1, 0.2);
-    expectPixel(renderSeries(series, scene), kCentre, chronovolumePixel({red, blue}, kConstantBoxWidth),
+    expectStackPixel(renderSeries(series, scene), kStackCentre, chronovolumePixel({red, blue}, kConstantBoxWidth),
                 "red in front of blue");
     // The order is time's, not the boxes': with the densities swapped, blue (time-step 1) is
     // still composited behind the now fainter red.
     const glm::dvec4 fainterBlue(0, 0, 1, 0.1);
     const glm::dvec4 strongerRed(1, 0, 0, 0.2);
-    expectPixel(renderSeries(stackedBoxes({1.0f, 0.5f}), scene), kCentre,
+    expectStackPixel(renderSeries(stackedBoxes({1.0f, 0.5f}), scene), kStackCentre,
                 chronovolumePixel({strongerRed, fainterBlue}, kConstantBoxWidth), "stronger red in front");
 }
 
@@ -232,7 +206,7 @@ protected:
     }
 
     static Scene maskedStyleScene(TemporalCompositor compositor) {
-        Scene scene = orthographicSceneLookingDownZ(kCentre, kViewHeight, kSize);
+        Scene scene = orthographicSceneLookingDownZ(kStackCentre, kStackViewHeight, kStackSize);
         scene.stf.curve.opacity = {{0.0, 0.0}, {1.0, 0.2}};
         scene.stf.curve.color = {{0.0, {1, 1, 1}}};
         const std::string style = writeStyle("flat-for-masks", 16, 16, [](glm::vec2) { return kStyleColour; });
@@ -255,12 +229,12 @@ TEST_F(StylesInsideTheMasksOnly, TheTemporalAverageAveragesTheStyledAndThePlainT
     const glm::dvec3 colour = (glm::dvec3(styledInside) * styledInside.a + glm::dvec3(plainOutside) * plainOutside.a) /
                               (styledInside.a + plainOutside.a);
     const double alpha = slabOpacity(opacity, kConstantBoxWidth);
-    expectPixel(renderSeries(maskedBoxes(), maskedStyleScene(TemporalCompositor::Average)), kCentre,
+    expectStackPixel(renderSeries(maskedBoxes(), maskedStyleScene(TemporalCompositor::Average)), kStackCentre,
                 glm::vec4(glm::vec3(colour * alpha), float(alpha)), "styled inside, plain outside");
 }
 
 TEST_F(StylesInsideTheMasksOnly, TheChronovolumeCompositesTheStyledBeforeThePlainTimeStep) {
-    expectPixel(renderSeries(maskedBoxes(), maskedStyleScene(TemporalCompositor::Chronovolume)), kCentre,
+    expectStackPixel(renderSeries(maskedBoxes(), maskedStyleScene(TemporalCompositor::Chronovolume)), kStackCentre,
                 chronovolumePixel({styledInside, plainOutside}, kConstantBoxWidth), "styled in front of plain");
 }
 

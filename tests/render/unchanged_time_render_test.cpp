@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "render_test_support.h"
+#include "stacked_boxes.h"
 #include "tstyles/render/raycast_variant.h"
 #include "tstyles/scene/automatic_scene.h"
 #include "tstyles/scene/temporal_compositors.h"
@@ -16,43 +17,19 @@
 namespace tstyles::testing {
 namespace {
 
-constexpr int kSize = 64;
-constexpr double kViewHeight = 2.0;
-const glm::dvec2 kCentre(0.35, 0.35);
-// As in compositor_render_test.cpp: 16-bit densities, 1024-entry tables, float arithmetic.
-constexpr float kTolerance = 2e-3f;
-
-const glm::vec4 kRed{1, 0, 0, 1};
-const glm::vec4 kGreen{0, 1, 0, 1};
-const glm::vec4 kBlue{0, 0, 1, 1};
 const glm::vec4 kWhite{1, 1, 1, 1};
-const glm::vec4 kTransparent{0, 0, 0, 0};
 
 constexpr TemporalCompositor kPickingCompositors[] = {
     TemporalCompositor::MaxIntensityProjection, TemporalCompositor::Minimum, TemporalCompositor::TimeOfMaximum,
     TemporalCompositor::FirstArrival, TemporalCompositor::LastAbove};
-
-void expectPixelAt(const Image& image, glm::ivec2 pixel, glm::vec4 expected, const std::string& what) {
-    const glm::vec4 actual = image.at(pixel.x, pixel.y);
-    for (int c = 0; c < 4; ++c)
-        EXPECT_NEAR(actual[c], expected[c], kTolerance)
-            << what << " at pixel (" << pixel.x << ", " << pixel.y << ") channel " << c;
-}
-
-void expectPixel(const Image& image, glm::dvec2 world, glm::vec4 expected, const std::string& what) {
-    expectPixelAt(image, pixelOf(world, kCentre, kViewHeight, kSize), expected, what);
-}
-
-Series stackedBoxes(const std::vector<float>& densities) {
-    std::vector<BoxSpec> boxes;
-    for (float density : densities) boxes.push_back(constantBox({0, 0, 0}, density));
-    return makeSeries(boxes);
-}
+// The two that pick by the highest value.
+constexpr TemporalCompositor kPeakPickers[] = {TemporalCompositor::TimeOfMaximum,
+                                               TemporalCompositor::MaxIntensityProjection};
 
 // An opaque white STF, the TSTF alone, time-step 0 red, 1 green, 2 blue; every time-step reaches
 // the threshold of first-arrival and last-above.
 Scene pickingScene(TemporalCompositor compositor, std::optional<double> below, double tie = 0.0) {
-    Scene scene = orthographicSceneLookingDownZ(kCentre, kViewHeight, kSize);
+    Scene scene = orthographicSceneLookingDownZ(kStackCentre, kStackViewHeight, kStackSize);
     scene.stf.curve = constantFunction({1, 1, 1}, 1.0);
     scene.compositor = compositor;
     scene.compositorOptions.threshold = 0.05;
@@ -76,7 +53,7 @@ void expectOnly(const Image& image, glm::vec4 colour, const std::string& what) {
         for (int x = 0; x < image.width; ++x) {
             const glm::vec4 actual = image.at(x, y);
             if (actual.a == 0.0f) continue;
-            for (int c = 0; c < 4; ++c) wrong += std::abs(actual[c] - colour[c]) > kTolerance ? 1 : 0;
+            for (int c = 0; c < 4; ++c) wrong += std::abs(actual[c] - colour[c]) > kStackTolerance ? 1 : 0;
         }
     EXPECT_EQ(wrong, 0) << what;
 }
@@ -87,7 +64,7 @@ TEST(UnchangedTimeRender, ASeriesConstantOverTimeShowsNoTimeColourAnywhere) {
         const std::string name = toString(compositor);
         // Without the option the paper's compositors pick a time-step by the tie rules: red or blue.
         const Image everywhere = renderSeries(series, pickingScene(compositor, std::nullopt));
-        expectPixel(everywhere, kCentre, compositor == TemporalCompositor::LastAbove ? kBlue : kRed, name);
+        expectStackPixel(everywhere, kStackCentre, compositor == TemporalCompositor::LastAbove ? kBlue : kRed, name);
         // With the fitted threshold (nothing changes: every place unchanged), no time colour.
         Scene fitted = pickingScene(compositor, 0.0);
         fitted.compositorOptions.unchanged->automatic = true;
@@ -95,7 +72,7 @@ TEST(UnchangedTimeRender, ASeriesConstantOverTimeShowsNoTimeColourAnywhere) {
         EXPECT_NEAR(fitted.compositorOptions.unchanged->below, 1e-4, 1e-12) << name;
         EXPECT_EQ(fitted.compositorOptions.unchanged->tie, 0.0) << name;  // three values: no noise estimate
         const Image image = renderSeries(series, fitted);
-        expectPixel(image, kCentre, kWhite, name);
+        expectStackPixel(image, kStackCentre, kWhite, name);
         expectOnly(image, kWhite, name);
     }
 }
@@ -104,25 +81,28 @@ TEST(UnchangedTimeRender, TiesNeverChooseAColour) {
     // Time-steps 0 and 2 share the highest density (and, under the opaque STF, the highest opacity):
     // with thresholds of 0, only the tie itself shows no time colour.
     const Series peakTwice = stackedBoxes({0.8f, 0.3f, 0.8f});
-    for (TemporalCompositor compositor : {TemporalCompositor::TimeOfMaximum, TemporalCompositor::MaxIntensityProjection})
-        expectPixel(renderSeries(peakTwice, pickingScene(compositor, 0.0)), kCentre, kWhite, toString(compositor));
-    expectPixel(renderSeries(stackedBoxes({0.3f, 0.8f, 0.3f}), pickingScene(TemporalCompositor::Minimum, 0.0)),
-                kCentre, kWhite, "temporal-min, a tie of the lowest");
+    for (TemporalCompositor compositor : kPeakPickers)
+        expectStackPixel(renderSeries(peakTwice, pickingScene(compositor, 0.0)), kStackCentre, kWhite,
+                         toString(compositor));
+    expectStackPixel(renderSeries(stackedBoxes({0.3f, 0.8f, 0.3f}), pickingScene(TemporalCompositor::Minimum, 0.0)),
+                kStackCentre, kWhite, "temporal-min, a tie of the lowest");
     // Ahead by 0.05: a colour with a tie of 0.04, none with 0.06.
     const Series peakOnce = stackedBoxes({0.8f, 0.3f, 0.85f});
-    for (TemporalCompositor compositor : {TemporalCompositor::TimeOfMaximum, TemporalCompositor::MaxIntensityProjection}) {
-        expectPixel(renderSeries(peakOnce, pickingScene(compositor, 0.0, 0.04)), kCentre, kBlue, toString(compositor));
-        expectPixel(renderSeries(peakOnce, pickingScene(compositor, 0.0, 0.06)), kCentre, kWhite, toString(compositor));
+    for (TemporalCompositor compositor : kPeakPickers) {
+        const std::string name = toString(compositor);
+        expectStackPixel(renderSeries(peakOnce, pickingScene(compositor, 0.0, 0.04)), kStackCentre, kBlue, name);
+        expectStackPixel(renderSeries(peakOnce, pickingScene(compositor, 0.0, 0.06)), kStackCentre, kWhite, name);
     }
     const Series lowOnce = stackedBoxes({0.35f, 0.8f, 0.3f});
-    expectPixel(renderSeries(lowOnce, pickingScene(TemporalCompositor::Minimum, 0.0, 0.04)), kCentre, kBlue,
+    expectStackPixel(renderSeries(lowOnce, pickingScene(TemporalCompositor::Minimum, 0.0, 0.04)), kStackCentre, kBlue,
                 "temporal-min");
-    expectPixel(renderSeries(lowOnce, pickingScene(TemporalCompositor::Minimum, 0.0, 0.06)), kCentre, kWhite,
+    expectStackPixel(renderSeries(lowOnce, pickingScene(TemporalCompositor::Minimum, 0.0, 0.06)), kStackCentre, kWhite,
                 "temporal-min");
     // A tie shows as an unchanged place does: transparent where they are.
     Scene tiedTransparent = pickingScene(TemporalCompositor::TimeOfMaximum, 0.0);
     tiedTransparent.compositorOptions.unchanged->opacity = 0.0;
-    expectPixel(renderSeries(peakTwice, tiedTransparent), kCentre, kTransparent, "a tie, unchanged places transparent");
+    expectStackPixel(renderSeries(peakTwice, tiedTransparent), kStackCentre, kTransparent,
+                     "a tie, unchanged places transparent");
 }
 
 TEST(UnchangedTimeRender, ArrivalsShowTimeWhereTheRangeExceedsTheThreshold) {
@@ -131,14 +111,14 @@ TEST(UnchangedTimeRender, ArrivalsShowTimeWhereTheRangeExceedsTheThreshold) {
     const Series series = stackedBoxes({0.2f, 0.6f, 0.9f});
     Scene arrival = pickingScene(TemporalCompositor::FirstArrival, 0.65);
     arrival.compositorOptions.threshold = 0.5;
-    expectPixel(renderSeries(series, arrival), kCentre, kGreen, "first-arrival, threshold 0.65");
+    expectStackPixel(renderSeries(series, arrival), kStackCentre, kGreen, "first-arrival, threshold 0.65");
     arrival.compositorOptions.unchanged->below = 0.75;
-    expectPixel(renderSeries(series, arrival), kCentre, kWhite, "first-arrival, threshold 0.75");
+    expectStackPixel(renderSeries(series, arrival), kStackCentre, kWhite, "first-arrival, threshold 0.75");
     Scene departure = pickingScene(TemporalCompositor::LastAbove, 0.65);
     departure.compositorOptions.threshold = 0.5;
-    expectPixel(renderSeries(series, departure), kCentre, kBlue, "last-above, threshold 0.65");
+    expectStackPixel(renderSeries(series, departure), kStackCentre, kBlue, "last-above, threshold 0.65");
     departure.compositorOptions.unchanged->below = 0.75;
-    expectPixel(renderSeries(series, departure), kCentre, kWhite, "last-above, threshold 0.75");
+    expectStackPixel(renderSeries(series, departure), kStackCentre, kWhite, "last-above, threshold 0.75");
 }
 
 TEST(UnchangedTimeRender, UnchangedPlacesKeepTheirShareOfTheStfsOpacity) {
@@ -153,7 +133,7 @@ TEST(UnchangedTimeRender, UnchangedPlacesKeepTheirShareOfTheStfsOpacity) {
     Scene faint = pickingScene(TemporalCompositor::MaxIntensityProjection, 0.0);
     faint.compositorOptions.unchanged->opacity = 0.25;
     const float opacity = float(slabOpacity(0.25, kConstantBoxWidth));
-    expectPixel(renderSeries(series, faint), kCentre, glm::vec4(opacity, opacity, opacity, opacity),
+    expectStackPixel(renderSeries(series, faint), kStackCentre, glm::vec4(opacity, opacity, opacity, opacity),
                 "a quarter of the STF's opacity, premultiplied");
 }
 
@@ -179,11 +159,37 @@ TEST(UnchangedTimeRender, PlacesThatChangeShowAsIfGainTimesAsThick) {
     scene.stf.curve = constantFunction({1, 1, 1}, 0.25);
     scene.finalMode = FinalMode::Modulate;
     const float changed = float(slabOpacity(1.0 - 0.75 * 0.75, kConstantBoxWidth));
-    expectPixel(renderSeries(stackedBoxes({0.2f, 0.6f, 0.9f}), scene), kCentre,
+    expectStackPixel(renderSeries(stackedBoxes({0.2f, 0.6f, 0.9f}), scene), kStackCentre,
                 glm::vec4(0.0f, changed, 0.0f, changed), "changes: as if twice as thick");
     const float unchanged = float(slabOpacity(0.25, kConstantBoxWidth));
-    expectPixel(renderSeries(stackedBoxes({0.6f, 0.6f, 0.6f}), scene), kCentre,
+    expectStackPixel(renderSeries(stackedBoxes({0.6f, 0.6f, 0.6f}), scene), kStackCentre,
                 glm::vec4(unchanged, unchanged, unchanged, unchanged), "unchanged: as the STF has it");
+}
+
+TEST(UnchangedTimeRender, UnchangedPlacesKeepTheirBoundaries) {
+    // Three equal time-steps of a ramp along x, 0.1 + 0.05 per voxel 0.1 apart: a value gradient of
+    // 0.5 per unit length everywhere. With boundary 1 an unchanged place is halfway from a flat
+    // interior (a quarter of its share) to a boundary (all of it): 0.625 of the STF's 0.25 per
+    // reference length, over the box's 7.
+    BoxSpec box;
+    box.density = [](glm::ivec3 voxel) { return float(0.1 + 0.05 * voxel.x); };
+    const Series series = makeSeries({box, box, box});
+    Scene scene = pickingScene(TemporalCompositor::MaxIntensityProjection, 0.1);
+    scene.stf.curve = constantFunction({1, 1, 1}, 0.25);
+    scene.finalMode = FinalMode::Modulate;
+    scene.compositorOptions.unchanged->boundary = 1.0;
+    const float halfway = float(slabOpacity(0.25 * 0.625, kConstantBoxWidth));
+    expectStackPixel(renderSeries(series, scene), kStackCentre, glm::vec4(halfway, halfway, halfway, halfway),
+                     "halfway where the gradient is half the boundary's");
+    scene.compositorOptions.unchanged->boundary = 0.25;  // steeper than the boundary: the whole share
+    const float whole = float(slabOpacity(0.25, kConstantBoxWidth));
+    expectStackPixel(renderSeries(series, scene), kStackCentre, glm::vec4(whole, whole, whole, whole),
+                     "the whole share where the gradient is steeper than the boundary");
+    // A box of one value: a flat interior keeps a quarter of the share.
+    scene.compositorOptions.unchanged->boundary = 1.0;
+    const float interior = float(slabOpacity(0.25 * 0.25, kConstantBoxWidth));
+    expectStackPixel(renderSeries(stackedBoxes({0.5f, 0.5f, 0.5f}), scene), kStackCentre,
+                     glm::vec4(interior, interior, interior, interior), "a flat interior");
 }
 
 TEST(UnchangedTimeRender, AMovingBlobColoursOnlyItsPath) {
@@ -205,18 +211,22 @@ TEST(UnchangedTimeRender, AMovingBlobColoursOnlyItsPath) {
     const glm::dvec2 centre(1.15, 0.15);
     const double viewHeight = 2.6;
     Scene picking = pickingScene(TemporalCompositor::MaxIntensityProjection, 0.0);
-    picking.camera = orthographicSceneLookingDownZ(centre, viewHeight, kSize).camera;
+    picking.camera = orthographicSceneLookingDownZ(centre, viewHeight, kStackSize).camera;
     picking.compositorOptions.unchanged->automatic = true;
-    for (TemporalCompositor compositor : {TemporalCompositor::MaxIntensityProjection, TemporalCompositor::TimeOfMaximum}) {
+    for (TemporalCompositor compositor : kPeakPickers) {
         picking.compositor = compositor;
-        const Scene fitted = fitAutomaticParts(picking, series);
+        Scene fitted = fitAutomaticParts(picking, series);
         // Changes of 0.6 on the path and 0 elsewhere; three values are too few for noise: 0.06.
         EXPECT_NEAR(fitted.compositorOptions.unchanged->below, 0.06, 1e-6);
         EXPECT_EQ(fitted.compositorOptions.unchanged->tie, 0.0);
         // 384 visible places, 144 of them on the path: rays through the path are cbrt(384 / 144)
         // times shorter.
         EXPECT_NEAR(fitted.compositorOptions.unchanged->gain, std::cbrt(384.0 / 144.0), 1e-9);
-        const auto at = [&](int voxelX) { return pixelOf({0.1 * voxelX, 0.15}, centre, viewHeight, kSize); };
+        // The steepest value gradient of time-step 0 in a hundred places: (0.9 - 0.3) / 0.1 one-sided
+        // at the box's face beside the slab (1 column of 24). The colours are checked without it.
+        EXPECT_NEAR(fitted.compositorOptions.unchanged->boundary, 6.0, 1e-4);
+        fitted.compositorOptions.unchanged->boundary = 0.0;
+        const auto at = [&](int voxelX) { return pixelOf({0.1 * voxelX, 0.15}, centre, viewHeight, kStackSize); };
         // Each walk over the time-steps: the packed groups (the series is aligned), the ray's list, naive.
         for (const auto& [walk, options] :
              {std::pair{TimeStepWalk::PackedGroups, FrameOptions{}}, std::pair{TimeStepWalk::RayList, rayList()},
@@ -225,15 +235,16 @@ TEST(UnchangedTimeRender, AMovingBlobColoursOnlyItsPath) {
             ASSERT_EQ(testRenderer().lastVariant().walk, walk);
             ASSERT_TRUE(testRenderer().lastVariant().unchangedTime);
             const std::string name = toString(compositor) + ", " + walkName(walk);
-            expectPixelAt(image, at(2), kRed, name + ", time-step 0's slab");
-            expectPixelAt(image, at(6), kGreen, name + ", time-step 1's slab");
-            expectPixelAt(image, at(10), kBlue, name + ", time-step 2's slab");
-            for (int never = 13; never <= 22; ++never) expectPixelAt(image, at(never), kWhite, name + ", never reached");
+            expectPixelNear(image, at(2), kRed, name + ", time-step 0's slab");
+            expectPixelNear(image, at(6), kGreen, name + ", time-step 1's slab");
+            expectPixelNear(image, at(10), kBlue, name + ", time-step 2's slab");
+            for (int never = 13; never <= 22; ++never)
+                expectPixelNear(image, at(never), kWhite, name + ", never reached");
         }
         // Without the option the never-reached background takes time-step 0's colour by the tie.
         Scene everywhere = fitted;
         everywhere.compositorOptions.unchanged.reset();
-        expectPixelAt(renderSeries(series, everywhere), at(14), kRed, toString(compositor) + ", without the option");
+        expectPixelNear(renderSeries(series, everywhere), at(14), kRed, toString(compositor) + ", without the option");
         EXPECT_FALSE(testRenderer().lastVariant().unchangedTime);
     }
 }

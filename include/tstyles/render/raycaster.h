@@ -41,6 +41,7 @@ struct RaycastParameters {
     std::array<float, contract::UNCHANGED_DENSITY_BANDS> unchangedBelow{};  // per density band
     std::array<float, contract::UNCHANGED_DENSITY_BANDS> unchangedTie{};
     float changedGain = 1.0f;
+    float unchangedBoundary = 0.0f;  // the value gradient at which an unchanged place keeps its whole share
     float unchangedOpacity = 1.0f;
     // The time-steps that take part, first and last inclusive (the scene's exposure, or a solo step).
     glm::ivec2 exposedSteps{0, std::numeric_limits<int>::max()};

@@ -70,6 +70,10 @@ struct UnchangedTime {
     // A place that changes shows as if `gain` times as thick ([1, 8]): the STF's opacity is fitted to
     // rays through all of the visible data, and the changing part of it is thinner.
     double gain = 1.0;
+    // Boundaries: an unchanged place keeps its share of opacity in full where the value gradient is
+    // this steep (density per display length), less in proportion where it is flatter, so that
+    // regions of one value fade and their boundaries stay; 0 everywhere in full.
+    double boundary = 0.0;
     bool operator==(const UnchangedTime&) const = default;
 };
 

@@ -79,6 +79,7 @@ struct UnchangedFit {
     double below = 0.0;
     double tie = 0.0;
     double gain = 1.0;
+    double boundary = 0.0;  // from the value gradient: boundaryGradientOf (boundary_gradient.h)
     std::vector<double> belowByDensity;
     std::vector<double> tieByDensity;
 };
