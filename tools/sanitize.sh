@@ -27,6 +27,11 @@ export LD_PRELOAD="$build/keep_libraries_loaded.so"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=0:verify_asan_link_order=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export LSAN_OPTIONS="suppressions=$root/tools/sanitizers/lsan.supp:print_suppressions=0"
+# Readers run in-process here: GCC 12's AddressSanitizer allocator is not fork-safe, and a reader
+# process forked while a library's thread pool (OpenEXR's, log4cplus's: they start when the libraries
+# load) was allocating waited for good on the allocator's lock (cli.check.deterministic_renders, under
+# ctest -j2). The isolation itself is tested in tools/test.sh's plain build (docs/testing.md).
+export TSTYLES_READ_IN_PROCESS=1
 start=$SECONDS
 # The Python module is not built here (CMakeLists.txt says why); TSTYLES_SANITIZE_EXCLUDE, a ctest
 # regular expression, leaves out more.
