@@ -66,16 +66,10 @@ std::optional<UnchangedTime> unchangedFromOptions(const Scene& scene, const Scen
             throwInputError("", "--unchanged-opacity", "says how unchanged places show, but --unchanged is off");
         return std::nullopt;
     }
-    nlohmann::json unchanged = nlohmann::json::object();
-    if (const auto& kept = scene.compositorOptions.unchanged) {
-        unchanged["below"] = kept->automatic ? nlohmann::json("auto") : nlohmann::json(kept->below);
-        if (!kept->automatic) {
-            unchanged["tie"] = kept->tie;
-            unchanged["gain"] = kept->gain;
-            unchanged["boundary"] = kept->boundary;
-        }
-        unchanged["opacity"] = kept->opacity;
-    }
+    // The scene's own setting as the scene writer spells it, the options applied over it.
+    const nlohmann::json written = nlohmann::json::parse(sceneToJson(scene, {}))["compositor"];
+    nlohmann::json unchanged = written.is_object() && written.contains("unchanged") ? written["unchanged"]
+                                                                                     : nlohmann::json::object();
     if (overrides.unchanged) {
         unchanged["below"] = valueFromText(*overrides.unchanged);
         if (unchanged["below"] == "auto") {

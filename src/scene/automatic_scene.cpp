@@ -145,10 +145,19 @@ std::pair<double, double> automaticGradientRange(const Scene& scene, const Serie
     return gradientRangeForChange(scene, series, typicalLargestChange(series, scene.stf));
 }
 
-UnchangedFit automaticUnchangedFit(const Scene& scene, const Series& series) {
-    UnchangedFit fit = unchangedFitOf(temporalChanges(series, scene.stf), series.size());
-    fit.boundary = boundaryGradientOf(gradientMagnitudes(series, scene.stf));
+namespace {
+
+// The whole fit: the thresholds from the places' changes, the boundary from the value gradient.
+UnchangedFit unchangedFitOn(const PlaceChanges& places, const Series& series, const Stf& stf) {
+    UnchangedFit fit = unchangedFitOf(places, series.size());
+    fit.boundary = boundaryGradientOf(gradientMagnitudes(series, stf));
     return fit;
+}
+
+}  // namespace
+
+UnchangedFit automaticUnchangedFit(const Scene& scene, const Series& series) {
+    return unchangedFitOn(temporalChanges(series, scene.stf), series, scene.stf);
 }
 
 std::pair<double, double> gradientRangeForChange(const Scene& scene, const Series& series, double change) {
@@ -177,11 +186,7 @@ Scene fitAutomaticParts(Scene scene, const Series& display) {
         scene.gradientTstf.rangeLow = low;
         scene.gradientTstf.rangeHigh = high;
     }
-    if (fitsUnchanged) {
-        UnchangedFit fit = unchangedFitOf(places, display.size());
-        fit.boundary = boundaryGradientOf(gradientMagnitudes(display, scene.stf));
-        takeFit(*scene.compositorOptions.unchanged, fit);
-    }
+    if (fitsUnchanged) takeFit(*scene.compositorOptions.unchanged, unchangedFitOn(places, display, scene.stf));
     return scene;
 }
 

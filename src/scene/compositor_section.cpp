@@ -51,23 +51,18 @@ UnchangedTime readUnchanged(const JsonFieldReader& fields, const json& value) {
             unchanged.below = fields.numberIn(*below, path + ".below", Interval{0.0, 1.0});
         }
     }
-    if (const json* tie = JsonFieldReader::member(value, "tie")) {
+    // The keys that "auto" fits along with "below": numbers only beside a number for it.
+    const auto readFitted = [&](std::string_view key, const Interval& allowed, double& into) {
+        const json* given = JsonFieldReader::member(value, key);
+        if (!given) return;
+        const std::string keyPath = childPath(path, key);
         if (unchanged.automatic)
-            fields.fail(path + ".tie", "is fitted with \"below\": \"auto\"; give \"below\" as a number with it");
-        unchanged.tie = fields.numberIn(*tie, path + ".tie", Interval{0.0, 1.0});
-    }
-    if (const json* gain = JsonFieldReader::member(value, "gain")) {
-        if (unchanged.automatic)
-            fields.fail(path + ".gain", "is fitted with \"below\": \"auto\"; give \"below\" as a number with it");
-        unchanged.gain = fields.numberIn(*gain, path + ".gain", Interval{1.0, 8.0});
-    }
-    if (const json* boundary = JsonFieldReader::member(value, "boundary")) {
-        if (unchanged.automatic)
-            fields.fail(path + ".boundary",
-                        "is fitted with \"below\": \"auto\"; give \"below\" as a number with it");
-        unchanged.boundary = fields.numberIn(*boundary, path + ".boundary",
-                                             Interval{0.0, std::numeric_limits<double>::max()});
-    }
+            fields.fail(keyPath, "is fitted with \"below\": \"auto\"; give \"below\" as a number with it");
+        into = fields.numberIn(*given, keyPath, allowed);
+    };
+    readFitted("tie", Interval{0.0, 1.0}, unchanged.tie);
+    readFitted("gain", Interval{1.0, 8.0}, unchanged.gain);
+    readFitted("boundary", Interval{0.0, std::numeric_limits<double>::max()}, unchanged.boundary);
     if (const json* opacity = JsonFieldReader::member(value, "opacity"))
         unchanged.opacity = fields.numberIn(*opacity, path + ".opacity", Interval{0.0, 1.0});
     return unchanged;
