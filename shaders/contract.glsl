@@ -56,6 +56,14 @@ CONTRACT_CONSTANT(int, PACKED_VALIDITY_NONE, 0)
 CONTRACT_CONSTANT(int, PACKED_VALIDITY_PER_GROUP, 1)
 CONTRACT_CONSTANT(int, PACKED_VALIDITY_SHARED, 2)
 
+// The RAYCAST_PART switch (raycast.frag): the whole raycasting pass, or one of its first parts
+// alone, which `bench --stages` times to see where a frame's time goes: the ray's setup (overlap
+// extraction, the walk's list) without a sample, or the march (the lattice, the walk and the
+// empty-space test at every sample) without fetching or compositing, so rays run to their exit.
+CONTRACT_CONSTANT(int, RAYCAST_PART_WHOLE, 0)
+CONTRACT_CONSTANT(int, RAYCAST_PART_RAY_SETUP, 1)
+CONTRACT_CONSTANT(int, RAYCAST_PART_MARCH, 2)
+
 // Unchanged places (temporal_sample.glsl, CompositorOptions::unchanged): their thresholds are given
 // per band of density, this many equal bands over [0, 1], so that noisier values (bone in a CT) have
 // their own.

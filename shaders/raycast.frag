@@ -67,6 +67,13 @@ void main() {
     // a block of pixels that all miss (a branch would not: both sides run, masked).
     if (max(rayDepth.x, clip.x) >= min(rayDepth.y, clip.y)) discard;
     prepareWalk(ray);
+    if (RAYCAST_PART == RAYCAST_PART_RAY_SETUP) {
+        // The ray's setup alone (`bench --stages`): what the walk has in reach at the entry goes
+        // into an opacity far too small to show, so that the compiler keeps the setup.
+        advanceWalk(rayDepth.x);
+        fragmentColor = vec4(0.0, 0.0, 0.0, 1.0e-30 * float(timeStepsInReach()));
+        return;
+    }
 
     vec4 accumulated = vec4(0.0);  // premultiplied colour, opacity
     int samples = 0;
@@ -126,4 +133,7 @@ void main() {
 #endif
     vec4 premultipliedBackground = vec4(background.rgb * background.a, background.a);
     fragmentColor = accumulated + (1.0 - accumulated.a) * premultipliedBackground;
+    // The march alone: its samples' time-steps in reach (TemporalSample.fetches) go into an opacity
+    // far too small to show, so that the compiler keeps the walk.
+    if (RAYCAST_PART == RAYCAST_PART_MARCH) fragmentColor.a += 1.0e-30 * float(fetches);
 }

@@ -21,6 +21,14 @@ TemporalSample compositeTemporal(vec3 position, float t) {
             return result;
         }
     }
+    if (RAYCAST_PART == RAYCAST_PART_MARCH) {
+        // The march alone (`bench --stages`): the sample is transparent, so the ray runs to its
+        // exit, and jumps where the whole pass would, between time-steps (none in the walk's
+        // reach); raycast.frag keeps what the walk found.
+        result.contributing = timeStepsInReach();
+        result.fetches = result.contributing;
+        return result;
+    }
     CompositorState state = compositorInit();
     accumulateTimeSteps(state, point, result);
     TemporalCharacteristic characteristic = compositorFinish(state, position, result.fetches);

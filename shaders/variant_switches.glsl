@@ -25,6 +25,8 @@
 //                       once per series by gradient_atlas.comp) instead of six density fetches
 //   UNCHANGED_TIME      1 when a compositor that picks a time-step leaves places whose densities do
 //                       not change over time (or tie) without time colour (CompositorOptions::unchanged)
+//   RAYCAST_PART        a RAYCAST_PART_* code of contract.glsl: the whole pass, or only its ray setup or
+//                       its march, which `bench --stages` times (RaycastVariant::part)
 // Each is a switch and not a run-time test because llvmpipe runs both sides of a branch that the 8
 // pixels it shades together disagree on, masked, and inside the ray's loop even one that none of them
 // takes (docs/performance.md, "llvmpipe and branches").
@@ -34,7 +36,7 @@
     !defined(CUSTOM_READS_INDEX) || !defined(STYLED_TRACKS) || !defined(SKIP_EMPTY_BRICKS) || \
     !defined(MISSING_VALUES) || !defined(UNEVEN_AXIS_WALK) || !defined(PER_RAY_CACHES) ||              \
     !defined(PRECOMPUTED_GRADIENTS) || !defined(RECTILINEAR_GRIDS) || !defined(PACKED_GROUP_MASKS) ||  \
-    !defined(UNCHANGED_TIME)
+    !defined(UNCHANGED_TIME) || !defined(RAYCAST_PART)
 #error "a raycasting switch is not defined: build the program through RaycastVariant"
 #endif
 #if !RECTILINEAR_GRIDS && !STRUCTURED_GRIDS && !BEAM_GRIDS

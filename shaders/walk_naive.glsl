@@ -17,6 +17,12 @@ void prepareWalk(Ray ray) {}
 
 void advanceWalk(float t) {}
 
+// How many time-steps the walk has in reach at its last sample (every time-step): what the
+// parts of the pass that `bench --stages` times keep of the walk (RAYCAST_PART).
+int timeStepsInReach() {
+    return timeStepCount;
+}
+
 SamplePoint samplePointAt(vec3 position, float t) {
     return SamplePoint(position, t);
 }

@@ -28,6 +28,12 @@ void advanceWalk(float t) {
     advanceLiveWindow(t);
 }
 
+// How many time-steps the walk has in reach at its last sample (the slots of the live window): what the
+// parts of the pass that `bench --stages` times keep of the walk (RAYCAST_PART).
+int timeStepsInReach() {
+    return liveEnd - liveBegin;
+}
+
 // Time-steps in a group: four, but fewer in the last. A loop bound that is the same for every
 // pixel ends there, where a test in the loop would still run the missing lanes (llvmpipe runs a
 // loop pass that every pixel skips, masked).

@@ -23,6 +23,12 @@ void advanceWalk(float t) {
     advanceLiveWindow(t);
 }
 
+// How many time-steps the walk has in reach at its last sample (the slots of the live window): what the
+// parts of the pass that `bench --stages` times keep of the walk (RAYCAST_PART).
+int timeStepsInReach() {
+    return liveEnd - liveBegin;
+}
+
 SamplePoint samplePointAt(vec3 position, float t) {
     return SamplePoint(position, t);
 }

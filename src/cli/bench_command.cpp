@@ -47,6 +47,7 @@ struct BenchOptions {
     std::vector<int> scalingSteps;
     bool styled = false;
     bool distributed = false;  // sort-last over the MPI processes (bench_distributed.h)
+    bool stages = false;       // also time the passes and the raycasting pass' parts on the GPU
     GpuMemoryOption gpuMemory;
     GlOptions gl;
 };
@@ -56,6 +57,24 @@ struct BenchCase {
     std::string scene;  // the bundled scene that supplies camera and transfer functions
     TemporalCompositor compositor;
     glm::ivec2 size;
+};
+
+// Where a case's GPU time goes (--stages): medians of timer queries over the timed frames.
+struct StageTimes {
+    double entryExitMs = 0.0;
+    double raycastMs = 0.0;   // the whole raycasting pass
+    double raySetupMs = 0.0;  // the pass with RaycastPart::RaySetup: no sample taken
+    double marchMs = 0.0;     // the pass with RaycastPart::March: rays run to their exit
+    std::uint64_t marchSamples = 0;
+    // The march scaled to the samples the whole pass takes (its rays end early), and what is left
+    // of the whole pass after setup and march: fetching, compositing and styling.
+    double marchAtFrameSamplesMs(std::uint64_t frameSamples) const {
+        if (marchSamples == 0) return marchMs - raySetupMs;
+        return (marchMs - raySetupMs) * double(frameSamples) / double(marchSamples);
+    }
+    double samplingMs(std::uint64_t frameSamples) const {
+        return raycastMs - raySetupMs - marchAtFrameSamplesMs(frameSamples);
+    }
 };
 
 struct BenchResult {
@@ -72,6 +91,7 @@ struct BenchResult {
     std::size_t frameTextureBytes = 0;
     // What --max-gpu-memory (or the driver's memory) changed in the series' storage; empty: as read.
     std::vector<std::string> gpuStorageChanges;
+    std::optional<StageTimes> stages;  // with --stages
 };
 
 // User and system time of every thread of this process so far.
@@ -85,6 +105,8 @@ double processCpuMilliseconds() {
 struct FrameTimes {
     std::vector<double> wallMs;
     std::vector<double> cpuMs;
+    std::vector<double> entryExitGpuMs;  // with FrameOptions::timePasses
+    std::vector<double> raycastGpuMs;
 };
 
 BenchResult runCase(Renderer& renderer, const Series& series, const BenchCase& benchCase,
@@ -112,18 +134,40 @@ BenchResult runCase(Renderer& renderer, const Series& series, const BenchCase& b
             times.wallMs.push_back(
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
             times.cpuMs.push_back(processCpuMilliseconds() - cpuStart);
+            if (timed.timePasses) {
+                const FramePassTimes passes = renderer.lastPassTimes();
+                times.entryExitGpuMs.push_back(passes.entryExitMs);
+                times.raycastGpuMs.push_back(passes.raycastMs);
+            }
         }
         return times;
     };
+    frame.timePasses = options.stages;
     const FrameTimes times = timeFrames(frame);
     BenchResult result{benchCase, series.size(), median(times.wallMs),
                        *std::max_element(times.wallMs.begin(), times.wallMs.end()), median(times.cpuMs),
-                       std::nullopt, {}, 0, 0};
+                       std::nullopt, {}, 0, 0, {}, std::nullopt};
+    if (options.stages) {
+        StageTimes stages;
+        stages.entryExitMs = median(times.entryExitGpuMs);
+        stages.raycastMs = median(times.raycastGpuMs);
+        FrameOptions part = frame;
+        part.raycastPart = RaycastPart::RaySetup;
+        stages.raySetupMs = median(timeFrames(part).raycastGpuMs);
+        part.raycastPart = RaycastPart::March;
+        stages.marchMs = median(timeFrames(part).raycastGpuMs);
+        part.timePasses = false;
+        part.collectStatistics = true;
+        renderer.draw(scene, viewForFrame(0), part);
+        stages.marchSamples = renderer.lastStatistics().samples;
+        result.stages = stages;
+    }
     if (options.baseline) {
         FrameOptions naive = frame;
         naive.naive = true;
         result.naiveMedianMs = median(timeFrames(naive).wallMs);
     }
+    frame.timePasses = false;
     frame.collectStatistics = true;  // counted in an extra, untimed frame: atomics cost time
     renderer.draw(scene, viewForFrame(0), frame);
     result.statistics = renderer.lastStatistics();
@@ -162,6 +206,28 @@ void printTable(const std::vector<BenchResult>& results, const std::string& devi
     }
 }
 
+// --stages: the GPU's milliseconds per pass and part (docs/performance.md, "Where a frame's GPU time goes").
+void printStages(const std::vector<BenchResult>& results) {
+    std::cout << "\nms per pass and part (medians; timer queries on a GPU, glFinish and the wall clock on a CPU "
+                 "rasterizer):\n";
+    std::cout << std::left << std::setw(28) << "dataset" << std::setw(21) << "compositor" << std::right << std::setw(11)
+              << "size" << std::setw(12) << "entry/exit" << std::setw(11) << "raycast" << std::setw(11) << "ray setup"
+              << std::setw(9) << "march" << std::setw(11) << "sampling" << std::setw(12) << "march alone"
+              << std::setw(15) << "march samples" << "\n";
+    for (const auto& r : results) {
+        const StageTimes& stages = *r.stages;
+        std::cout << std::left << std::setw(28) << r.benchCase.dataset << std::setw(21)
+                  << toString(r.benchCase.compositor) << std::right << std::setw(11) << widthByHeightText(r.benchCase.size)
+                  << std::fixed << std::setprecision(1) << std::setw(12) << stages.entryExitMs << std::setw(11)
+                  << stages.raycastMs << std::setw(11) << stages.raySetupMs << std::setw(9)
+                  << stages.marchAtFrameSamplesMs(r.statistics.samples) << std::setw(11)
+                  << stages.samplingMs(r.statistics.samples) << std::setw(12) << stages.marchMs << std::setw(15)
+                  << stages.marchSamples << "\n";
+    }
+    std::cout << "march: the march's time per sample (march alone, whose rays run to their exit, less the ray setup)\n"
+                 "times the frame's samples; sampling: the rest of the raycasting pass (fetches, compositor, styles)\n";
+}
+
 nlohmann::json toJson(const std::vector<BenchResult>& results, const std::string& device) {
     nlohmann::json cases = nlohmann::json::array();
     for (const auto& r : results)
@@ -175,6 +241,16 @@ nlohmann::json toJson(const std::vector<BenchResult>& results, const std::string
                          {"gpu_storage_changes", r.gpuStorageChanges},
                          {"naive_median_ms", r.naiveMedianMs ? nlohmann::json(*r.naiveMedianMs) : nlohmann::json()},
                          {"speed_up", r.naiveMedianMs ? nlohmann::json(*r.naiveMedianMs / r.medianMs) : nlohmann::json()}});
+    for (std::size_t i = 0; i < results.size(); ++i) {
+        if (!results[i].stages) continue;
+        const StageTimes& stages = *results[i].stages;
+        const std::uint64_t samples = results[i].statistics.samples;
+        cases[i]["stages_gpu_ms"] = {{"entry_exit", stages.entryExitMs}, {"raycast", stages.raycastMs},
+                                     {"ray_setup", stages.raySetupMs},
+                                     {"march", stages.marchAtFrameSamplesMs(samples)},
+                                     {"sampling", stages.samplingMs(samples)}, {"march_alone", stages.marchMs},
+                                     {"march_alone_samples", stages.marchSamples}};
+    }
     return {{"device", device}, {"cases", cases}};
 }
 
@@ -216,8 +292,9 @@ void runScaling(Renderer& renderer, const BenchOptions& options, std::vector<Ben
 
 int runBench(const BenchOptions& options) {
     if (options.distributed) {
-        if (options.baseline || options.styled || !options.scalingSteps.empty())
-            throwInputError("", "--distributed", "measures the flat matrix; it takes neither --baseline, --styled nor --scaling");
+        if (options.baseline || options.styled || options.stages || !options.scalingSteps.empty())
+            throwInputError("", "--distributed",
+                            "measures the flat matrix; it takes neither --baseline, --styled, --stages nor --scaling");
         return runDistributedBench(
             {options.datasets, options.sizes, options.frames, options.warmup, options.json, options.gpuMemory, options.gl});
     }
@@ -234,6 +311,7 @@ int runBench(const BenchOptions& options) {
         return kExitBadInput;
     }
     printTable(results, context->description());
+    if (options.stages) printStages(results);
     if (options.json) writeFileAtomically(*options.json, toJson(results, context->description()).dump(2) + "\n");
     return kExitSuccess;
 }
@@ -260,6 +338,9 @@ Command addBenchCommand(CLI::App& app) {
                         "numbers of time-steps, partial and full overlap (e.g. --scaling 10 20 40 80 160)")
         ->check(CLI::Range(2, 1000));
     command->add_flag("--styled", options->styled, "Measure the Figure 4 scenes with lit-sphere styles");
+    command->add_flag("--stages", options->stages,
+                      "Also time each frame's passes on the GPU with timer queries (entry/exit, raycasting) and the "
+                      "raycasting pass' parts (ray setup, march, sampling) and print where the time goes");
     command->add_flag("--distributed", options->distributed,
                       "Under mpirun: render sort-last over the MPI processes and report each frame's rendering (the "
                       "slowest block) and compositing, for strong scaling (docs/scaling.md)");

@@ -87,17 +87,15 @@ VertexArray VertexArray::create() {
 }
 
 TimerQuery TimerQuery::create() {
-    GLuint ids[2] = {0, 0};
-    glCreateQueries(GL_TIMESTAMP, 2, ids);
-    return TimerQuery(ids[0], ids[1]);
+    GLuint id = 0;
+    glCreateQueries(GL_TIME_ELAPSED, 1, &id);
+    return TimerQuery(id);
 }
 
 double TimerQuery::milliseconds() const {
-    GLuint64 startNs = 0;
-    GLuint64 stopNs = 0;
-    glGetQueryObjectui64v(start_.id(), GL_QUERY_RESULT, &startNs);
-    glGetQueryObjectui64v(stop_.id(), GL_QUERY_RESULT, &stopNs);
-    return double(stopNs - startNs) * 1e-6;
+    GLuint64 elapsedNs = 0;
+    glGetQueryObjectui64v(query_.id(), GL_QUERY_RESULT, &elapsedNs);
+    return double(elapsedNs) * 1e-6;
 }
 
 }  // namespace tstyles

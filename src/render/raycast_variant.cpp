@@ -1,6 +1,7 @@
 // Raycasting program variants: their #defines, their modules and the list the build validates.
 #include "tstyles/render/raycast_variant.h"
 
+#include <set>
 #include <string>
 
 #include "tstyles/render/shader_contract.h"
@@ -38,6 +39,15 @@ int packedValidityCode(PackedValidity validity) {
         case PackedValidity::Shared: return contract::PACKED_VALIDITY_SHARED;
     }
     return contract::PACKED_VALIDITY_NONE;
+}
+
+int raycastPartCode(RaycastPart part) {
+    switch (part) {
+        case RaycastPart::Whole: return contract::RAYCAST_PART_WHOLE;
+        case RaycastPart::RaySetup: return contract::RAYCAST_PART_RAY_SETUP;
+        case RaycastPart::March: return contract::RAYCAST_PART_MARCH;
+    }
+    return contract::RAYCAST_PART_WHOLE;
 }
 
 const char* flag(bool value) { return value ? "1" : "0"; }
@@ -97,6 +107,29 @@ const char* walkName(TimeStepWalk walk) {
     return "ray list";
 }
 
+const char* raycastPartName(RaycastPart part) {
+    switch (part) {
+        case RaycastPart::Whole: return "whole";
+        case RaycastPart::RaySetup: return "ray setup";
+        case RaycastPart::March: return "march";
+    }
+    return "whole";
+}
+
+RaycastVariant partOf(const RaycastVariant& whole, RaycastPart part) {
+    RaycastVariant variant = whole;
+    variant.part = part;
+    if (part == RaycastPart::Whole) return variant;
+    variant.compositor = TemporalCompositor::MaxIntensityProjection;
+    variant.customCode.clear();
+    variant.customCodeName.clear();
+    variant.customReads = CompositorReads::IndexTstf;
+    variant.styledTracks = 0;
+    variant.precomputedGradients = false;
+    variant.unchangedTime = false;
+    return variant;
+}
+
 ShaderDefines RaycastVariant::defines() const {
     return {
         {"STYLED", flag(styled())},
@@ -120,6 +153,7 @@ ShaderDefines RaycastVariant::defines() const {
         {"PER_RAY_CACHES", flag(perRayCaches)},
         {"PRECOMPUTED_GRADIENTS", flag(precomputedGradients)},
         {"UNCHANGED_TIME", flag(unchangedTime)},
+        {"RAYCAST_PART", std::to_string(raycastPartCode(part))},
     };
 }
 
@@ -202,6 +236,11 @@ std::vector<RaycastVariant> requestableRaycastVariants() {
             }
         }
     }
+    // The parts `bench --stages` times, once each: they leave the compositor and styles out.
+    std::set<RaycastVariant> parts;
+    for (const RaycastVariant& whole : variants)
+        for (RaycastPart part : {RaycastPart::RaySetup, RaycastPart::March}) parts.insert(partOf(whole, part));
+    variants.insert(variants.end(), parts.begin(), parts.end());
     return variants;
 }
 

@@ -81,7 +81,11 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     transferTables_.bind();
     styleTextures_.update({&scene.stf.curve, &scene.indexTstf.curve, &scene.gradientTstf.curve});
     styleTextures_.bind();
+    if (options.timePasses && !passClocks_)
+        passClocks_.emplace(std::array{PassClock(cpuRasterizer_), PassClock(cpuRasterizer_)});
+    if (options.timePasses) (*passClocks_)[0].start();
     entryExitBuffers_.render(*gpuSeries_, viewProjection, inverseViewProjection, options.size);
+    if (options.timePasses) (*passClocks_)[0].stop();
 
     target_.resize(options.size);
     target_.bind();
@@ -176,9 +180,17 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     const PixelRectangle covered = coveredPixels(rendered, view.projectionMatrix * view.viewMatrix, options.size);
     glEnable(GL_SCISSOR_TEST);
     glScissor(covered.offset.x, covered.offset.y, covered.size.x, covered.size.y);
+    variant = partOf(variant, options.raycastPart);
+    if (options.timePasses) (*passClocks_)[1].start();
     raycaster_.draw(variant, parameters);
+    if (options.timePasses) (*passClocks_)[1].stop();
     glDisable(GL_SCISSOR_TEST);
     lastVariant_ = std::move(variant);
+}
+
+FramePassTimes Renderer::lastPassTimes() const {
+    if (!passClocks_) throw std::logic_error("Renderer::lastPassTimes without a frame drawn with timePasses");
+    return {(*passClocks_)[0].milliseconds(), (*passClocks_)[1].milliseconds()};
 }
 
 std::size_t Renderer::seriesTextureBytes() const {

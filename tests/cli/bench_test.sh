@@ -87,4 +87,28 @@ case_wide_size() {
     expect_stderr_contains "expected WIDTHxHEIGHT"
 }
 
+# --stages: a second table of each case's passes and parts (entry/exit, raycasting, its ray setup,
+# march and sampling), the same in the JSON; --distributed does not take it.
+case_stages() {
+    run_tstyles -- bench --sizes 24 --frames 1 --warmup 0 --datasets superellipsoid --stages \
+        --json "$SCRATCH/stages.json"
+    expect_exit 0
+    expect_rows superellipsoid 10 24x24
+    grep -q "^ms per pass and part" "$OUT_FILE" || fail "no table of passes and parts"
+    grep -qE "^dataset +compositor +size +entry/exit +raycast +ray setup +march +sampling +march alone +march samples" \
+        "$OUT_FILE" || fail "the stage table's header differs"
+    local stage_rows
+    stage_rows=$(grep -cE "^superellipsoid +temporal-[a-z-]+ +24x24( +-?[0-9]+\.[0-9]){6} +[0-9]+$" "$OUT_FILE")
+    [ "$stage_rows" -eq 3 ] || fail "expected 3 stage rows, found $stage_rows"
+    local in_json
+    in_json=$(grep -c '"stages_gpu_ms"' "$SCRATCH/stages.json")
+    [ "$in_json" -eq 3 ] || fail "expected 3 cases with stages in the JSON, found $in_json"
+    for key in entry_exit raycast ray_setup march sampling march_alone march_alone_samples; do
+        grep -q "\"$key\":" "$SCRATCH/stages.json" || fail "no $key in the JSON's stages"
+    done
+    run_tstyles -- bench --distributed --stages --sizes 24 --frames 1 --warmup 0
+    expect_exit 2
+    expect_stderr_contains "--stages"
+}
+
 run_case

@@ -75,19 +75,20 @@ private:
     GlHandle<VertexArrayTraits> handle_;
 };
 
-// A GPU timestamp pair for measuring one pass.
+// The GPU time of the commands between begin() and end() (GL_TIME_ELAPSED: the time the GPU
+// spent on them, which llvmpipe measures in its rasterizer threads; timestamps would give it the
+// time the commands were queued). One such query runs at a time.
 class TimerQuery {
 public:
     static TimerQuery create();
-    void begin() const { glQueryCounter(start_.id(), GL_TIMESTAMP); }
-    void end() const { glQueryCounter(stop_.id(), GL_TIMESTAMP); }
-    // Waits for the result; milliseconds between begin() and end() on the GPU.
+    void begin() const { glBeginQuery(GL_TIME_ELAPSED, query_.id()); }
+    void end() const { glEndQuery(GL_TIME_ELAPSED); }
+    // Waits for the result; milliseconds the GPU spent between begin() and end().
     double milliseconds() const;
 
 private:
-    TimerQuery(GLuint start, GLuint stop) : start_(start), stop_(stop) {}
-    GlHandle<QueryTraits> start_;
-    GlHandle<QueryTraits> stop_;
+    explicit TimerQuery(GLuint query) : query_(query) {}
+    GlHandle<QueryTraits> query_;
 };
 
 }  // namespace tstyles

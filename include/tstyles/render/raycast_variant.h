@@ -21,6 +21,16 @@ enum class TimeStepWalk {
 
 const char* walkName(TimeStepWalk walk);  // "ray list", "packed groups", "naive"
 
+// How much of the raycasting pass the program runs: all of it for pictures; one of its first parts
+// alone for `bench --stages`, which times each to see where a frame's time goes.
+enum class RaycastPart {
+    Whole,
+    RaySetup,  // each ray's overlap extraction and the walk's list, then the pixel ends
+    March,     // the samples' lattice, the walk and the empty-space test; nothing fetched or composited
+};
+
+const char* raycastPartName(RaycastPart part);  // "whole", "ray setup", "march"
+
 struct RaycastVariant {
     TemporalCompositor compositor = TemporalCompositor::MaxIntensityProjection;
     // TemporalCompositor::Custom: the scene's code, its name in compiler messages, what reads it.
@@ -60,6 +70,7 @@ struct RaycastVariant {
     // The compositor leaves unchanged places without time colour (CompositorOptions::unchanged;
     // compositors whose table line takesUnchanged).
     bool unchangedTime = false;
+    RaycastPart part = RaycastPart::Whole;
 
     auto operator<=>(const RaycastVariant&) const = default;
 
@@ -83,9 +94,14 @@ int timeStepCapacityFor(int timeStepCount);
 inline constexpr double kMinEmptyBrickShare = 0.05;
 bool skipsEmptyBricks(double emptyBrickShare);
 
+// The program that runs `part` of `whole`'s pass: the same walk, grids and switches, and one
+// compositor without styles for all (the parts end before a compositor runs).
+RaycastVariant partOf(const RaycastVariant& whole, RaycastPart part);
+
 // Every variant a frame can ask for, up to the array capacity (which changes array sizes only):
 // every compositor x walk x grid kind x styled, with masks and statistics on and off (the custom
-// compositor with an example body that reads each input, for both of its readers). The build
+// compositor with an example body that reads each input, for both of its readers), and the parts
+// of each (partOf). The build
 // validates each of them (tools/validate_raycast_variants.cpp).
 std::vector<RaycastVariant> requestableRaycastVariants();
 

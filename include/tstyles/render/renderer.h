@@ -3,6 +3,7 @@
 // work (transfer-function baking) only when the scene's functions change, per-frame work in draw.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 
@@ -12,6 +13,7 @@
 #include "tstyles/render/entry_exit_buffers.h"
 #include "tstyles/render/gpu_memory_budget.h"
 #include "tstyles/render/gpu_series.h"
+#include "tstyles/render/pass_clock.h"
 #include "tstyles/render/precomputed_gradients.h"
 #include "tstyles/render/raycaster.h"
 #include "tstyles/render/render_target.h"
@@ -49,6 +51,17 @@ struct FrameOptions {
     // Renders only the parts of the rays inside this world box (one process's block of a
     // distributed render, docs/scaling.md); none: whole rays.
     std::optional<Bounds> clipBox;
+    // The raycasting pass whole, or one of its first parts alone (RaycastPart), for `bench --stages`.
+    RaycastPart raycastPart = RaycastPart::Whole;
+    // Times the frame's passes (lastPassTimes): timer queries on a GPU; on a CPU rasterizer with
+    // glFinish after each pass, which the frame's own time then includes.
+    bool timePasses = false;
+};
+
+// Milliseconds of a frame's passes on the device (FrameOptions::timePasses; PassClock).
+struct FramePassTimes {
+    double entryExitMs = 0.0;  // the proxies' entry and exit depths, every time-step
+    double raycastMs = 0.0;    // the raycasting pass (its RaycastPart)
 };
 
 // What a renderer holding one block of a series needs to know of the whole: its finest spacing
@@ -82,6 +95,8 @@ public:
     void draw(const Scene& scene, const View& view, const FrameOptions& options);
     // The last frame's pixels.
     Image readFrame() const { return target_.read(); }
+    // The passes' times of the last frame drawn with timePasses (waits for the GPU).
+    FramePassTimes lastPassTimes() const;
     // Counters of the last frame drawn with collectStatistics.
     RaycastStatistics lastStatistics() const { return raycaster_.lastStatistics(); }
     // The raycast program of the last frame: the walk, caches, empty-brick test and gradients it
@@ -119,6 +134,8 @@ private:
     EntryExitBuffers entryExitBuffers_;
     Raycaster raycaster_;
     RenderTarget target_;
+    // Made at the first frame drawn with timePasses: entry/exit and raycasting.
+    std::optional<std::array<PassClock, 2>> passClocks_;
 };
 
 // Renders one scene headless: loads nothing, just draws and reads back. Convenience for the CLI
