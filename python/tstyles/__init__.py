@@ -12,8 +12,7 @@ temporal compositors and temporal style transfer functions by the same C++ rende
 
 from .rendering import Image, Renderer, read_image, render, upload_count
 from .scene import Scene, built_in_styles
-from .series import Series, open
-from .xarray_series import from_xarray
+from .series import Series, from_xarray, open
 
 __all__ = ["Image", "Renderer", "Scene", "Series", "built_in_styles", "from_xarray", "open", "read_image", "render",
            "upload_count"]

@@ -9,6 +9,13 @@ from . import _native
 # Where a scene made in Python names no dataset: the command line's stand-in for "none".
 _NO_DATASET = "-"
 
+# The names a scene's "compositor" takes (docs/compositors.md), in the order of the C++ table
+# (src/scene/temporal_compositors.cpp) and of the scene reader's "allowed values". The table's last
+# line, the scene's own GLSL compositor, has no name here: it is an object with "glsl" or "file".
+# _native does not list them; tests/python/test_render.py checks this list against the reader's.
+_COMPOSITORS = ("temporal-mip", "temporal-average", "temporal-max-change", "temporal-min", "temporal-std-dev",
+                "time-of-max", "first-arrival", "last-above", "linear-trend", "chronovolume", "difference")
+
 
 class Scene:
     """How a series is seen and classified: camera, STF, TSTFs (with lit-sphere styles), compositor.
@@ -92,7 +99,9 @@ class Scene:
 
     # The keys most scripts change, as attributes.
     compositor = property(lambda self: self["compositor"], lambda self, v: self.__setitem__("compositor", v),
-                          doc="temporal-mip, temporal-average or temporal-max-change")
+                          doc=f"A name ({', '.join(_COMPOSITORS)}), or an object: a name with its options "
+                              "(threshold, steps, unchanged) or the scene's own GLSL compositor (glsl or file, "
+                              "with reads); docs/scene-format.md")
     final_mode = property(lambda self: self["final"], lambda self, v: self.__setitem__("final", v),
                           doc="stf, tstf or modulate")
     camera = property(lambda self: self["camera"], lambda self, v: self.__setitem__("camera", v))

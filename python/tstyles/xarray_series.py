@@ -1,11 +1,13 @@
-"""xarray.DataArray to Series: dimensions and coordinates from the array, CF attributes read the way
-the NetCDF reader reads them (the same C++ code: src/data/cf_conventions.cpp), time stamps as
-numpy datetime64, cftime dates or numbers with CF units."""
+"""xarray.DataArray to the spec of a series (_native.build_series; tstyles.from_xarray wraps the
+result): dimensions and coordinates from the array, CF attributes read the way the NetCDF reader
+reads them (the same C++ code: src/data/cf_conventions.cpp), time stamps as numpy datetime64,
+cftime dates or numbers with CF units. xarray itself is not imported: the array is read through
+its own attributes."""
 
 import numpy as np
 
 from . import _native
-from .series import Series, _array_spec, _fail, _native_order, time_values
+from ._arrays import UNIX_EPOCH, array_spec, fail, native_order, time_values
 
 _CF_KEYS = ("units", "standard_name", "axis", "positive")
 
@@ -32,7 +34,7 @@ def _looks_like_time(array, dimension):
 def _time_dimension(array, time_dim, source, name):
     if time_dim is not None:
         if time_dim not in array.dims:
-            _fail(source, "time_dim", f'variable {name} has no dimension "{time_dim}"')
+            fail(source, "time_dim", f'variable {name} has no dimension "{time_dim}"')
         return time_dim
     return next((d for d in array.dims if _looks_like_time(array, d)), None)
 
@@ -48,7 +50,7 @@ def _times(array, time_dim, source):
     calendar = coordinate.encoding.get("calendar", coordinate.attrs.get("calendar", ""))
     if coordinate.dtype.kind == "M":
         if not units:
-            units, calendar = "seconds since 1970-01-01 00:00:00", "proleptic_gregorian"
+            units, calendar = UNIX_EPOCH, "proleptic_gregorian"
         return time_values(coordinate.values, units, calendar, source, time_dim), units, calendar
     if _is_date(coordinate):
         calendar = calendar or coordinate.values.flat[0].calendar
@@ -67,40 +69,33 @@ def _packing(array):
     return markers, float(array.attrs.get("scale_factor", 1.0)), float(array.attrs.get("add_offset", 0.0))
 
 
-def from_xarray(array, *, time_dim=None, value_range=None, precision=16):
-    """The series of an xarray.DataArray of three spatial dimensions and optionally time.
-
-    The time dimension is found as the NetCDF reader finds it (a datetime coordinate, axis = "T",
-    units "... since ...", or a name like time) unless time_dim names it. The other dimensions are
-    z, y, x in order (x fastest); their coordinates place the grid (uneven ones too), with
-    depths and pressures turned so that +z is up. NaN (xarray's decoded fill values) is missing.
-    """
+def data_array_spec(array, *, time_dim, value_range, precision):
+    """What _native.build_series takes for an xarray.DataArray (tstyles.from_xarray says how it is read)."""
     name = str(array.name) if array.name is not None else "data"
     source = f"DataArray '{name}'"
     dimension = _time_dimension(array, time_dim, source, name)
     rank = array.ndim
     if rank not in (3, 4):
-        _fail(source, name, f"has {rank} dimensions {_dimension_list(array)}: a volume series needs three spatial "
-                            "dimensions and optionally time")
+        fail(source, name, f"has {rank} dimensions {_dimension_list(array)}: a volume series needs three spatial "
+                           "dimensions and optionally time")
     if rank == 4 and dimension is None:
-        _fail(source, name, f"cannot find the time dimension among {_dimension_list(array)}: no dimension has a "
-                            "datetime coordinate, axis = \"T\" or units \"... since ...\", and none is named like "
-                            "time; name it with time_dim")
+        fail(source, name, f"cannot find the time dimension among {_dimension_list(array)}: no dimension has a "
+                           "datetime coordinate, axis = \"T\" or units \"... since ...\", and none is named like "
+                           "time; name it with time_dim")
     if rank == 3 and dimension is not None:
-        _fail(source, name, f"has only two spatial dimensions besides time {_dimension_list(array)}: a volume "
-                            "needs three")
+        fail(source, name, f"has only two spatial dimensions besides time {_dimension_list(array)}: a volume "
+                           "needs three")
     spatial = [d for d in array.dims if d != dimension]
     ordered = array.transpose(*([dimension] if dimension else []), *spatial)
-    values = _native_order(np.asarray(ordered.values))  # a view where xarray holds numpy data
+    values = native_order(np.asarray(ordered.values))  # a view where xarray holds numpy data
     data = values if dimension else values[np.newaxis]
     z, y, x = spatial
     coordinates = {axis: array.coords[d].values for axis, d in zip("xyz", (x, y, z)) if d in array.coords}
     attributes = [_attributes(array.coords[d]) if d in array.coords else {} for d in (x, y, z)]
     times, time_units, calendar = _times(array, dimension, source)
     markers, scale, offset = _packing(array)
-    spec = _array_spec(
+    return array_spec(
         data, spacing=None, coordinates=coordinates or None, origin=None, rotation=None, times=times, masks=None,
         value_range=value_range, name=name, value_unit=str(array.attrs.get("units", "")), time_units=time_units,
         calendar=calendar, axes=None, precision=precision, source=source, source_format="xarray DataArray",
         coordinate_attributes=attributes, axis_names=[x, y, z], missing_values=markers, scale=scale, offset=offset)
-    return Series._wrap(_native.build_series(spec))

@@ -158,3 +158,15 @@ def test_render_errors_are_value_errors_with_the_cli_message(backend):
         with pytest.raises(ValueError) as error:
             tstyles.Scene({"compositor": "temporal-median"})
         assert str(error.value).startswith("scene: compositor: ")
+
+
+def test_the_compositor_names_are_the_scene_readers():
+    # _native lists no compositors: the reader's own list is the one in its message for an unknown name.
+    with pytest.raises(ValueError) as error:
+        tstyles.Scene({"compositor": "temporal-median"})
+    allowed = str(error.value).split("; allowed values: ", 1)[1].split(", ")
+    assert allowed == list(tstyles.scene._COMPOSITORS)
+    for name in allowed:
+        assert name in tstyles.Scene.compositor.__doc__
+        compositor = tstyles.Scene({"compositor": name}).compositor  # with its options' defaults: an object
+        assert (compositor if isinstance(compositor, str) else compositor["name"]) == name

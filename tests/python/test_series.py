@@ -1,6 +1,8 @@
 """tstyles.Series from numpy arrays, xarray DataArrays and files: no OpenGL needed."""
 
+import ast
 import gc
+import pathlib
 
 import numpy as np
 import pytest
@@ -201,3 +203,31 @@ def test_xarray_arrays_of_the_wrong_rank_say_so():
         tstyles.from_xarray(xr.DataArray(np.zeros((2, 3)), name="t2m", dims=("lat", "lon")))
     assert str(error.value) == ("DataArray 't2m': t2m: has 2 dimensions (lat = 2, lon = 3): a volume series needs "
                                 "three spatial dimensions and optionally time")
+
+
+def test_the_package_modules_import_one_another_without_a_cycle():
+    # Every import, lazy ones inside functions too, of one module of the package by another.
+    package = pathlib.Path(tstyles.__file__).parent
+    modules = {path.stem for path in package.glob("*.py")}
+    imports = {}
+    for module in modules:
+        tree = ast.parse((package / f"{module}.py").read_text())
+        named = set()
+        for node in ast.walk(tree):
+            if isinstance(node, ast.ImportFrom) and node.level == 1:
+                named |= {node.module.split(".")[0]} if node.module else {alias.name for alias in node.names}
+            elif isinstance(node, ast.ImportFrom) and (node.module or "").startswith("tstyles."):
+                named.add(node.module.split(".")[1])
+            elif isinstance(node, ast.Import):
+                named |= {alias.name.split(".")[1] for alias in node.names if alias.name.startswith("tstyles.")}
+        imports[module] = named & (modules - {"__init__"})
+
+    def cycle_from(module, path):
+        if module in path:
+            return path[path.index(module):] + [module]
+        return next((c for m in sorted(imports.get(module, ())) if (c := cycle_from(m, path + [module]))), None)
+
+    # The scan sees the layering: Series wraps the xarray conversion, both build on _arrays.
+    assert imports["series"] >= {"_arrays", "xarray_series"} and imports["xarray_series"] >= {"_arrays"}
+    for module in sorted(modules):
+        assert cycle_from(module, []) is None, " -> ".join(cycle_from(module, []))
