@@ -5,9 +5,7 @@
 // gradient (6 fetches) when styled.
 #include "temporal_sample.glsl"
 #include "compositor.glsl"
-
-// The gradient TSTF's range: `value` from [changeRange.x, changeRange.y] goes to [0, 1].
-uniform vec2 changeRange;
+#include "raycast_uniforms.glsl"
 
 // The sample's colour and opacity for a compositor's characteristic.
 vec4 styledCharacteristic(TemporalCharacteristic c, vec3 position, inout int fetches) {

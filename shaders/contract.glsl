@@ -74,6 +74,10 @@ CONTRACT_CONSTANT(int, FINAL_STF, 0)
 CONTRACT_CONSTANT(int, FINAL_TSTF, 1)
 CONTRACT_CONSTANT(int, FINAL_MODULATE, 2)
 
+// Transfer functions that may hold lit-sphere styles (styles.glsl): the STF, the index TSTF and the
+// gradient TSTF; the uniform styleTracks has one entry each.
+CONTRACT_CONSTANT(int, STYLE_TRACK_COUNT, 3)
+
 // Per-time-step description: where its samples are in the world, where its brick is in the atlas.
 struct TimeStepInfo {
     mat4 worldToVoxel;  // world position -> voxel coordinates (sample (i,j,k) sits at (i,j,k));

@@ -1,8 +1,7 @@
 // Final processing (paper 5.5): return the STF value, the TSTF value or the STF modulated by the
 // TSTF. Outside a segmentation mask the time-invariant STF applies.
 #include "contract.glsl"
-
-uniform int finalMode;
+#include "raycast_uniforms.glsl"
 
 // Whether finalProcessing's result depends on its STF or on its TSTF argument: a classification
 // that is not shown needs no style (and no gradient for one).

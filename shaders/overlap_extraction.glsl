@@ -6,10 +6,7 @@
 #include "variant_switches.glsl"
 #include "time_steps.glsl"
 layout(binding = ENTRY_EXIT_UNIT) uniform sampler2DArray entryExitDepths;
-uniform int timeStepCount;
-// The time-steps that take part, first and last inclusive: the scene's exposure, or one time-step
-// alone (plain playback).
-uniform ivec2 exposedSteps;
+#include "raycast_uniforms.glsl"
 
 
 // The time-steps this ray meets, in order of entry, with their own [entry, exit] interval.

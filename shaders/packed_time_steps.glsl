@@ -22,9 +22,7 @@ layout(binding = PACKED_OCCUPANCY_UNIT) uniform usampler3D packedOccupancy;
 // a time-step of group g is visible under the STF. One fetch gives a sample both.
 layout(binding = PACKED_GROUP_MASK_UNIT) uniform usampler3D packedGroupMasks;
 layout(binding = PACKED_VALIDITY_UNIT) uniform sampler3D packedValidity;
-uniform vec3 inversePackedAtlasSize;
-uniform vec3 inverseSharedValiditySize;
-uniform int packedGroupCount;
+#include "raycast_uniforms.glsl"
 
 layout(std430, binding = PACKED_GROUP_BUFFER) readonly buffer PackedGroups {
     vec4 origin[];  // xyz: first texel of each group of four time-steps in the packed atlas

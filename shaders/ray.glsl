@@ -1,7 +1,6 @@
 // The viewing ray of a pixel. Entry/exit depths and the ray iteration both measure the ray
 // parameter t from the point where the ray crosses the near plane, so they agree exactly.
-uniform mat4 inverseViewProjection;
-uniform vec2 viewportSize;
+#include "raycast_uniforms.glsl"
 
 struct Ray {
     vec3 origin;     // on the near plane

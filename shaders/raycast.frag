@@ -6,25 +6,11 @@
 // picks the modules that "compositor.glsl" and "time_step_walk.glsl" stand for and the switches.
 #include "contract.glsl"
 #include "variant_switches.glsl"
+#include "raycast_uniforms.glsl"
 #include "ray.glsl"
 #include "overlap_extraction.glsl"
 #include "temporal_compositor.glsl"
 
-uniform float stepLength;       // world units between samples
-uniform float referenceLength;  // the length over which a transfer-function opacity applies
-uniform float terminationOpacity;
-uniform vec4 background;        // straight (not premultiplied) colour and opacity
-// The part of the world this pass renders: one process's block in distributed rendering
-// (sort-last, docs/scaling.md), else a box around everything. A ray's segment belongs to the block
-// its middle lies in, so the blocks take exactly the samples of one whole render between them.
-uniform vec3 clipLower;
-uniform vec3 clipUpper;
-// The world box of the whole series. Segment ends sit on a lattice of stepLength along each ray,
-// anchored where the ray enters this box: after a jump over empty space the ray is back on the
-// lattice from the next lattice point on, and a process's block (whose part of the ray starts
-// elsewhere) takes the same samples as one whole render.
-uniform vec3 seriesLower;
-uniform vec3 seriesUpper;
 
 // The first lattice point after t; a segment shorter than 1 % of a step joins the next one (float
 // rounding must never make an empty segment).

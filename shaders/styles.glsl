@@ -14,11 +14,7 @@ const int STF_TRACK = 0;
 const int INDEX_TSTF_TRACK = 1;
 const int GRADIENT_TSTF_TRACK = 2;
 
-uniform ivec2 styleTracks[3];  // offset and count of each track's nodes; count 0: not styled
-uniform mat3 worldToView;
-// How far apart, in the style image, neighbouring pixels look: the pixel's world footprint over the
-// radius of the smallest curved feature the grid resolves. Feeds the mipmapped lookup.
-uniform float styleFootprint;
+#include "raycast_uniforms.glsl"
 
 struct SphereCoordinate {
     vec2 uv;

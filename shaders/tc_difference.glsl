@@ -7,8 +7,6 @@ const int COMPOSITOR_READS = READS_GRADIENT_TSTF;
 const bool COMPOSITOR_IGNORES_TRANSPARENT = false;
 const bool COMPOSITOR_READS_TRANSPARENT_COLOUR = false;
 
-uniform ivec2 compositorSteps;  // from, to
-
 struct CompositorState {
     TimeStepSample from;
     TimeStepSample to;

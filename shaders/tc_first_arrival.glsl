@@ -8,8 +8,6 @@ const int COMPOSITOR_READS = READS_INDEX_TSTF;
 const bool COMPOSITOR_IGNORES_TRANSPARENT = false;
 const bool COMPOSITOR_READS_TRANSPARENT_COLOUR = false;
 
-uniform float compositorThreshold;
-
 struct CompositorState {
     TimeStepSample first;
     // UNCHANGED_TIME: the densities' range over the time-steps with data, and how many there are.

@@ -87,20 +87,9 @@ TemporalCharacteristic compositedCharacteristic(vec4 colorOpacity) {
     return TemporalCharacteristic(READS_COMPOSITED, 0.0, noTimeStep(), colorOpacity);
 }
 
-// Unchanged places (UNCHANGED_TIME, CompositorOptions::unchanged): where the densities at a sample
-// change over the time-steps by no more than `unchangedBelow` (density units), or the time-step a
-// compositor picks is ahead of the runner-up by no more than `unchangedTie` (a tie: the time is
-// noise's choice), no time colour shows: the STF alone, with unchangedOpacity of its opacity.
-// Both per band of the picked time-step's density (contract.glsl's UNCHANGED_DENSITY_BANDS).
-uniform float unchangedBelow[UNCHANGED_DENSITY_BANDS];
-uniform float unchangedTie[UNCHANGED_DENSITY_BANDS];
-uniform float unchangedOpacity;
-// A place whose time shows is as opaque as if this many times as thick (CompositorOptions::unchanged's gain).
-uniform float changedGain;
-// An unchanged place keeps its whole share where the value gradient is this steep (density per world
-// length), down to UNCHANGED_INTERIOR of it where the value is flat; 0: the whole share everywhere
-// (CompositorOptions::unchanged's boundary).
-uniform float unchangedBoundary;
+// Unchanged places (UNCHANGED_TIME, CompositorOptions::unchanged): their uniforms (unchangedBelow,
+// unchangedTie, unchangedOpacity, changedGain, unchangedBoundary) are in raycast_uniforms.glsl.
+#include "raycast_uniforms.glsl"
 const float UNCHANGED_INTERIOR = 0.25;
 
 // The characteristic of the time-step a compositor picked, where the densities at the sample span

@@ -15,8 +15,7 @@ struct TemporalSample {
     float emptyUntil;
 };
 
-// Densities outside this range have STF opacity 0 (render/transfer_tables.h, visibleDensityRange).
-uniform vec2 stfVisibleRange;
+// Densities outside stfVisibleRange have STF opacity 0 (render/transfer_tables.h, visibleDensityRange).
 
 bool stfMayBeVisible(float density) {
     return density >= stfVisibleRange.x && density <= stfVisibleRange.y;

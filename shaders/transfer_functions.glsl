@@ -4,7 +4,7 @@
 #include "contract.glsl"
 layout(binding = STF_UNIT) uniform sampler1D stfTable;
 layout(binding = GRADIENT_TSTF_UNIT) uniform sampler1D gradientTstfTable;
-uniform float transferTableSize;
+#include "raycast_uniforms.glsl"
 
 layout(std430, binding = INDEX_TSTF_BUFFER) readonly buffer IndexTstf {
     vec4 colorOpacity[];

@@ -4,7 +4,7 @@
 #include "time_steps.glsl"
 #include "uneven_axes.glsl"
 layout(binding = ATLAS_UNIT) uniform sampler3D densityAtlas;
-uniform vec3 inverseAtlasSize;
+#include "raycast_uniforms.glsl"
 
 #include "structured_grid.glsl"
 #include "beam_grid.glsl"

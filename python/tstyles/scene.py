@@ -28,8 +28,8 @@ class Scene:
     def __init__(self, content=None):
         """A scene from a dict (the JSON of a scene file), JSON text, or the defaults."""
         if content is None:
-            self._native = _native.Scene()
-        elif isinstance(content, str):
+            content = {}  # the reader's defaults, read as a file without a dataset would be
+        if isinstance(content, str):
             self._native = _native.scene_from_json(content, "scene")
         else:
             self._native = _from_dict(content)

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <iterator>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -13,6 +14,68 @@
 #include "tstyles/gl/embedded_shaders.h"
 
 namespace tstyles {
+
+namespace {
+
+// A compiler message's line in a file and its text.
+struct LocatedMessage {
+    std::string line;
+    std::string message;
+};
+
+// ":L[:C]: [error[:]] MESSAGE" after the file name; hand-parsed, since GCC 12's <regex> does not
+// build warning-free under the sanitizers.
+std::optional<LocatedMessage> locatedMessage(const std::string& rest) {
+    std::size_t at = 0;
+    auto digits = [&] {
+        const std::size_t begin = at;
+        while (at < rest.size() && std::isdigit(static_cast<unsigned char>(rest[at]))) ++at;
+        return rest.substr(begin, at - begin);
+    };
+    if (at >= rest.size() || rest[at++] != ':') return std::nullopt;
+    const std::string line = digits();
+    if (line.empty()) return std::nullopt;
+    if (at < rest.size() && rest[at] == ':' && at + 1 < rest.size() &&
+        std::isdigit(static_cast<unsigned char>(rest[at + 1]))) {
+        ++at;
+        digits();
+    }
+    if (at >= rest.size() || rest[at++] != ':') return std::nullopt;
+    while (at < rest.size() && std::isspace(static_cast<unsigned char>(rest[at]))) ++at;
+    if (rest.compare(at, 5, "error") == 0) {
+        at += 5;
+        if (at < rest.size() && rest[at] == ':') ++at;
+        while (at < rest.size() && std::isspace(static_cast<unsigned char>(rest[at]))) ++at;
+    }
+    return LocatedMessage{line, rest.substr(at)};
+}
+
+}  // namespace
+
+std::string firstCompileErrorIn(const std::string& log, const std::string& file) {
+    std::istringstream lines(log);
+    std::string line;
+    std::string first;
+    int more = 0;
+    while (std::getline(lines, line)) {
+        const std::size_t at = line.find(file + ":");
+        if (at == std::string::npos) continue;
+        const auto located = locatedMessage(line.substr(at + file.size()));
+        if (!located) continue;
+        if (!first.empty()) {
+            more += line.find("error") != std::string::npos ? 1 : 0;
+            continue;
+        }
+        first = "line " + located->line + ": does not compile: " + located->message;
+    }
+    if (first.empty()) {
+        // Nothing names the code's own lines (an error the code causes in the program around it).
+        std::istringstream whole(log);
+        while (std::getline(whole, line) && line.find("error") == std::string::npos) {}
+        return "does not compile: " + (line.empty() ? log.substr(0, log.find('\n')) : line);
+    }
+    return more == 0 ? first : first + " (and " + std::to_string(more) + " more errors)";
+}
 
 ShaderLibrary ShaderLibrary::embedded() { return ShaderLibrary(); }
 
@@ -63,12 +126,37 @@ namespace {
 
 bool isIdentifierCharacter(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
+// A uniform declared through a macro, `SOMETHING_UNIFORM(TYPE, NAME)` or
+// `SOMETHING_UNIFORM_ARRAY(TYPE, NAME, COUNT)` at the start of a line (shaders/raycast_uniforms.glsl):
+// its NAME, or nothing.
+std::optional<std::string> macroDeclaredUniform(const std::string& line) {
+    const auto before = line.find_first_not_of(" \t");
+    if (before == std::string::npos) return std::nullopt;
+    std::size_t at = before;
+    while (at < line.size() && isIdentifierCharacter(line[at])) ++at;
+    const std::string macro = line.substr(before, at - before);
+    const bool declares = macro.ends_with("_UNIFORM") || macro.ends_with("_UNIFORM_ARRAY");
+    if (!declares || at >= line.size() || line[at] != '(') return std::nullopt;
+    const auto comma = line.find(',', at);
+    if (comma == std::string::npos) return std::nullopt;
+    std::size_t begin = comma + 1;
+    while (begin < line.size() && !isIdentifierCharacter(line[begin])) ++begin;
+    std::size_t end = begin;
+    while (end < line.size() && isIdentifierCharacter(line[end])) ++end;
+    if (end == begin) return std::nullopt;
+    return line.substr(begin, end - begin);
+}
+
 // The names of the default-block uniforms that a flattened stage declares:
-// `[layout(...)] uniform TYPE NAME[, NAME...][[N]];`.
+// `[layout(...)] uniform TYPE NAME[, NAME...][[N]];`, or through a macro (macroDeclaredUniform).
 void collectUniformNames(const std::string& text, std::unordered_set<std::string>& names) {
     std::istringstream lines(text);
     std::string line;
     while (std::getline(lines, line)) {
+        if (auto declared = macroDeclaredUniform(line)) {
+            names.insert(std::move(*declared));
+            continue;
+        }
         const auto keyword = line.find("uniform ");
         if (keyword == std::string::npos) continue;
         const auto before = line.find_first_not_of(" \t");
@@ -174,6 +262,9 @@ void Program::set(const char* name, const glm::ivec3& value) const {
 }
 void Program::set(const char* name, std::span<const float> values) const {
     glProgramUniform1fv(id(), location(name), GLsizei(values.size()), values.data());
+}
+void Program::set(const char* name, std::span<const glm::ivec2> values) const {
+    glProgramUniform2iv(id(), location(name), GLsizei(values.size()), glm::value_ptr(values.front()));
 }
 void Program::set(const char* name, const glm::mat3& value) const {
     glProgramUniformMatrix3fv(id(), location(name), 1, GL_FALSE, glm::value_ptr(value));

@@ -1,4 +1,5 @@
 // Rasterising the proxies into a layered texture of entry and exit depths.
+#include "tstyles/render/raycast_uniforms.h"
 #include "tstyles/render/entry_exit_buffers.h"
 
 #include <array>
@@ -58,8 +59,9 @@ void EntryExitBuffers::render(const GpuSeries& series, const glm::mat4& viewProj
     emptyVertexArray_.bind();
     for (const Program* program : {&program_, &meshProgram_}) {
         program->set("viewProjection", viewProjection);
-        program->set("inverseViewProjection", inverseViewProjection);
-        program->set("viewportSize", glm::vec2(viewport));
+        // The ray's uniforms (ray.glsl), which the raycasting program shares.
+        program->set(raycast_uniform::inverseViewProjection, inverseViewProjection);
+        program->set(raycast_uniform::viewportSize, glm::vec2(viewport));
     }
     if (series.proxyBoxCount() > 0) {
         program_.use();

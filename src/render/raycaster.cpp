@@ -2,11 +2,9 @@
 #include "tstyles/render/raycaster.h"
 
 #include <array>
-#include <cctype>
-#include <optional>
-#include <sstream>
 #include <string>
 
+#include "tstyles/render/raycast_uniforms.h"
 #include "tstyles/render/shader_contract.h"
 #include "tstyles/render/brick_occupancy.h"
 #include "tstyles/render/transfer_tables.h"
@@ -15,66 +13,6 @@
 
 namespace tstyles {
 namespace {
-
-// One line for a compiler log about the scene's code, which compiler messages call `file`: the
-// first error there as "line L: does not compile: MESSAGE" (Mesa writes "file:L:C: error: ...",
-// NVIDIA "file:L: error ..."), and how many more errors followed.
-struct LocatedMessage {
-    std::string line;
-    std::string message;
-};
-
-// ":L[:C]: [error[:]] MESSAGE" after the file name; hand-parsed, since GCC 12's <regex> does not
-// build warning-free under the sanitizers.
-std::optional<LocatedMessage> locatedMessage(const std::string& rest) {
-    std::size_t at = 0;
-    auto digits = [&] {
-        const std::size_t begin = at;
-        while (at < rest.size() && std::isdigit(static_cast<unsigned char>(rest[at]))) ++at;
-        return rest.substr(begin, at - begin);
-    };
-    if (at >= rest.size() || rest[at++] != ':') return std::nullopt;
-    const std::string line = digits();
-    if (line.empty()) return std::nullopt;
-    if (at < rest.size() && rest[at] == ':' && at + 1 < rest.size() &&
-        std::isdigit(static_cast<unsigned char>(rest[at + 1]))) {
-        ++at;
-        digits();
-    }
-    if (at >= rest.size() || rest[at++] != ':') return std::nullopt;
-    while (at < rest.size() && std::isspace(static_cast<unsigned char>(rest[at]))) ++at;
-    if (rest.compare(at, 5, "error") == 0) {
-        at += 5;
-        if (at < rest.size() && rest[at] == ':') ++at;
-        while (at < rest.size() && std::isspace(static_cast<unsigned char>(rest[at]))) ++at;
-    }
-    return LocatedMessage{line, rest.substr(at)};
-}
-
-std::string firstErrorIn(const std::string& log, const std::string& file) {
-    std::istringstream lines(log);
-    std::string line;
-    std::string first;
-    int more = 0;
-    while (std::getline(lines, line)) {
-        const std::size_t at = line.find(file + ":");
-        if (at == std::string::npos) continue;
-        const auto located = locatedMessage(line.substr(at + file.size()));
-        if (!located) continue;
-        if (!first.empty()) {
-            more += line.find("error") != std::string::npos ? 1 : 0;
-            continue;
-        }
-        first = "line " + located->line + ": does not compile: " + located->message;
-    }
-    if (first.empty()) {
-        // Nothing names the code's own lines (an error the code causes in the program around it).
-        std::istringstream whole(log);
-        while (std::getline(whole, line) && line.find("error") == std::string::npos) {}
-        return "does not compile: " + (line.empty() ? log.substr(0, log.find('\n')) : line);
-    }
-    return more == 0 ? first : first + " (and " + std::to_string(more) + " more errors)";
-}
 
 int finalModeCode(FinalMode mode) {
     switch (mode) {
@@ -85,9 +23,6 @@ int finalModeCode(FinalMode mode) {
     return contract::FINAL_MODULATE;
 }
 
-}  // namespace
-
-namespace {
 // The Statistics block of shaders/raycast.frag: rays, samples, fetches (64-bit pairs, filled with
 // COLLECT_STATISTICS) and rays cut short.
 constexpr std::size_t kStatisticsWords = 7;
@@ -109,50 +44,50 @@ const Program& Raycaster::programFor(const RaycastVariant& variant) {
     } catch (const std::runtime_error& error) {
         // With the scene's own code the compiler's complaint is about the user's input, and names its lines.
         if (variant.compositor != TemporalCompositor::Custom) throw;
-        throw InputError(variant.customCodeName + ": " + firstErrorIn(error.what(), variant.customCodeName));
+        throw InputError(variant.customCodeName + ": " + firstCompileErrorIn(error.what(), variant.customCodeName));
     }
 }
 
 void Raycaster::draw(const RaycastVariant& variant, const RaycastParameters& parameters) {
     const Program& program = programFor(variant);
-    program.set("inverseViewProjection", parameters.inverseViewProjection);
-    program.set("viewportSize", glm::vec2(parameters.viewport));
-    program.set("timeStepCount", parameters.timeStepCount);
-    program.set("exposedSteps", parameters.exposedSteps);
-    program.set("inverseAtlasSize", 1.0f / glm::vec3(parameters.atlasSize));
-    program.set("transferTableSize", float(kTransferTableSize));
-    program.set("stepLength", parameters.stepLength);
-    program.set("referenceLength", parameters.referenceLength);
-    program.set("terminationOpacity", parameters.terminationOpacity);
-    program.set("background", parameters.background);
-    program.set("clipLower", parameters.clipLower);
-    program.set("clipUpper", parameters.clipUpper);
-    program.set("seriesLower", parameters.seriesLower);
-    program.set("seriesUpper", parameters.seriesUpper);
-    program.set("finalMode", finalModeCode(parameters.finalMode));
-    program.set("changeRange", parameters.changeRange);
+    namespace u = raycast_uniform;
+    program.set(u::inverseViewProjection, parameters.inverseViewProjection);
+    program.set(u::viewportSize, glm::vec2(parameters.viewport));
+    program.set(u::timeStepCount, parameters.timeStepCount);
+    program.set(u::exposedSteps, parameters.exposedSteps);
+    program.set(u::inverseAtlasSize, 1.0f / glm::vec3(parameters.atlasSize));
+    program.set(u::transferTableSize, float(kTransferTableSize));
+    program.set(u::stepLength, parameters.stepLength);
+    program.set(u::referenceLength, parameters.referenceLength);
+    program.set(u::terminationOpacity, parameters.terminationOpacity);
+    program.set(u::background, parameters.background);
+    program.set(u::clipLower, parameters.clipLower);
+    program.set(u::clipUpper, parameters.clipUpper);
+    program.set(u::seriesLower, parameters.seriesLower);
+    program.set(u::seriesUpper, parameters.seriesUpper);
+    program.set(u::finalMode, finalModeCode(parameters.finalMode));
+    program.set(u::changeRange, parameters.changeRange);
     const TemporalCompositorInfo& compositor = compositorInfo(variant.compositor);
-    if (compositor.takesThreshold) program.set("compositorThreshold", parameters.compositorThreshold);
-    program.set("stfVisibleRange", parameters.stfVisibleRange);
-    if (compositor.takesSteps) program.set("compositorSteps", parameters.compositorSteps);
+    if (compositor.takesThreshold) program.set(u::compositorThreshold, parameters.compositorThreshold);
+    program.set(u::stfVisibleRange, parameters.stfVisibleRange);
+    if (compositor.takesSteps) program.set(u::compositorSteps, parameters.compositorSteps);
     if (variant.unchangedTime) {
-        program.set("unchangedBelow", std::span<const float>(parameters.unchangedBelow));
-        program.set("unchangedTie", std::span<const float>(parameters.unchangedTie));
-        program.set("changedGain", parameters.changedGain);
-        program.set("unchangedBoundary", parameters.unchangedBoundary);
-        program.set("unchangedOpacity", parameters.unchangedOpacity);
+        program.set(u::unchangedBelow, parameters.unchangedBelow);
+        program.set(u::unchangedTie, parameters.unchangedTie);
+        program.set(u::changedGain, parameters.changedGain);
+        program.set(u::unchangedBoundary, parameters.unchangedBoundary);
+        program.set(u::unchangedOpacity, parameters.unchangedOpacity);
     }
     if (variant.walk == TimeStepWalk::PackedGroups) {
-        program.set("packedGroupCount", parameters.packedGroupCount);
-        program.set("inversePackedAtlasSize", 1.0f / glm::vec3(parameters.packedAtlasSize));
+        program.set(u::packedGroupCount, parameters.packedGroupCount);
+        program.set(u::inversePackedAtlasSize, 1.0f / glm::vec3(parameters.packedAtlasSize));
         if (variant.packedValidity == PackedValidity::Shared)
-            program.set("inverseSharedValiditySize", 1.0f / glm::vec3(parameters.sharedValiditySize));
+            program.set(u::inverseSharedValiditySize, 1.0f / glm::vec3(parameters.sharedValiditySize));
     }
     if (variant.styled()) {
-        glProgramUniform2iv(program.id(), glGetUniformLocation(program.id(), "styleTracks"), 3,
-                            &parameters.styleTracks[0].x);
-        program.set("worldToView", parameters.worldToView);
-        program.set("styleFootprint", parameters.styleFootprint);
+        program.set(u::styleTracks, parameters.styleTracks);
+        program.set(u::worldToView, parameters.worldToView);
+        program.set(u::styleFootprint, parameters.styleFootprint);
     }
     statistics_.clearToZero();
     statistics_.bindBase(GL_SHADER_STORAGE_BUFFER, contract::STATISTICS_BUFFER);

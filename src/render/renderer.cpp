@@ -90,6 +90,31 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     target_.resize(options.size);
     target_.bind();
     entryExitBuffers_.bind();
+    RaycastVariant variant = variantFor(scene, options);
+    RaycastParameters parameters = parametersFor(scene, view, options, variant);
+    parameters.inverseViewProjection = inverseViewProjection;
+    // Rays through pixels outside the series' projected bounds meet no time-step and would give
+    // the background: clear to it and raycast only the rectangle that can differ.
+    const glm::vec4 premultipliedBackground(glm::vec3(parameters.background) * parameters.background.a,
+                                            parameters.background.a);
+    glDisable(GL_SCISSOR_TEST);
+    glClearNamedFramebufferfv(target_.framebufferId(), GL_COLOR, 0, &premultipliedBackground.x);
+    Bounds rendered = worldBounds_;
+    if (options.clipBox) {
+        rendered.lower = glm::max(rendered.lower, options.clipBox->lower);
+        rendered.upper = glm::max(rendered.lower, glm::min(rendered.upper, options.clipBox->upper));
+    }
+    const PixelRectangle covered = coveredPixels(rendered, view.projectionMatrix * view.viewMatrix, options.size);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(covered.offset.x, covered.offset.y, covered.size.x, covered.size.y);
+    if (options.timePasses) (*passClocks_)[1].start();
+    raycaster_.draw(variant, parameters);
+    if (options.timePasses) (*passClocks_)[1].stop();
+    glDisable(GL_SCISSOR_TEST);
+    lastVariant_ = std::move(variant);
+}
+
+RaycastVariant Renderer::variantFor(const Scene& scene, const FrameOptions& options) {
     RaycastVariant variant;
     variant.compositor = scene.compositor;
     if (const auto& custom = scene.compositorOptions.custom; scene.compositor == TemporalCompositor::Custom && custom) {
@@ -109,11 +134,30 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     variant.structuredGrids = gpuSeries_->structuredGrids().layerCount() > 0;
     variant.styledTracks = styleTextures_.styledTrackBits();
     variant.timeStepCapacity = timeStepCapacityFor(int(gpuSeries_->timeStepCount()));
-    variant.walk = options.naive ? TimeStepWalk::Naive : TimeStepWalk::RayList;
-    variant.skipEmptyBricks = skipsEmptyBricks(gpuSeries_->emptyBrickFraction());
+    variant.unchangedTime =
+        scene.compositorOptions.unchanged.has_value() && compositorInfo(scene.compositor).takesUnchanged;
+    // The walk: the packed groups where the series has a packed atlas and the frame takes it.
+    const PackedAlignedAtlas* packed = gpuSeries_->packedAtlas();
+    if (options.naive) {
+        variant.walk = TimeStepWalk::Naive;
+    } else if (packed && options.packAligned) {
+        variant.walk = TimeStepWalk::PackedGroups;
+        variant.packedValidity = packed->validity();
+        variant.packedGroupMasks = packed->hasGroupMasks();
+    } else {
+        variant.walk = TimeStepWalk::RayList;
+    }
+    const double emptyBrickShare = variant.walk == TimeStepWalk::PackedGroups ? gpuSeries_->emptyPackedBrickFraction()
+                                                                              : gpuSeries_->emptyBrickFraction();
+    variant.skipEmptyBricks = options.emptyBrickTest.value_or(skipsEmptyBricks(emptyBrickShare));
+    variant.perRayCaches = options.perRayCaches.value_or(cpuRasterizer_);
+    variant.precomputedGradients = gradients_.useFor(*gpuSeries_, variant.styled(), options.precomputedGradients);
+    return partOf(variant, options.raycastPart);
+}
 
+RaycastParameters Renderer::parametersFor(const Scene& scene, const View& view, const FrameOptions& options,
+                                          const RaycastVariant& variant) const {
     RaycastParameters parameters;
-    parameters.inverseViewProjection = inverseViewProjection;
     parameters.viewport = options.size;
     parameters.timeStepCount = int(gpuSeries_->timeStepCount());
     parameters.atlasSize = gpuSeries_->layout().size;
@@ -125,38 +169,30 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     parameters.changeRange = glm::vec2(float(scene.gradientTstf.rangeLow), float(scene.gradientTstf.rangeHigh));
     parameters.compositorThreshold = float(scene.compositorOptions.threshold);
     parameters.stfVisibleRange = transferTables_.stfVisibleRange();
-    if (const auto& unchanged = scene.compositorOptions.unchanged;
-        unchanged && compositorInfo(scene.compositor).takesUnchanged) {
-        variant.unchangedTime = true;
+    if (variant.unchangedTime) {
+        const auto& unchanged = *scene.compositorOptions.unchanged;
         static_assert(kUnchangedDensityBands == contract::UNCHANGED_DENSITY_BANDS);
         for (int band = 0; band < contract::UNCHANGED_DENSITY_BANDS; ++band) {
             const auto at = std::size_t(band);
             parameters.unchangedBelow[at] =
-                float(unchanged->belowByDensity.size() > at ? unchanged->belowByDensity[at] : unchanged->below);
+                float(unchanged.belowByDensity.size() > at ? unchanged.belowByDensity[at] : unchanged.below);
             parameters.unchangedTie[at] =
-                float(unchanged->tieByDensity.size() > at ? unchanged->tieByDensity[at] : unchanged->tie);
+                float(unchanged.tieByDensity.size() > at ? unchanged.tieByDensity[at] : unchanged.tie);
         }
-        parameters.changedGain = float(unchanged->gain);
-        parameters.unchangedBoundary = float(unchanged->boundary);
-        parameters.unchangedOpacity = float(unchanged->opacity);
+        parameters.changedGain = float(unchanged.gain);
+        parameters.unchangedBoundary = float(unchanged.boundary);
+        parameters.unchangedOpacity = float(unchanged.opacity);
     }
     if (compositorInfo(scene.compositor).takesSteps)
         parameters.compositorSteps = scene.compositorOptions.differenceSteps(gpuSeries_->timeStepCount());
     parameters.exposedSteps = options.soloTimeStep ? glm::ivec2(*options.soloTimeStep)
                                                    : scene.exposure.stepsOf(gpuSeries_->timeStepCount());
-    if (const PackedAlignedAtlas* packed = gpuSeries_->packedAtlas(); packed && options.packAligned && !options.naive) {
-        variant.walk = TimeStepWalk::PackedGroups;
-        variant.packedValidity = packed->validity();
-        variant.packedGroupMasks = packed->hasGroupMasks();
-        parameters.sharedValiditySize = packed->sharedValiditySize();
-        parameters.packedGroupCount = packed->groupCount();
-        parameters.packedAtlasSize = packed->layout().size;
-        variant.skipEmptyBricks = skipsEmptyBricks(gpuSeries_->emptyPackedBrickFraction());
+    if (variant.walk == TimeStepWalk::PackedGroups) {
+        const PackedAlignedAtlas& packed = *gpuSeries_->packedAtlas();
+        parameters.sharedValiditySize = packed.sharedValiditySize();
+        parameters.packedGroupCount = packed.groupCount();
+        parameters.packedAtlasSize = packed.layout().size;
     }
-    if (options.emptyBrickTest) variant.skipEmptyBricks = *options.emptyBrickTest;
-    variant.perRayCaches = options.perRayCaches.value_or(cpuRasterizer_);
-    variant.precomputedGradients =
-        gradients_.useFor(*gpuSeries_, variant.styled(), options.precomputedGradients);
     parameters.styleTracks = styleTextures_.trackRanges();
     parameters.worldToView = glm::mat3(view.viewMatrix);
     parameters.styleFootprint = float(styleFootprint(view, options.size.y, finestSpacing_));
@@ -166,26 +202,7 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
         parameters.clipLower = glm::vec3(options.clipBox->lower);
         parameters.clipUpper = glm::vec3(options.clipBox->upper);
     }
-    // Rays through pixels outside the series' projected bounds meet no time-step and would give
-    // the background: clear to it and raycast only the rectangle that can differ.
-    const glm::vec4 premultipliedBackground(glm::vec3(parameters.background) * parameters.background.a,
-                                            parameters.background.a);
-    glDisable(GL_SCISSOR_TEST);
-    glClearNamedFramebufferfv(target_.framebufferId(), GL_COLOR, 0, &premultipliedBackground.x);
-    Bounds rendered = worldBounds_;
-    if (options.clipBox) {
-        rendered.lower = glm::max(rendered.lower, options.clipBox->lower);
-        rendered.upper = glm::max(rendered.lower, glm::min(rendered.upper, options.clipBox->upper));
-    }
-    const PixelRectangle covered = coveredPixels(rendered, view.projectionMatrix * view.viewMatrix, options.size);
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(covered.offset.x, covered.offset.y, covered.size.x, covered.size.y);
-    variant = partOf(variant, options.raycastPart);
-    if (options.timePasses) (*passClocks_)[1].start();
-    raycaster_.draw(variant, parameters);
-    if (options.timePasses) (*passClocks_)[1].stop();
-    glDisable(GL_SCISSOR_TEST);
-    lastVariant_ = std::move(variant);
+    return parameters;
 }
 
 FramePassTimes Renderer::lastPassTimes() const {

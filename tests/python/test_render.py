@@ -170,3 +170,11 @@ def test_the_compositor_names_are_the_scene_readers():
         assert name in tstyles.Scene.compositor.__doc__
         compositor = tstyles.Scene({"compositor": name}).compositor  # with its options' defaults: an object
         assert (compositor if isinstance(compositor, str) else compositor["name"]) == name
+
+
+def test_the_default_scene_reads_and_writes():
+    # Scene() is the scene reader's defaults, as Scene({}) is: it reads, writes and compares.
+    scene = tstyles.Scene()
+    assert scene.compositor == tstyles.Scene({}).compositor
+    assert json.loads(scene.to_json()) == tstyles.Scene({}).to_dict()
+    assert scene == tstyles.Scene({})

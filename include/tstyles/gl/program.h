@@ -1,10 +1,13 @@
 // A linked GLSL program built from shader files, with uniforms set by name.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <unordered_map>
 #include <unordered_set>
 #include <utility>
@@ -18,6 +21,18 @@
 namespace tstyles {
 
 using ShaderDefines = std::vector<std::pair<std::string, std::string>>;
+
+// A uniform's name with its C++ type, so that Program::set takes only a value of that type (the
+// raycasting program's are declared once, in shaders/raycast_uniforms.glsl).
+template <class T>
+struct UniformName {
+    const char* name;
+};
+// A uniform array of `count` values of type T.
+template <class T, std::size_t count>
+struct UniformArrayName {
+    const char* name;
+};
 
 // Where shader sources come from: the copy embedded at build time, or a shaders/ folder on disk
 // (for editing shaders without rebuilding).
@@ -41,6 +56,13 @@ struct ShaderStage {
     std::string file;  // name inside shaders/, e.g. "raycast.frag"
 };
 
+// One line for the log of a program that failed to build (Program::build's message) about the code
+// that compiler messages call `file` (a scene's own compositor): the first error there as
+// "line L: does not compile: MESSAGE" (Mesa writes "file:L:C: error: ...", NVIDIA
+// "file:L: error ..."), and how many more errors followed; without a line of that file, the log's
+// first error.
+std::string firstCompileErrorIn(const std::string& log, const std::string& file);
+
 class Program {
 public:
     // Compiles and links; throws std::runtime_error whose message names the shader file and line
@@ -61,6 +83,16 @@ public:
     void set(const char* name, const glm::mat3& value) const;
     void set(const char* name, const glm::mat4& value) const;
     void set(const char* name, std::span<const float> values) const;  // a float array
+    void set(const char* name, std::span<const glm::ivec2> values) const;  // an ivec2 array
+
+    template <class T>
+    void set(UniformName<T> uniform, const std::type_identity_t<T>& value) const {
+        set(uniform.name, value);
+    }
+    template <class T, std::size_t count>
+    void set(UniformArrayName<T, count> uniform, const std::array<T, count>& values) const {
+        set(uniform.name, std::span<const T>(values));
+    }
 
 private:
     explicit Program(GLuint id) : handle_(id) {}

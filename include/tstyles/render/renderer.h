@@ -119,6 +119,11 @@ private:
     // After an upload: the step, the opacity reference, the bounds and the sample lattice of
     // `series`, or of the whole it was cut from.
     void follow(const Series& series, const std::optional<WholeSeries>& whole);
+    // The raycasting program a frame needs (builds the gradient atlas where it starts to pay).
+    RaycastVariant variantFor(const Scene& scene, const FrameOptions& options);
+    // Its uniforms, but for the inverse view-projection, which the entry/exit pass shares.
+    RaycastParameters parametersFor(const Scene& scene, const View& view, const FrameOptions& options,
+                                    const RaycastVariant& variant) const;
 
     ShaderLibrary shaders_;
     std::optional<GpuSeries> gpuSeries_;
