@@ -51,7 +51,7 @@ TEST_P(SkippingEquivalence, OptimisedAndNaiveRaycastersGiveTheSameImage) {
 
 std::vector<BundledScene> bundledSceneCases() {
     std::vector<BundledScene> cases;
-    // The datasets of `tstyles bench` (src/cli/bench_datasets.cpp).
+    // The datasets of `tstyles bench` (src/cli/bench/bench_datasets.cpp).
     for (const char* dataset : {"superellipsoid", "superellipsoid-aligned"})
         for (const char* scene : {"figure4-temporal-mip", "figure4-temporal-average", "figure4-max-density-change",
                                   "figure1-styled-focus-step3", "figure4-styled-max-density-change"})
