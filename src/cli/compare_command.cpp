@@ -11,6 +11,7 @@
 
 #include "commands.h"
 #include "comparison_thresholds.h"
+#include "tstyles/core/json_text.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/image/image_comparison.h"
 #include "tstyles/image/image_io.h"
@@ -33,8 +34,10 @@ struct CompareOptions {
 
 ComparisonThresholds thresholdsOf(const CompareOptions& options) {
     ComparisonThresholds thresholds;
-    if (options.thresholdsFile)
-        thresholds = thresholdsFromJson(readJsonFile(*options.thresholdsFile), thresholds, *options.thresholdsFile, "");
+    if (options.thresholdsFile) {
+        const nlohmann::json document = readJsonFile(*options.thresholdsFile, "thresholds file", JsonComments::Allowed);
+        thresholds = thresholdsFromJson(JsonField(*options.thresholdsFile, document, ""), thresholds);
+    }
     if (options.maxDelta) thresholds.maxDelta = *options.maxDelta;
     if (options.pixelThreshold) thresholds.pixelThreshold = *options.pixelThreshold;
     if (options.maxFailingShare) thresholds.maxFailingFraction = *options.maxFailingShare / 100.0;

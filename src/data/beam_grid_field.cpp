@@ -19,7 +19,7 @@ std::string beamNumberText(double value) {
     return text.str();
 }
 
-void checkAngle(const ManifestField& field, double angle) {
+void checkAngle(const JsonField& field, double angle) {
     if (!(angle > -kMaxBeamAngleDeg && angle < kMaxBeamAngleDeg)) {
         field.fail("beam angle " + beamNumberText(angle) + " deg is outside (-80, 80): beams must point ahead of the "
                    "transducer");
@@ -27,7 +27,7 @@ void checkAngle(const ManifestField& field, double angle) {
 }
 
 // The angles of `count` beams: from "<name>_deg": [first, last] or "<name>_angles_deg": [one per beam].
-std::vector<double> readBeamAngles(const ManifestField& grid, const std::string& name, int count,
+std::vector<double> readBeamAngles(const JsonField& grid, const std::string& name, int count,
                                    const std::string& dimsPath) {
     const auto extent = grid.optionalMember(name + "_deg");
     const auto list = grid.optionalMember(name + "_angles_deg");
@@ -54,7 +54,7 @@ std::vector<double> readBeamAngles(const ManifestField& grid, const std::string&
                    std::to_string(list->arraySize()));
     }
     for (int index = 0; index < count; ++index) {
-        const ManifestField element = list->element(std::size_t(index));
+        const JsonField element = list->element(std::size_t(index));
         angles.push_back(element.finiteNumber());
         checkAngle(element, angles.back());
         if (index > 0 && !(angles[std::size_t(index)] > angles[std::size_t(index) - 1])) {
@@ -67,11 +67,11 @@ std::vector<double> readBeamAngles(const ManifestField& grid, const std::string&
 
 }  // namespace
 
-BeamGrid readBeamGrid(const ManifestField& field) {
+BeamGrid readBeamGrid(const JsonField& field) {
     field.allowOnlyKeys({"type", "dims", "azimuth_deg", "azimuth_angles_deg", "elevation_deg",
                          "elevation_angles_deg", "range"});
     BeamGrid grid;
-    const ManifestField dims = field.member("dims");
+    const JsonField dims = field.member("dims");
     grid.dims = readGridDims(dims, kMaxVoxelsPerStep,
                              {"expected 3 sample counts (beams across, beams along, range samples)",
                               "a beam grid needs two beams each way and two range samples to span a fan",
@@ -79,7 +79,7 @@ BeamGrid readBeamGrid(const ManifestField& field) {
     grid.azimuthDeg = readBeamAngles(field, "azimuth", grid.dims.x, dims.path() + "[0]");
     grid.elevationDeg = readBeamAngles(field, "elevation", grid.dims.y, dims.path() + "[1]");
 
-    const ManifestField range = field.member("range");
+    const JsonField range = field.member("range");
     if (range.arraySize() != 2) range.fail("expected [minimum, maximum] range");
     grid.minRange = range.element(0).finiteNumber();
     grid.maxRange = range.element(1).finiteNumber();

@@ -1,7 +1,7 @@
 // Reading a beam (sonar) grid from a manifest's "grid" object, with every check a bad grid needs.
 #pragma once
 
-#include "manifest_field.h"
+#include "grid_dims_field.h"
 #include "tstyles/data/series.h"
 
 namespace tstyles {
@@ -10,6 +10,6 @@ namespace tstyles {
 // key, fewer than two samples along an axis, zero or negative extents, beam angles that do not
 // increase strictly, a list whose length differs from dims, angles outside (-80, 80) degrees, or a
 // range that does not satisfy 0 <= minimum < maximum.
-BeamGrid readBeamGrid(const ManifestField& field);
+BeamGrid readBeamGrid(const JsonField& field);
 
 }  // namespace tstyles

@@ -14,7 +14,8 @@
 #include <nlohmann/json.hpp>
 
 #include "beam_grid_field.h"
-#include "manifest_field.h"
+#include "grid_dims_field.h"
+#include "tstyles/core/json_text.h"
 #include "raw_values.h"
 #include "structured_grid_files.h"
 #include "tstyles/core/errors.h"
@@ -49,18 +50,10 @@ std::filesystem::path manifestFileOf(const std::filesystem::path& dataset) {
     return dataset;
 }
 
-// nlohmann's messages start with "[json.exception.parse_error.101] "; the rest (line, column and
-// what was expected) is what the user needs.
-std::string parserMessage(const nlohmann::json::exception& error) {
-    const std::string message = error.what();
-    const auto end = message.find("] ");
-    return end == std::string::npos ? message : message.substr(end + 2);
-}
-
 // A scene (it names a dataset, may hold comments) given where a dataset belongs: said as such
 // rather than as the manifest keys it lacks.
 bool looksLikeScene(const std::string& text) {
-    const nlohmann::json document = nlohmann::json::parse(text, nullptr, false, true);
+    const nlohmann::json document = probeJsonText(text, JsonComments::Allowed);
     return document.is_object() && document.contains("dataset") && !document.contains("format");
 }
 
@@ -75,16 +68,10 @@ nlohmann::json parseManifest(const std::filesystem::path& file) {
         throwInputError(file, "",
                         "is a scene file, not a dataset: render it with `tstyles render " + file.string() +
                             " -o OUT.png`, or give `info` the dataset it names");
-    try {
-        return nlohmann::json::parse(text);
-    } catch (const nlohmann::json::exception& parseError) {
-        // Besides syntax errors this catches numbers too large for a double (1e999): JSON has no
-        // infinity, so nlohmann reports them as out_of_range rather than parsing them to inf.
-        throwInputError(file, "", "not valid JSON: " + parserMessage(parseError));
-    }
+    return parseJsonText(text, file, JsonComments::Refused);
 }
 
-std::filesystem::path resolveBeside(const std::filesystem::path& manifest, const ManifestField& name) {
+std::filesystem::path resolveBeside(const std::filesystem::path& manifest, const JsonField& name) {
     const std::string text = name.string();
     if (text.empty()) name.fail("must name a file");
     requireUsablePathName({name.file(), name.path()}, text);
@@ -93,14 +80,14 @@ std::filesystem::path resolveBeside(const std::filesystem::path& manifest, const
 }
 
 // An uneven axis: dims[axis] finite grid-local node positions, the first 0, strictly increasing.
-std::vector<double> readAxisPositions(const ManifestField& field, int count) {
+std::vector<double> readAxisPositions(const JsonField& field, int count) {
     if (field.arraySize() != std::size_t(count)) {
         field.fail("expected " + std::to_string(count) + " node positions (one per sample along the axis), found " +
                    std::to_string(field.arraySize()));
     }
     std::vector<double> positions;
     for (std::size_t node = 0; node < std::size_t(count); ++node) {
-        const ManifestField element = field.element(node);
+        const JsonField element = field.element(node);
         positions.push_back(element.finiteNumber());
         if (node == 0 && positions[0] != 0.0)
             element.fail("the first node must be at 0 (the placement origin), found " + numberText(positions[0]));
@@ -112,11 +99,11 @@ std::vector<double> readAxisPositions(const ManifestField& field, int count) {
     return positions;
 }
 
-RectilinearGrid readRectilinearGrid(const ManifestField& field) {
+RectilinearGrid readRectilinearGrid(const JsonField& field) {
     field.allowOnlyKeys({"type", "dims", "spacing", "positions"});
     RectilinearGrid grid;
-    const ManifestField dims = field.member("dims");
-    const ManifestField spacing = field.member("spacing");
+    const JsonField dims = field.member("dims");
+    const JsonField spacing = field.member("spacing");
     const auto positions = field.optionalMember("positions");
     if (positions) positions->allowOnlyKeys({"x", "y", "z"});
     grid.dims = readGridDims(dims, kMaxVoxelsPerStep,
@@ -125,7 +112,7 @@ RectilinearGrid readRectilinearGrid(const ManifestField& field) {
                               "too many voxels for one time-step"});
     if (spacing.arraySize() != 3) spacing.fail("expected 3 distances (x, y, z)");
     for (int axis = 0; axis < 3; ++axis) {
-        const ManifestField distance = spacing.element(std::size_t(axis));
+        const JsonField distance = spacing.element(std::size_t(axis));
         const std::string axisName(1, "xyz"[axis]);
         const auto axisPositions = positions ? positions->optionalMember(axisName) : std::nullopt;
         // An uneven axis has its nodes in "positions" and null in "spacing", so that no number in the
@@ -145,22 +132,22 @@ RectilinearGrid readRectilinearGrid(const ManifestField& field) {
     return grid;
 }
 
-Grid readGrid(const ManifestField& field, std::size_t stepIndex, StructuredGridFiles& structuredGrids) {
-    const ManifestField type = field.member("type");
+Grid readGrid(const JsonField& field, std::size_t stepIndex, StructuredGridFiles& structuredGrids) {
+    const JsonField type = field.member("type");
     if (type.string() == "rectilinear") return readRectilinearGrid(field);
     if (type.string() == "structured") return structuredGrids.read(field, stepIndex);
     if (type.string() == "beam") return readBeamGrid(field);
     type.fail("unknown grid type '" + type.string() + "' (known: rectilinear, structured, beam)");
 }
 
-Placement readPlacement(const std::optional<ManifestField>& field) {
+Placement readPlacement(const std::optional<JsonField>& field) {
     Placement placement;
     if (!field) return placement;
     field->allowOnlyKeys({"origin", "rotation"});
     if (const auto origin = field->optionalMember("origin")) placement.origin = origin->finiteVec3();
     if (const auto rotation = field->optionalMember("rotation")) {
         rotation->allowOnlyKeys({"axis", "angle_deg"});
-        const ManifestField axisField = rotation->member("axis");
+        const JsonField axisField = rotation->member("axis");
         AxisAngle axisAngle;
         axisAngle.axis = axisField.finiteVec3();
         if (!(glm::length(axisAngle.axis) > 0.0)) axisField.fail("rotation axis must not be zero");
@@ -170,40 +157,40 @@ Placement readPlacement(const std::optional<ManifestField>& field) {
     return placement;
 }
 
-StepEntry readStepEntry(const ManifestField& field, std::size_t stepIndex, StructuredGridFiles& structuredGrids) {
+StepEntry readStepEntry(const JsonField& field, std::size_t stepIndex, StructuredGridFiles& structuredGrids) {
     field.allowOnlyKeys({"time", "grid", "placement", "values", "mask"});
     StepEntry entry;
     entry.step.time = field.member("time").finiteNumber();
     entry.step.grid = readGrid(field.member("grid"), stepIndex, structuredGrids);
     entry.step.placement = readPlacement(field.optionalMember("placement"));
 
-    const ManifestField values = field.member("values");
+    const JsonField values = field.member("values");
     values.allowOnlyKeys({"file", "type"});
-    const ManifestField valuesFile = values.member("file");
+    const JsonField valuesFile = values.member("file");
     entry.step.valuesFile = resolveBeside(field.file(), valuesFile);
     entry.valuesField = valuesFile.path();
-    const ManifestField type = values.member("type");
+    const JsonField type = values.member("type");
     const auto valueType = valueTypeFromString(type.string());
     if (!valueType) type.fail("unknown value type '" + type.string() + "' (known: uint8, uint16, float32, int8, int16, int32, float64)");
     entry.step.sourceType = *valueType;
 
     if (const auto mask = field.optionalMember("mask")) {
         mask->allowOnlyKeys({"file"});
-        const ManifestField maskFile = mask->member("file");
+        const JsonField maskFile = mask->member("file");
         entry.step.maskFile = resolveBeside(field.file(), maskFile);
         entry.maskField = maskFile.path();
     }
     return entry;
 }
 
-std::vector<StepEntry> readStepEntries(const ManifestField& field) {
+std::vector<StepEntry> readStepEntries(const JsonField& field) {
     const std::size_t count = field.arraySize();
     if (count == 0) field.fail("must list at least one time-step");
     std::vector<StepEntry> entries;
     entries.reserve(count);
     StructuredGridFiles structuredGrids;
     for (std::size_t index = 0; index < count; ++index) {
-        const ManifestField stepField = field.element(index);
+        const JsonField stepField = field.element(index);
         entries.push_back(readStepEntry(stepField, index, structuredGrids));
         // Time orders the series everywhere (TSTF axes, playback), so ties are as wrong as reversals.
         if (index > 0 && !(entries[index].step.time > entries[index - 1].step.time)) {
@@ -215,7 +202,7 @@ std::vector<StepEntry> readStepEntries(const ManifestField& field) {
     return entries;
 }
 
-std::optional<std::array<double, 2>> readValueRange(const std::optional<ManifestField>& field) {
+std::optional<std::array<double, 2>> readValueRange(const std::optional<JsonField>& field) {
     if (!field) return std::nullopt;
     if (field->arraySize() != 2) field->fail("expected [low, high]");
     const std::array<double, 2> range{field->element(0).finiteNumber(), field->element(1).finiteNumber()};
@@ -227,7 +214,7 @@ std::optional<std::array<double, 2>> readValueRange(const std::optional<Manifest
 }
 
 // The raw value that marks a voxel without data: a number, or the string "NaN" (JSON has no NaN).
-std::optional<double> readMissingValue(const std::optional<ManifestField>& field) {
+std::optional<double> readMissingValue(const std::optional<JsonField>& field) {
     if (!field) return std::nullopt;
     if (field->isString()) {
         if (field->string() != "NaN") field->fail("expected a number or \"NaN\", found \"" + field->string() + "\"");
@@ -273,7 +260,7 @@ std::array<double, 2> valueRangeFromData(const std::filesystem::path& manifest,
 
 // "time_units" (CF, "days since 1950-01-01"), "calendar" and "climatology" (true: the stamps stand
 // for the same period of every year), all optional.
-TimeAxis readTimeAxis(const std::filesystem::path& manifest, const ManifestField& root) {
+TimeAxis readTimeAxis(const std::filesystem::path& manifest, const JsonField& root) {
     const auto units = root.optionalMember("time_units");
     const auto calendar = root.optionalMember("calendar");
     TimeAxis axis = parseTimeUnits(units ? units->string() : "", calendar ? calendar->string() : "", manifest, "time");
@@ -282,11 +269,11 @@ TimeAxis readTimeAxis(const std::filesystem::path& manifest, const ManifestField
 }
 
 // "axes": three objects {"name", "unit", "direction"}, each key optional.
-std::array<SpatialAxis, 3> readAxes(const ManifestField& field) {
+std::array<SpatialAxis, 3> readAxes(const JsonField& field) {
     if (field.arraySize() != 3) field.fail("expected three axes (x, y, z), got " + std::to_string(field.arraySize()));
     std::array<SpatialAxis, 3> axes;
     for (std::size_t index = 0; index < 3; ++index) {
-        const ManifestField axis = field.element(index);
+        const JsonField axis = field.element(index);
         axis.allowOnlyKeys({"name", "unit", "direction"});
         if (const auto name = axis.optionalMember("name")) axes[index].name = name->string();
         if (const auto unit = axis.optionalMember("unit")) axes[index].unit = unit->string();
@@ -346,14 +333,14 @@ struct ParsedManifest {
 ParsedManifest parseSeriesManifest(const std::filesystem::path& manifestPath) {
     const std::filesystem::path manifest = manifestFileOf(manifestPath);
     const nlohmann::json document = parseManifest(manifest);
-    const ManifestField root(manifest, document, "");
+    const JsonField root(manifest, document, "");
 
     // Format and version first: a different kind of JSON file should not be reported key by key.
-    const ManifestField format = root.member("format");
+    const JsonField format = root.member("format");
     if (format.string() != kManifestFormat) {
         format.fail("expected \"" + std::string(kManifestFormat) + "\", found \"" + format.string() + "\"");
     }
-    const ManifestField version = root.member("version");
+    const JsonField version = root.member("version");
     if (version.integer() != kManifestVersion) {
         version.fail("unsupported version " + std::to_string(version.integer()) + " (this build reads " +
                      std::to_string(kManifestVersion) + ")");

@@ -19,7 +19,7 @@ float decodeFloat32(const std::uint8_t* bytes) {
     return std::bit_cast<float>(bits);
 }
 
-std::filesystem::path resolve(const ManifestField& name) {
+std::filesystem::path resolve(const JsonField& name) {
     const std::string text = name.string();
     if (text.empty()) name.fail("must name a file");
     requireUsablePathName({name.file(), name.path()}, text);
@@ -29,15 +29,15 @@ std::filesystem::path resolve(const ManifestField& name) {
 
 }  // namespace
 
-StructuredGrid StructuredGridFiles::read(const ManifestField& field, std::size_t stepIndex) {
+StructuredGrid StructuredGridFiles::read(const JsonField& field, std::size_t stepIndex) {
     field.allowOnlyKeys({"type", "dims", "coordinates"});
     const glm::ivec3 dims = readGridDims(field.member("dims"), kMaxNodesPerGrid,
                                          {"expected 3 node counts (x, y, z)",
                                           "a grid needs two nodes along each axis to have cells",
                                           "too many nodes for one grid"});
-    const ManifestField coordinates = field.member("coordinates");
+    const JsonField coordinates = field.member("coordinates");
     coordinates.allowOnlyKeys({"file"});
-    const ManifestField fileField = coordinates.member("file");
+    const JsonField fileField = coordinates.member("file");
     const std::filesystem::path file = resolve(fileField);
     const auto key = std::make_pair(file, std::array<int, 3>{dims.x, dims.y, dims.z});
     if (const auto known = grids_.find(key); known != grids_.end()) return known->second;

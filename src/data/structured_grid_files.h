@@ -6,7 +6,7 @@
 #include <map>
 #include <utility>
 
-#include "manifest_field.h"
+#include "grid_dims_field.h"
 #include "tstyles/data/structured_grid.h"
 
 namespace tstyles {
@@ -15,7 +15,7 @@ class StructuredGridFiles {
 public:
     // `field` is the time-step's "grid" object with type "structured". Errors name the field, the
     // time-step and the problem (size mismatch, non-finite coordinates, degenerate or inverted cells).
-    StructuredGrid read(const ManifestField& field, std::size_t stepIndex);
+    StructuredGrid read(const JsonField& field, std::size_t stepIndex);
 
 private:
     std::map<std::pair<std::filesystem::path, std::array<int, 3>>, StructuredGrid> grids_;

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tstyles/core/json_text.h"
 #include "tstyles/core/user_paths.h"
 #include "tstyles/data/series_opener.h"
 
@@ -31,7 +32,7 @@ InputKind classifyInput(const std::filesystem::path& path) {
     stream.seekg(0);
     std::stringstream text;
     text << stream.rdbuf();
-    const nlohmann::json json = nlohmann::json::parse(text.str(), nullptr, false, true);
+    const nlohmann::json json = probeJsonText(text.str(), JsonComments::Allowed);
     if (json.is_object() && !json.contains("dataset") && (json.contains("time_steps") || json.contains("format")))
         return InputKind::Dataset;
     return InputKind::Scene;

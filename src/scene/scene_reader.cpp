@@ -8,6 +8,7 @@
 #include "json_fields.h"
 #include "scene_sections.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/core/json_text.h"
 #include "tstyles/core/user_paths.h"
 #include "tstyles/scene/scene_file.h"
 #include "tstyles/scene/style_reference.h"
@@ -20,29 +21,6 @@ using nlohmann::json;
 constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr Interval unitInterval{0.0, 1.0};
 constexpr Interval positive{0.0, infinity, false};
-
-// nlohmann's message without its exception-id prefix ("[json.exception.parse_error.101] ").
-std::string withoutExceptionId(const json::exception& error) {
-    std::string detail = error.what();
-    if (const auto prefixEnd = detail.find("] "); prefixEnd != std::string::npos)
-        detail.erase(0, prefixEnd + 2);
-    return detail;
-}
-
-json parseJson(const std::string& text, const std::filesystem::path& origin) {
-    try {
-        // Comments are allowed so that hand-written scenes can explain themselves.
-        return json::parse(text, nullptr, true, true);
-    } catch (const json::parse_error& error) {
-        // The message carries the line and column.
-        throwInputError(origin, "", "not valid JSON: " + withoutExceptionId(error));
-    } catch (const json::out_of_range& error) {
-        // Literals such as 1e999: JSON has no infinity, and the parser refuses to make one.
-        throwInputError(
-            origin, "",
-            "not usable JSON: a number is too large for a double (" + withoutExceptionId(error) + ")");
-    }
-}
 
 // Editor groups are numbered from 1; a node without "group" belongs to none.
 NodeGroup readGroup(const JsonFieldReader& fields, const json& node, const std::string& nodePath) {
@@ -336,7 +314,8 @@ void resolveStyleFiles(Scene& scene, const std::filesystem::path& origin) {
 
 Scene parseScene(const std::string& text, const std::filesystem::path& origin) {
     const JsonFieldReader fields(origin);
-    const json root = parseJson(text, origin);
+    // Comments are allowed so that hand-written scenes can explain themselves.
+    const json root = parseJsonText(text, origin, JsonComments::Allowed);
     fields.expectObject(root, "",
                         {"dataset", "image", "camera", "raycast", "stf", "compositor", "tstf", "final", "orientation",
                          "aspect", "vertical_exaggeration", "exposure", "annotations", "animation"});

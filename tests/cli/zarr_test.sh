@@ -180,7 +180,7 @@ for level in m["datasets"]:
 case_bad_json() {
     store v2_gzip
     head -c 50 "$Z/.zattrs" >"$Z/cut" && mv "$Z/cut" "$Z/.zattrs"
-    render_refused "" "is not valid JSON" "$Z/.zattrs"
+    render_refused "" "not valid JSON" "$Z/.zattrs"
 }
 
 case_zero_scale() {

@@ -5,6 +5,8 @@
 #include <set>
 
 #include "comparison_thresholds.h"
+#include "tstyles/core/json_field.h"
+#include "tstyles/core/json_text.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/core/user_paths.h"
 
@@ -14,22 +16,23 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-int sideIn(const json& value, const fs::path& file, const std::string& field) {
-    if (!value.is_number_integer() || value.get<int>() < 1 || value.get<int>() > 16384)
-        throwInputError(file, field, "expected a whole number of pixels in [1, 16384]");
-    return value.get<int>();
+int sideIn(const JsonField& side) {
+    const int pixels = side.integer();
+    if (pixels < 1 || pixels > 16384) side.fail("expected a whole number of pixels in [1, 16384]");
+    return pixels;
 }
 
-std::string textIn(const json& value, const fs::path& file, const std::string& field) {
-    if (!value.is_string() || value.get<std::string>().empty()) throwInputError(file, field, "expected a non-empty string");
-    return value.get<std::string>();
+std::string textIn(const JsonField& text) {
+    std::string value = text.string();
+    if (value.empty()) text.fail("expected a non-empty string");
+    return value;
 }
 
-// A file named in the suite: also a name the system can look up.
-std::string pathIn(const json& value, const fs::path& file, const std::string& field) {
-    std::string text = textIn(value, file, field);
-    requireUsablePathName({file, field}, text);
-    return text;
+// A file named in the suite, relative to the suite's folder: also a name the system can look up.
+fs::path pathIn(const JsonField& name) {
+    const std::string text = textIn(name);
+    requireUsablePathName({name.file(), name.path()}, text);
+    return (name.file().parent_path() / text).lexically_normal();
 }
 
 // The suite's thresholds, and those of each renderer entry over them.
@@ -38,82 +41,61 @@ struct SuiteThresholds {
     std::vector<RendererThresholds> renderers;
 };
 
-CheckCase readCase(const json& entry, const fs::path& file, const std::string& field, const SuiteThresholds& suite) {
-    if (!entry.is_object()) throwInputError(file, field, "expected an object with at least \"scene\"");
-    const fs::path folder = file.parent_path();
+CheckCase readCase(const JsonField& entry, const SuiteThresholds& suite) {
+    entry.allowOnlyKeys({"scene", "golden", "name", "width", "height", "thresholds"});
     CheckCase result;
     result.thresholds = suite.base;
     result.rendererThresholds = suite.renderers;
-    for (const auto& [key, value] : entry.items()) {
-        const std::string keyField = field + "." + key;
-        if (key == "scene") result.scene = (folder / pathIn(value, file, keyField)).lexically_normal();
-        else if (key == "golden") result.golden = (folder / pathIn(value, file, keyField)).lexically_normal();
-        else if (key == "name") result.name = textIn(value, file, keyField);
-        else if (key == "width") result.width = sideIn(value, file, keyField);
-        else if (key == "height") result.height = sideIn(value, file, keyField);
-        else if (key == "thresholds") {
-            result.thresholds = thresholdsFromJson(value, suite.base, file, keyField);
-            for (std::size_t i = 0; i < suite.renderers.size(); ++i)
-                result.rendererThresholds[i].thresholds =
-                    thresholdsFromJson(value, suite.renderers[i].thresholds, file, keyField);
-        }
-        else throwInputError(file, keyField, "unknown key; allowed: scene, golden, name, width, height, thresholds");
+    const JsonField scene = entry.member("scene", "missing; every case names its scene file");
+    result.scene = pathIn(scene);
+    if (const auto golden = entry.optionalMember("golden")) result.golden = pathIn(*golden);
+    if (const auto name = entry.optionalMember("name")) result.name = textIn(*name);
+    if (const auto width = entry.optionalMember("width")) result.width = sideIn(*width);
+    if (const auto height = entry.optionalMember("height")) result.height = sideIn(*height);
+    if (const auto thresholds = entry.optionalMember("thresholds")) {
+        result.thresholds = thresholdsFromJson(*thresholds, suite.base);
+        for (std::size_t i = 0; i < suite.renderers.size(); ++i)
+            result.rendererThresholds[i].thresholds = thresholdsFromJson(*thresholds, suite.renderers[i].thresholds);
     }
-    if (result.scene.empty()) throwInputError(file, field + ".scene", "missing; every case names its scene file");
-    if (userPathKind({file, field + ".scene"}, result.scene) != PathKind::RegularFile)
-        throwInputError(file, field + ".scene", "no such scene file: " + result.scene.string());
+    if (userPathKind({scene.file(), scene.path()}, result.scene) != PathKind::RegularFile)
+        scene.fail("no such scene file: " + result.scene.string());
     if (result.name.empty()) result.name = result.scene.stem().string();
-    if (result.golden.empty()) result.golden = folder / (result.name + ".png");
+    if (result.golden.empty()) result.golden = entry.file().parent_path() / (result.name + ".png");
     return result;
 }
 
 // "renderer_thresholds": [{"renderer": "llvmpipe", "thresholds": {...}}, ...], each over `base`.
-void readRendererThresholds(const json& entries, const fs::path& file, SuiteThresholds& thresholds) {
-    if (!entries.is_array())
-        throwInputError(file, "renderer_thresholds", "expected an array of {\"renderer\", \"thresholds\"}");
-    for (std::size_t i = 0; i < entries.size(); ++i) {
-        const std::string field = "renderer_thresholds[" + std::to_string(i) + "]";
-        const json& entry = entries[i];
-        if (!entry.is_object()) throwInputError(file, field, "expected an object {\"renderer\", \"thresholds\"}");
-        for (const auto& [key, value] : entry.items())
-            if (key != "renderer" && key != "thresholds")
-                throwInputError(file, field + "." + key, "unknown key; allowed: renderer, thresholds");
-        const auto renderer = entry.find("renderer");
-        if (renderer == entry.end())
-            throwInputError(file, field + ".renderer", "missing; a text that GL_RENDERER contains, e.g. \"llvmpipe\"");
-        const auto values = entry.find("thresholds");
-        if (values == entry.end())
-            throwInputError(file, field + ".thresholds", "missing; the thresholds on that renderer");
-        thresholds.renderers.push_back({textIn(*renderer, file, field + ".renderer"),
-                                        thresholdsFromJson(*values, thresholds.base, file, field + ".thresholds")});
+void readRendererThresholds(const JsonField& entries, SuiteThresholds& thresholds) {
+    for (std::size_t i = 0; i < entries.arraySize(); ++i) {
+        const JsonField entry = entries.element(i);
+        entry.allowOnlyKeys({"renderer", "thresholds"});
+        const JsonField renderer = entry.member("renderer", "missing; a text that GL_RENDERER contains, e.g. \"llvmpipe\"");
+        const JsonField values = entry.member("thresholds", "missing; the thresholds on that renderer");
+        thresholds.renderers.push_back({textIn(renderer), thresholdsFromJson(values, thresholds.base)});
     }
 }
 
 CheckSuite readSuiteFile(const fs::path& file) {
-    const json root = readJsonFile(file);
-    if (!root.is_object()) throwInputError(file, "", "expected an object with \"cases\"");
+    const json document = readJsonFile(file, "check suite", JsonComments::Allowed);
+    const JsonField root(file, document, "");
+    root.allowOnlyKeys({"thresholds", "renderer_thresholds", "cases"});
     CheckSuite suite{file.stem().string(), file, {}};
     SuiteThresholds thresholds;
-    for (const auto& [key, value] : root.items())
-        if (key != "thresholds" && key != "renderer_thresholds" && key != "cases")
-            throwInputError(file, key, "unknown key; allowed: thresholds, renderer_thresholds, cases");
-    if (const auto base = root.find("thresholds"); base != root.end())
-        thresholds.base = thresholdsFromJson(*base, thresholds.base, file, "thresholds");
-    if (const auto renderers = root.find("renderer_thresholds"); renderers != root.end())
-        readRendererThresholds(*renderers, file, thresholds);
-    const auto cases = root.find("cases");
-    if (cases == root.end() || !cases->is_array() || cases->empty())
-        throwInputError(file, "cases", "expected a non-empty array of cases");
-    for (std::size_t i = 0; i < cases->size(); ++i)
-        suite.cases.push_back(readCase((*cases)[i], file, "cases[" + std::to_string(i) + "]", thresholds));
+    if (const auto base = root.optionalMember("thresholds")) thresholds.base = thresholdsFromJson(*base, thresholds.base);
+    if (const auto renderers = root.optionalMember("renderer_thresholds")) readRendererThresholds(*renderers, thresholds);
+    const JsonField cases = root.member("cases", "missing; expected a non-empty array of cases");
+    if (cases.arraySize() == 0) cases.fail("expected a non-empty array of cases");
+    for (std::size_t i = 0; i < cases.arraySize(); ++i) suite.cases.push_back(readCase(cases.element(i), thresholds));
     return suite;
 }
 
 CheckSuite readSuiteFolder(const fs::path& folder) {
     CheckSuite suite{folder.filename().string(), folder, {}};
     ComparisonThresholds base;
-    if (userPathKind({}, folder / "thresholds.json") == PathKind::RegularFile)
-        base = thresholdsFromJson(readJsonFile(folder / "thresholds.json"), base, folder / "thresholds.json", "");
+    if (const fs::path file = folder / "thresholds.json"; userPathKind({}, file) == PathKind::RegularFile) {
+        const json document = readJsonFile(file, "thresholds file", JsonComments::Allowed);
+        base = thresholdsFromJson(JsonField(file, document, ""), base);
+    }
     std::vector<fs::path> scenes;
     std::error_code error;
     for (const fs::directory_entry& entry : withUserPath({}, folder, [&] { return fs::directory_iterator(folder); }))

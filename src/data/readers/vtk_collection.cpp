@@ -14,6 +14,7 @@
 
 #include "series_assembly.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/core/json_text.h"
 #include "tstyles/core/input_limits.h"
 
 namespace tstyles {
@@ -99,12 +100,7 @@ VtkCollection readPvdCollection(const std::filesystem::path& pvd) {
 
 VtkCollection readFileSeries(const std::filesystem::path& series) {
     const std::string text = readSmallText(series, "ParaView file series (.series)");
-    nlohmann::json json;
-    try {
-        json = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::exception& error) {
-        throwInputError(series, "", std::string("is not valid JSON: ") + error.what());
-    }
+    const nlohmann::json json = parseJsonText(text, series, JsonComments::Refused);
     if (!json.is_object()) throwInputError(series, "", "is not a JSON object");
     for (const auto& [key, value] : json.items())
         if (key != "file-series-version" && key != "files")

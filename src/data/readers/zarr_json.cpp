@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "tstyles/core/errors.h"
+#include "tstyles/core/json_text.h"
 #include "tstyles/core/input_limits.h"
 
 namespace tstyles {
@@ -26,12 +27,7 @@ nlohmann::json readZarrJson(const std::filesystem::path& file) {
     std::ostringstream text;
     text << in.rdbuf();
     if (!in) throwInputError(file, "", "cannot be read");
-    nlohmann::json json;
-    try {
-        json = nlohmann::json::parse(text.str());
-    } catch (const nlohmann::json::exception& error) {
-        throwInputError(file, "", std::string("is not valid JSON: ") + error.what());
-    }
+    const nlohmann::json json = parseJsonText(text.str(), file, JsonComments::Refused);
     if (!json.is_object()) throwInputError(file, "", "is JSON but not an object");
     return json;
 }

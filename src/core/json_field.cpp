@@ -1,5 +1,5 @@
-// Typed reads from a manifest's JSON with errors that say where in the file the problem is.
-#include "manifest_field.h"
+// Typed reads from parsed JSON with errors that say where in the file the problem is.
+#include "tstyles/core/json_field.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,10 +9,10 @@
 
 namespace tstyles {
 
-ManifestField::ManifestField(const std::filesystem::path& file, const nlohmann::json& value, std::string path)
+JsonField::JsonField(const std::filesystem::path& file, const nlohmann::json& value, std::string path)
     : file_(&file), value_(&value), path_(std::move(path)) {}
 
-void ManifestField::fail(const std::string& problem) const {
+void JsonField::fail(const std::string& problem) const {
     throwInputError(*file_, path_, problem);
 }
 
@@ -25,15 +25,15 @@ std::string typeWithArticle(const nlohmann::json& value) {
 }
 }  // namespace
 
-void ManifestField::expectType(bool matches, const char* expected) const {
+void JsonField::expectType(bool matches, const char* expected) const {
     if (!matches) fail(std::string("expected ") + expected + ", found " + typeWithArticle(*value_));
 }
 
-std::string ManifestField::childPath(const std::string& key) const {
+std::string JsonField::childPath(const std::string& key) const {
     return path_.empty() ? key : path_ + "." + key;
 }
 
-void ManifestField::allowOnlyKeys(std::initializer_list<const char*> keys) const {
+void JsonField::allowOnlyKeys(std::initializer_list<const char*> keys) const {
     expectType(value_->is_object(), "an object");
     for (const auto& item : value_->items()) {
         // Not a structured binding: clang 14 (the fuzz build) cannot capture one in a lambda.
@@ -48,40 +48,46 @@ void ManifestField::allowOnlyKeys(std::initializer_list<const char*> keys) const
     }
 }
 
-ManifestField ManifestField::member(const std::string& key) const {
+JsonField JsonField::member(const std::string& key) const {
     auto field = optionalMember(key);
     if (!field) throwInputError(*file_, childPath(key), "missing required key");
     return *field;
 }
 
-std::optional<ManifestField> ManifestField::optionalMember(const std::string& key) const {
+JsonField JsonField::member(const std::string& key, const std::string& whenMissing) const {
+    auto field = optionalMember(key);
+    if (!field) throwInputError(*file_, childPath(key), whenMissing);
+    return *field;
+}
+
+std::optional<JsonField> JsonField::optionalMember(const std::string& key) const {
     expectType(value_->is_object(), "an object");
     const auto found = value_->find(key);
     if (found == value_->end()) return std::nullopt;
-    return ManifestField(*file_, *found, childPath(key));
+    return JsonField(*file_, *found, childPath(key));
 }
 
-std::size_t ManifestField::arraySize() const {
+std::size_t JsonField::arraySize() const {
     expectType(value_->is_array(), "an array");
     return value_->size();
 }
 
-ManifestField ManifestField::element(std::size_t index) const {
+JsonField JsonField::element(std::size_t index) const {
     expectType(value_->is_array(), "an array");
-    return ManifestField(*file_, value_->at(index), path_ + "[" + std::to_string(index) + "]");
+    return JsonField(*file_, value_->at(index), path_ + "[" + std::to_string(index) + "]");
 }
 
-std::string ManifestField::string() const {
+std::string JsonField::string() const {
     expectType(value_->is_string(), "a string");
     return value_->get<std::string>();
 }
 
-bool ManifestField::boolean() const {
+bool JsonField::boolean() const {
     expectType(value_->is_boolean(), "true or false");
     return value_->get<bool>();
 }
 
-double ManifestField::finiteNumber() const {
+double JsonField::finiteNumber() const {
     expectType(value_->is_number(), "a number");
     const double number = value_->get<double>();
     // The parser already rejects 1e999 (JSON has no infinity); this guards documents built in code.
@@ -89,7 +95,7 @@ double ManifestField::finiteNumber() const {
     return number;
 }
 
-int ManifestField::integer() const {
+int JsonField::integer() const {
     const double number = finiteNumber();
     if (number != std::floor(number)) fail("expected an integer, found " + value_->dump());
     if (number < double(std::numeric_limits<int>::min()) ||
@@ -99,24 +105,9 @@ int ManifestField::integer() const {
     return static_cast<int>(number);
 }
 
-glm::dvec3 ManifestField::finiteVec3() const {
+glm::dvec3 JsonField::finiteVec3() const {
     if (arraySize() != 3) fail("expected an array of 3 numbers, found " + std::to_string(value_->size()));
     return {element(0).finiteNumber(), element(1).finiteNumber(), element(2).finiteNumber()};
-}
-
-glm::ivec3 readGridDims(const ManifestField& dims, std::uint64_t maxCount, const GridDimsWording& wording) {
-    if (dims.arraySize() != 3) dims.fail(wording.expectedThree);
-    glm::ivec3 result(0);
-    std::uint64_t total = 1;
-    for (int axis = 0; axis < 3; ++axis) {
-        const ManifestField count = dims.element(std::size_t(axis));
-        result[axis] = count.integer();
-        if (result[axis] < 2)
-            count.fail("must be at least 2, found " + std::to_string(result[axis]) + ": " + wording.whyTwo);
-        total *= std::uint64_t(result[axis]);  // each factor < 2^31 and the running product is checked
-        if (total > maxCount) dims.fail(wording.tooMany);
-    }
-    return result;
 }
 
 }  // namespace tstyles

@@ -1,0 +1,61 @@
+// JSON parsed in one place (core/json_text.h) and read by one typed reader (core/json_field.h):
+// the messages name the file, the field and the problem.
+#include <stdexcept>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "tstyles/core/errors.h"
+#include "tstyles/core/json_field.h"
+#include "tstyles/core/json_text.h"
+
+namespace tstyles {
+namespace {
+
+std::string parseError(const std::string& text, JsonComments comments) {
+    try {
+        parseJsonText(text, "suite.json", comments);
+    } catch (const InputError& error) {
+        return error.what();
+    }
+    return "";
+}
+
+TEST(JsonText, ABadDocumentNamesTheFileAndTheLine) {
+    EXPECT_EQ(parseError("{\n  \"a\": 1,\n}", JsonComments::Allowed).rfind("suite.json: not valid JSON: parse error at line 3", 0),
+              0u)
+        << parseError("{\n  \"a\": 1,\n}", JsonComments::Allowed);
+    const std::string huge = parseError("{\"a\": 1e999}", JsonComments::Refused);
+    EXPECT_EQ(huge.rfind("suite.json: not valid JSON: a number is too large for a double (", 0), 0u) << huge;
+    EXPECT_NE(huge.find("1e999"), std::string::npos) << huge;
+}
+
+TEST(JsonText, CommentsAreReadOnlyWhereAllowed) {
+    const std::string commented = "// a hand-written file\n{\"a\": /* one */ 1}";
+    EXPECT_EQ(parseJsonText(commented, "scene.json", JsonComments::Allowed)["a"], 1);
+    EXPECT_NE(parseError(commented, JsonComments::Refused).find("not valid JSON"), std::string::npos);
+    EXPECT_TRUE(probeJsonText(commented, JsonComments::Refused).is_discarded());
+    EXPECT_FALSE(probeJsonText(commented, JsonComments::Allowed).is_discarded());
+}
+
+TEST(JsonField, AMissingKeyFailsWithWhatTheCallerSays) {
+    const nlohmann::json document = nlohmann::json::parse(R"({"cases": [{"name": "a"}]})");
+    const std::filesystem::path file = "suite.json";
+    const JsonField root(file, document, "");
+    const JsonField entry = root.member("cases").element(0);
+    try {
+        entry.member("scene", "missing; every case names its scene file");
+        FAIL() << "no error";
+    } catch (const InputError& error) {
+        EXPECT_STREQ(error.what(), "suite.json: cases[0].scene: missing; every case names its scene file");
+    }
+    try {
+        entry.allowOnlyKeys({"scene"});
+        FAIL() << "no error";
+    } catch (const InputError& error) {
+        EXPECT_STREQ(error.what(), "suite.json: cases[0].name: unknown key (allowed here: scene)");
+    }
+}
+
+}  // namespace
+}  // namespace tstyles
