@@ -144,12 +144,12 @@ Placement readPlacement(const std::optional<JsonField>& field) {
     Placement placement;
     if (!field) return placement;
     field->allowOnlyKeys({"origin", "rotation"});
-    if (const auto origin = field->optionalMember("origin")) placement.origin = origin->finiteVec3();
+    if (const auto origin = field->optionalMember("origin")) placement.origin = origin->vec3();
     if (const auto rotation = field->optionalMember("rotation")) {
         rotation->allowOnlyKeys({"axis", "angle_deg"});
         const JsonField axisField = rotation->member("axis");
         AxisAngle axisAngle;
-        axisAngle.axis = axisField.finiteVec3();
+        axisAngle.axis = axisField.vec3();
         if (!(glm::length(axisAngle.axis) > 0.0)) axisField.fail("rotation axis must not be zero");
         axisAngle.angleDeg = rotation->member("angle_deg").finiteNumber();
         placement.rotation = fromAxisAngle(axisAngle);

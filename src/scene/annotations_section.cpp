@@ -8,8 +8,6 @@
 namespace tstyles {
 namespace {
 
-using nlohmann::json;
-
 constexpr std::array cornerNameTable{
     std::pair{Corner::TopLeft, "top-left"},
     std::pair{Corner::TopRight, "top-right"},
@@ -17,47 +15,33 @@ constexpr std::array cornerNameTable{
     std::pair{Corner::BottomRight, "bottom-right"},
 };
 
-bool readSwitch(const JsonFieldReader& fields, const json& value, const std::string& path) {
-    if (!value.is_boolean()) fields.fail(path, "expected true or false");
-    return value.get<bool>();
-}
-
 }  // namespace
 
 std::string toString(Corner corner) { return nameOf(cornerNameTable, corner); }
 std::optional<Corner> cornerFromString(const std::string& name) { return valueOf(cornerNameTable, name); }
 std::vector<std::string> cornerNames() { return allNames(cornerNameTable); }
 
-Annotations readAnnotations(const JsonFieldReader& fields, const json& value) {
-    const std::string path = "annotations";
-    fields.expectObject(value, path, {"legend", "title", "caption", "box", "scale_bar", "coast", "font_size"});
+Annotations readAnnotations(const JsonField& section) {
+    section.allowOnlyKeys({"legend", "title", "caption", "box", "scale_bar", "coast", "font_size"});
     Annotations annotations;
-    if (const json* legend = JsonFieldReader::member(value, "legend")) {
-        const std::string legendPath = childPath(path, "legend");
-        if (legend->is_object()) {
-            fields.expectObject(*legend, legendPath, {"corner"});
+    if (const auto legend = section.optionalMember("legend")) {
+        if (legend->isObject()) {
+            legend->allowOnlyKeys({"corner"});
             annotations.legend = true;
-            if (const json* corner = JsonFieldReader::member(*legend, "corner"))
-                annotations.legendCorner =
-                    fields.name<Corner>(*corner, childPath(legendPath, "corner"), cornerFromString, cornerNames());
-        } else if (!legend->is_boolean()) {
-            fields.fail(legendPath, "expected true, false or {\"corner\": \"top-right\"}");
+            if (const auto corner = legend->optionalMember("corner"))
+                annotations.legendCorner = corner->name<Corner>(cornerFromString, cornerNames());
+        } else if (!legend->isBoolean()) {
+            legend->fail("expected true, false or {\"corner\": \"top-right\"}");
         } else {
-            annotations.legend = legend->get<bool>();
+            annotations.legend = legend->boolean();
         }
     }
-    if (const json* title = JsonFieldReader::member(value, "title"))
-        annotations.title = fields.string(*title, childPath(path, "title"));
-    if (const json* caption = JsonFieldReader::member(value, "caption"))
-        annotations.caption = readSwitch(fields, *caption, childPath(path, "caption"));
-    if (const json* box = JsonFieldReader::member(value, "box"))
-        annotations.box = readSwitch(fields, *box, childPath(path, "box"));
-    if (const json* scaleBar = JsonFieldReader::member(value, "scale_bar"))
-        annotations.scaleBar = readSwitch(fields, *scaleBar, childPath(path, "scale_bar"));
-    if (const json* coast = JsonFieldReader::member(value, "coast"))
-        annotations.coast = readSwitch(fields, *coast, childPath(path, "coast"));
-    if (const json* fontSize = JsonFieldReader::member(value, "font_size"))
-        annotations.fontSize = fields.numberIn(*fontSize, childPath(path, "font_size"), {4.0, 200.0});
+    if (const auto title = section.optionalMember("title")) annotations.title = title->string();
+    if (const auto caption = section.optionalMember("caption")) annotations.caption = caption->boolean();
+    if (const auto box = section.optionalMember("box")) annotations.box = box->boolean();
+    if (const auto scaleBar = section.optionalMember("scale_bar")) annotations.scaleBar = scaleBar->boolean();
+    if (const auto coast = section.optionalMember("coast")) annotations.coast = coast->boolean();
+    if (const auto fontSize = section.optionalMember("font_size")) annotations.fontSize = fontSize->numberIn({4.0, 200.0});
     return annotations;
 }
 

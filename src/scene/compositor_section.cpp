@@ -37,122 +37,108 @@ std::string readsName(CompositorReads reads) {
 
 // {"below": "auto" or a change in density units, "tie": a difference in density units and "gain"
 // (with a number for "below"), "opacity": the share of the STF's opacity kept}, all optional.
-UnchangedTime readUnchanged(const JsonFieldReader& fields, const json& value) {
-    const std::string path = "compositor.unchanged";
-    fields.expectObject(value, path, {"below", "tie", "gain", "boundary", "opacity"});
+UnchangedTime readUnchanged(const JsonField& section) {
+    section.allowOnlyKeys({"below", "tie", "gain", "boundary", "opacity"});
     UnchangedTime unchanged;
-    if (const json* below = JsonFieldReader::member(value, "below")) {
-        if (below->is_string()) {
-            if (below->get<std::string>() != "auto")
-                fields.fail(path + ".below", "expected \"auto\" or a change in [0, 1], got \"" +
-                                                 below->get<std::string>() + "\"");
+    if (const auto below = section.optionalMember("below")) {
+        if (below->isString()) {
+            if (below->string() != "auto")
+                below->fail("expected \"auto\" or a change in [0, 1], got \"" + below->string() + "\"");
         } else {
             unchanged.automatic = false;
-            unchanged.below = fields.numberIn(*below, path + ".below", Interval{0.0, 1.0});
+            unchanged.below = below->numberIn(Interval{0.0, 1.0});
         }
     }
     // The keys that "auto" fits along with "below": numbers only beside a number for it.
     const auto readFitted = [&](std::string_view key, const Interval& allowed, double& into) {
-        const json* given = JsonFieldReader::member(value, key);
+        const std::optional<JsonField> given = section.optionalMember(key);
         if (!given) return;
-        const std::string keyPath = childPath(path, key);
-        if (unchanged.automatic)
-            fields.fail(keyPath, "is fitted with \"below\": \"auto\"; give \"below\" as a number with it");
-        into = fields.numberIn(*given, keyPath, allowed);
+        if (unchanged.automatic) given->fail("is fitted with \"below\": \"auto\"; give \"below\" as a number with it");
+        into = given->numberIn(allowed);
     };
     readFitted("tie", Interval{0.0, 1.0}, unchanged.tie);
     readFitted("gain", Interval{1.0, 8.0}, unchanged.gain);
     readFitted("boundary", Interval{0.0, std::numeric_limits<double>::max()}, unchanged.boundary);
-    if (const json* opacity = JsonFieldReader::member(value, "opacity"))
-        unchanged.opacity = fields.numberIn(*opacity, path + ".opacity", Interval{0.0, 1.0});
+    if (const auto opacity = section.optionalMember("opacity")) unchanged.opacity = opacity->numberIn(Interval{0.0, 1.0});
     return unchanged;
 }
 
-std::string readCodeFile(const JsonFieldReader& fields, const std::filesystem::path& file) {
+std::string readCodeFile(const JsonField& name, const std::filesystem::path& file) {
     std::error_code error;
-    if (!std::filesystem::is_regular_file(file, error))
-        fields.fail("compositor.file", "no such file: " + file.string());
+    if (!std::filesystem::is_regular_file(file, error)) name.fail("no such file: " + file.string());
     std::ifstream in(file, std::ios::binary);
     std::ostringstream text;
     text << in.rdbuf();
-    if (!in && !in.eof()) fields.fail("compositor.file", "cannot read " + file.string());
+    if (!in && !in.eof()) name.fail("cannot read " + file.string());
     return text.str();
 }
 
-CustomCompositor readCustom(const JsonFieldReader& fields, const json& value, const std::filesystem::path& origin) {
+CustomCompositor readCustom(const JsonField& section, const std::filesystem::path& origin) {
     CustomCompositor custom;
-    const json* glsl = JsonFieldReader::member(value, "glsl");
-    const json* file = JsonFieldReader::member(value, "file");
-    if (glsl && file) fields.fail("compositor", "give \"glsl\" or \"file\", not both");
+    const std::optional<JsonField> glsl = section.optionalMember("glsl");
+    const std::optional<JsonField> file = section.optionalMember("file");
+    if (glsl && file) section.fail("give \"glsl\" or \"file\", not both");
     if (glsl) {
-        custom.glsl = fields.string(*glsl, "compositor.glsl");
+        custom.glsl = glsl->string();
         custom.origin = origin;
     } else {
-        const std::filesystem::path named = fields.pathName(*file, "compositor.file");
+        const std::filesystem::path named = file->pathName();
         const std::filesystem::path folder =
             origin.empty() ? std::filesystem::current_path() : std::filesystem::absolute(origin).parent_path();
         custom.origin = (folder / named).lexically_normal();
         custom.ownFile = true;
-        custom.glsl = readCodeFile(fields, custom.origin);
+        custom.glsl = readCodeFile(*file, custom.origin);
     }
-    const std::string codeField = glsl ? "compositor.glsl" : "compositor.file";
-    if (custom.glsl.find_first_not_of(" \t\r\n") == std::string::npos) fields.fail(codeField, "the compositor's code is empty");
+    const JsonField& code = glsl ? *glsl : *file;
+    if (custom.glsl.find_first_not_of(" \t\r\n") == std::string::npos) code.fail("the compositor's code is empty");
     if (const auto violation = findSandboxViolation(custom.glsl))
-        fields.fail(codeField, (custom.ownFile ? custom.origin.string() + ":" : std::string("line ")) +
-                                   std::to_string(violation->line) + ": " + violation->problem);
-    const json* reads = JsonFieldReader::member(value, "reads");
-    if (!reads) fields.fail("compositor.reads", "missing; \"index-tstf\" or \"gradient-tstf\"");
-    custom.reads = fields.name<CompositorReads>(*reads, "compositor.reads", readsFromString,
-                                                {"index-tstf", "gradient-tstf"});
+        code.fail((custom.ownFile ? custom.origin.string() + ":" : std::string("line ")) +
+                  std::to_string(violation->line) + ": " + violation->problem);
+    custom.reads = section.member("reads", "missing; \"index-tstf\" or \"gradient-tstf\"")
+                       .name<CompositorReads>(readsFromString, {"index-tstf", "gradient-tstf"});
     return custom;
 }
 
 }  // namespace
 
-void readCompositor(const JsonFieldReader& fields, const json& value, const std::filesystem::path& origin,
-                    Scene& scene) {
-    if (value.is_string()) {
-        scene.compositor = fields.name<TemporalCompositor>(value, "compositor", temporalCompositorFromString,
-                                                           temporalCompositorNames());
+void readCompositor(const JsonField& section, const std::filesystem::path& origin, Scene& scene) {
+    if (section.isString()) {
+        scene.compositor = section.name<TemporalCompositor>(temporalCompositorFromString, temporalCompositorNames());
         return;
     }
-    if (!value.is_object())
-        fields.fail("compositor", "expected a name or an object, got " + std::string(value.type_name()));
-    fields.expectObject(value, "compositor", {"name", "threshold", "steps", "glsl", "file", "reads", "unchanged"});
+    if (!section.isObject())
+        section.fail("expected a name or an object, got " + std::string(section.value().type_name()));
+    section.allowOnlyKeys({"name", "threshold", "steps", "glsl", "file", "reads", "unchanged"});
     CompositorOptions& options = scene.compositorOptions;
-    if (JsonFieldReader::member(value, "glsl") || JsonFieldReader::member(value, "file")) {
-        if (JsonFieldReader::member(value, "name"))
-            fields.fail("compositor.name", "a compositor with its own code has no name");
+    if (section.optionalMember("glsl") || section.optionalMember("file")) {
+        if (section.optionalMember("name")) section.failAt("name", "a compositor with its own code has no name");
         scene.compositor = TemporalCompositor::Custom;
-        options.custom = readCustom(fields, value, origin);
+        options.custom = readCustom(section, origin);
     } else {
-        const json& name = fields.requiredMember(value, "compositor", "name");
-        scene.compositor = fields.name<TemporalCompositor>(name, "compositor.name", temporalCompositorFromString,
-                                                           temporalCompositorNames());
-        if (JsonFieldReader::member(value, "reads"))
-            fields.fail("compositor.reads", "only a compositor with its own code says what reads it");
+        scene.compositor =
+            section.member("name").name<TemporalCompositor>(temporalCompositorFromString, temporalCompositorNames());
+        if (section.optionalMember("reads"))
+            section.failAt("reads", "only a compositor with its own code says what reads it");
     }
     const TemporalCompositorInfo& info = compositorInfo(scene.compositor);
-    if (const json* threshold = JsonFieldReader::member(value, "threshold")) {
-        if (!info.takesThreshold) fields.fail("compositor.threshold", std::string(info.name) + " takes no threshold");
-        options.threshold = fields.numberIn(*threshold, "compositor.threshold", Interval{0.0, 1.0});
+    if (const auto threshold = section.optionalMember("threshold")) {
+        if (!info.takesThreshold) threshold->fail(std::string(info.name) + " takes no threshold");
+        options.threshold = threshold->numberIn(Interval{0.0, 1.0});
     }
-    if (const json* steps = JsonFieldReader::member(value, "steps")) {
-        if (!info.takesSteps) fields.fail("compositor.steps", std::string(info.name) + " takes no steps");
-        const std::vector<double> pair = fields.numbers(*steps, "compositor.steps", 2, Interval{0.0, 1.0e6});
-        for (int i = 0; i < 2; ++i)
-            if (pair[std::size_t(i)] != std::floor(pair[std::size_t(i)]))
-                fields.fail("compositor.steps[" + std::to_string(i) + "]", "must be a whole time-step index");
+    if (const auto steps = section.optionalMember("steps")) {
+        if (!info.takesSteps) steps->fail(std::string(info.name) + " takes no steps");
+        const std::vector<double> pair = steps->numbers(2, Interval{0.0, 1.0e6});
+        for (std::size_t i = 0; i < 2; ++i)
+            if (pair[i] != std::floor(pair[i])) steps->element(i).fail("must be a whole time-step index");
         options.differenceFrom = int(pair[0]);
         options.differenceTo = int(pair[1]);
     }
-    if (const json* unchanged = JsonFieldReader::member(value, "unchanged")) {
+    if (const auto unchanged = section.optionalMember("unchanged")) {
         if (!info.takesUnchanged)
-            fields.fail("compositor.unchanged", std::string(info.name) +
-                                                    " does not pick a time-step, so no place is left without time "
-                                                    "colour (temporal-mip, temporal-min, time-of-max, first-arrival "
-                                                    "and last-above do)");
-        options.unchanged = readUnchanged(fields, *unchanged);
+            unchanged->fail(std::string(info.name) +
+                            " does not pick a time-step, so no place is left without time colour (temporal-mip, "
+                            "temporal-min, time-of-max, first-arrival and last-above do)");
+        options.unchanged = readUnchanged(*unchanged);
     }
 }
 

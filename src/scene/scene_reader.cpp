@@ -5,9 +5,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "json_fields.h"
 #include "scene_sections.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/core/json_field.h"
 #include "tstyles/core/json_text.h"
 #include "tstyles/core/user_paths.h"
 #include "tstyles/scene/scene_file.h"
@@ -23,277 +23,227 @@ constexpr Interval unitInterval{0.0, 1.0};
 constexpr Interval positive{0.0, infinity, false};
 
 // Editor groups are numbered from 1; a node without "group" belongs to none.
-NodeGroup readGroup(const JsonFieldReader& fields, const json& node, const std::string& nodePath) {
-    const json* group = JsonFieldReader::member(node, "group");
-    return group ? fields.integerIn(*group, childPath(nodePath, "group"), 1, 1000000) : 0;
+NodeGroup readGroup(const JsonField& node) {
+    const std::optional<JsonField> group = node.optionalMember("group");
+    return group ? group->integerIn(1, 1000000) : 0;
 }
 
 // Positions along a curve's axis: density or normalized change in [0, 1], or time-step units.
-void readOpacityNodes(const JsonFieldReader& fields, const json& value, const std::string& path,
-                      const Interval& positions, std::vector<OpacityNode>& nodes) {
-    fields.expectArray(value, path);
+void readOpacityNodes(const JsonField& list, const Interval& positions, std::vector<OpacityNode>& nodes) {
     nodes.clear();
-    for (std::size_t i = 0; i < value.size(); ++i) {
-        const std::string nodePath = elementPath(path, i);
-        fields.expectObject(value[i], nodePath, {"at", "opacity", "group"});
+    for (std::size_t i = 0; i < list.arraySize(); ++i) {
+        const JsonField entry = list.element(i);
+        entry.allowOnlyKeys({"at", "opacity", "group"});
         OpacityNode node;
-        node.at = fields.numberIn(fields.requiredMember(value[i], nodePath, "at"), childPath(nodePath, "at"),
-                                  positions);
-        node.opacity = fields.numberIn(fields.requiredMember(value[i], nodePath, "opacity"),
-                                       childPath(nodePath, "opacity"), unitInterval);
-        node.group = readGroup(fields, value[i], nodePath);
+        node.at = entry.member("at").numberIn(positions);
+        node.opacity = entry.member("opacity").numberIn(unitInterval);
+        node.group = readGroup(entry);
         nodes.push_back(node);
     }
 }
 
-void readColorNodes(const JsonFieldReader& fields, const json& value, const std::string& path,
-                    const Interval& positions, std::vector<ColorNode>& nodes) {
-    fields.expectArray(value, path);
+void readColorNodes(const JsonField& list, const Interval& positions, std::vector<ColorNode>& nodes) {
     nodes.clear();
-    for (std::size_t i = 0; i < value.size(); ++i) {
-        const std::string nodePath = elementPath(path, i);
-        fields.expectObject(value[i], nodePath, {"at", "color", "style", "group"});
+    for (std::size_t i = 0; i < list.arraySize(); ++i) {
+        const JsonField entry = list.element(i);
+        entry.allowOnlyKeys({"at", "color", "style", "group"});
         ColorNode node;
-        node.at = fields.numberIn(fields.requiredMember(value[i], nodePath, "at"), childPath(nodePath, "at"),
-                                  positions);
-        if (const json* style = JsonFieldReader::member(value[i], "style")) {
-            node.style = fields.pathName(*style, childPath(nodePath, "style"));
-            if (node.style.empty()) fields.fail(childPath(nodePath, "style"), "must name a style, got \"\"");
+        node.at = entry.member("at").numberIn(positions);
+        if (const auto style = entry.optionalMember("style")) {
+            node.style = style->pathName();
+            if (node.style.empty()) style->fail("must name a style, got \"\"");
         }
         // A style node's colour tints the style and may be left out; a flat node needs one.
-        if (const json* color = JsonFieldReader::member(value[i], "color"))
-            node.color = fields.vec3(*color, childPath(nodePath, "color"), unitInterval);
+        if (const auto color = entry.optionalMember("color"))
+            node.color = color->vec3(unitInterval);
         else if (node.style.empty())
-            fields.requiredMember(value[i], nodePath, "color");
-        node.group = readGroup(fields, value[i], nodePath);
+            entry.member("color");
+        node.group = readGroup(entry);
         nodes.push_back(node);
     }
 }
 
 // The "opacity" and "color" lists of an object whose keys the caller has already checked.
-void readCurve(const JsonFieldReader& fields, const json& object, const std::string& path,
-               const Interval& positions, TransferFunction1D& curve) {
-    if (const json* opacity = JsonFieldReader::member(object, "opacity")) {
-        readOpacityNodes(fields, *opacity, childPath(path, "opacity"), positions, curve.opacity);
-    }
-    if (const json* color = JsonFieldReader::member(object, "color")) {
-        readColorNodes(fields, *color, childPath(path, "color"), positions, curve.color);
-    }
+void readCurve(const JsonField& object, const Interval& positions, TransferFunction1D& curve) {
+    if (const auto opacity = object.optionalMember("opacity")) readOpacityNodes(*opacity, positions, curve.opacity);
+    if (const auto color = object.optionalMember("color")) readColorNodes(*color, positions, curve.color);
     curve.sortNodes();
 }
 
-void readGradientRange(const JsonFieldReader& fields, const json& value, const std::string& path,
-                       GradientTstf& tstf) {
-    if (!value.is_array()) fields.fail(path, "expected [low, high] or \"auto\", got " + std::string(value.type_name()));
+void readGradientRange(const JsonField& range, GradientTstf& tstf) {
+    if (!range.isArray()) range.fail("expected [low, high] or \"auto\", got " + std::string(range.value().type_name()));
     // Signed characteristics (a trend, a difference) take a range around 0.
-    const std::vector<double> range = fields.numbers(value, path, 2, Interval{-infinity, infinity});
-    if (!(range[0] < range[1])) {
-        fields.fail(path, "must be [low, high] with low < high, got [" + formatNumber(range[0]) + ", " +
-                              formatNumber(range[1]) + "]");
-    }
-    tstf.rangeLow = range[0];
-    tstf.rangeHigh = range[1];
+    const std::vector<double> ends = range.numbers(2, Interval{-infinity, infinity});
+    if (!(ends[0] < ends[1]))
+        range.fail("must be [low, high] with low < high, got [" + formatNumber(ends[0]) + ", " + formatNumber(ends[1]) +
+                   "]");
+    tstf.rangeLow = ends[0];
+    tstf.rangeHigh = ends[1];
 }
 
-void readTstf(const JsonFieldReader& fields, const json& value, Scene& scene) {
-    const std::string path = "tstf";
-    fields.expectObject(value, path, {"index", "gradient"});
-    if (const json* index = JsonFieldReader::member(value, "index")) {
-        const std::string indexPath = childPath(path, "index");
-        fields.expectObject(*index, indexPath, {"opacity", "color"});
-        readCurve(fields, *index, indexPath, anyFinite, scene.indexTstf.curve);
+void readTstf(const JsonField& tstf, Scene& scene) {
+    tstf.allowOnlyKeys({"index", "gradient"});
+    if (const auto index = tstf.optionalMember("index")) {
+        index->allowOnlyKeys({"opacity", "color"});
+        readCurve(*index, anyFinite, scene.indexTstf.curve);
     }
-    if (const json* gradient = JsonFieldReader::member(value, "gradient")) {
-        const std::string gradientPath = childPath(path, "gradient");
-        fields.expectObject(*gradient, gradientPath, {"range", "opacity", "color"});
-        if (const json* range = JsonFieldReader::member(*gradient, "range")) {
-            if (range->is_string() && range->get<std::string>() == "auto")
+    if (const auto gradient = tstf.optionalMember("gradient")) {
+        gradient->allowOnlyKeys({"range", "opacity", "color"});
+        if (const auto range = gradient->optionalMember("range")) {
+            if (range->isString() && range->value().get<std::string>() == "auto")
                 scene.gradientTstf.automaticRange = true;
             else
-                readGradientRange(fields, *range, childPath(gradientPath, "range"), scene.gradientTstf);
+                readGradientRange(*range, scene.gradientTstf);
         }
-        readCurve(fields, *gradient, gradientPath, unitInterval, scene.gradientTstf.curve);
+        readCurve(*gradient, unitInterval, scene.gradientTstf.curve);
     }
 }
 
-void readImage(const JsonFieldReader& fields, const json& value, Scene& scene) {
-    const std::string path = "image";
-    fields.expectObject(value, path, {"width", "height", "background"});
+void readImage(const JsonField& image, Scene& scene) {
+    image.allowOnlyKeys({"width", "height", "background"});
     constexpr int largestSide = 16384;
-    if (const json* width = JsonFieldReader::member(value, "width")) {
-        scene.width = fields.integerIn(*width, childPath(path, "width"), 1, largestSide);
-    }
-    if (const json* height = JsonFieldReader::member(value, "height")) {
-        scene.height = fields.integerIn(*height, childPath(path, "height"), 1, largestSide);
-    }
-    if (const json* background = JsonFieldReader::member(value, "background")) {
-        const std::vector<double> rgba =
-            fields.numbers(*background, childPath(path, "background"), 4, unitInterval);
+    if (const auto width = image.optionalMember("width")) scene.width = width->integerIn(1, largestSide);
+    if (const auto height = image.optionalMember("height")) scene.height = height->integerIn(1, largestSide);
+    if (const auto background = image.optionalMember("background")) {
+        const std::vector<double> rgba = background->numbers(4, unitInterval);
         scene.background = {rgba[0], rgba[1], rgba[2], rgba[3]};
     }
 }
 
-void readRaycast(const JsonFieldReader& fields, const json& value, Scene& scene) {
-    const std::string path = "raycast";
-    fields.expectObject(value, path, {"step", "termination"});
-    if (const json* step = JsonFieldReader::member(value, "step")) {
-        scene.raycast.step = fields.numberIn(*step, childPath(path, "step"), positive);
-    }
-    if (const json* termination = JsonFieldReader::member(value, "termination")) {
-        scene.raycast.termination =
-            fields.numberIn(*termination, childPath(path, "termination"), {0.0, 1.0, false, true});
-    }
+void readRaycast(const JsonField& raycast, Scene& scene) {
+    raycast.allowOnlyKeys({"step", "termination"});
+    if (const auto step = raycast.optionalMember("step")) scene.raycast.step = step->numberIn(positive);
+    if (const auto termination = raycast.optionalMember("termination"))
+        scene.raycast.termination = termination->numberIn({0.0, 1.0, false, true});
 }
 
 // "exposure": {"first": 2, "last": 5}; whether they fit the series is checked when the two meet.
-void readExposure(const JsonFieldReader& fields, const json& value, Exposure& exposure) {
-    const std::string path = "exposure";
-    fields.expectObject(value, path, {"first", "last"});
+void readExposure(const JsonField& section, Exposure& exposure) {
+    section.allowOnlyKeys({"first", "last"});
     constexpr int largestStep = 1000000;
-    if (const json* first = JsonFieldReader::member(value, "first"))
-        exposure.first = fields.integerIn(*first, childPath(path, "first"), 0, largestStep);
-    if (const json* last = JsonFieldReader::member(value, "last"))
-        exposure.last = fields.integerIn(*last, childPath(path, "last"), 0, largestStep);
-    if (exposure.last && *exposure.last < exposure.first)
-        fields.fail(childPath(path, "last"), "is " + std::to_string(*exposure.last) + ", before exposure.first (" +
-                                                 std::to_string(exposure.first) + ")");
+    if (const auto first = section.optionalMember("first")) exposure.first = first->integerIn(0, largestStep);
+    if (const auto last = section.optionalMember("last")) {
+        exposure.last = last->integerIn(0, largestStep);
+        if (*exposure.last < exposure.first)
+            last->fail("is " + std::to_string(*exposure.last) + ", before exposure.first (" +
+                       std::to_string(exposure.first) + ")");
+    }
 }
 
-void readStf(const JsonFieldReader& fields, const json& value, Scene& scene) {
-    fields.expectObject(value, "stf", {"opacity", "color"});
-    readCurve(fields, value, "stf", unitInterval, scene.stf.curve);
+void readStf(const JsonField& stf, Scene& scene) {
+    stf.allowOnlyKeys({"opacity", "color"});
+    readCurve(stf, unitInterval, scene.stf.curve);
 }
 
-OrbitCamera readOrbit(const JsonFieldReader& fields, const json& value, const std::string& path) {
-    fields.expectObject(value, path, {"target", "distance", "azimuth_deg", "elevation_deg"});
+OrbitCamera readOrbit(const JsonField& section) {
+    section.allowOnlyKeys({"target", "distance", "azimuth_deg", "elevation_deg"});
     OrbitCamera orbit;
-    if (const json* target = JsonFieldReader::member(value, "target")) {
-        orbit.target = fields.vec3(*target, childPath(path, "target"), anyFinite);
-    }
-    if (const json* distance = JsonFieldReader::member(value, "distance")) {
-        orbit.distance = fields.numberIn(*distance, childPath(path, "distance"), positive);
-    }
-    if (const json* azimuth = JsonFieldReader::member(value, "azimuth_deg")) {
-        orbit.azimuthDeg = fields.finiteNumber(*azimuth, childPath(path, "azimuth_deg"));
-    }
-    if (const json* elevation = JsonFieldReader::member(value, "elevation_deg")) {
-        orbit.elevationDeg = fields.numberIn(*elevation, childPath(path, "elevation_deg"), {-90.0, 90.0});
-    }
+    if (const auto target = section.optionalMember("target")) orbit.target = target->vec3(anyFinite);
+    if (const auto distance = section.optionalMember("distance")) orbit.distance = distance->numberIn(positive);
+    if (const auto azimuth = section.optionalMember("azimuth_deg")) orbit.azimuthDeg = azimuth->finiteNumber();
+    if (const auto elevation = section.optionalMember("elevation_deg"))
+        orbit.elevationDeg = elevation->numberIn({-90.0, 90.0});
     return orbit;
 }
 
 // Eye and target are required: the LookAtCamera defaults only make sense for data near the origin.
-LookAtCamera readLookAt(const JsonFieldReader& fields, const json& value, const std::string& path) {
-    fields.expectObject(value, path, {"eye", "target", "up"});
+LookAtCamera readLookAt(const JsonField& section) {
+    section.allowOnlyKeys({"eye", "target", "up"});
     LookAtCamera lookAt;
-    lookAt.eye = fields.vec3(fields.requiredMember(value, path, "eye"), childPath(path, "eye"), anyFinite);
-    lookAt.target =
-        fields.vec3(fields.requiredMember(value, path, "target"), childPath(path, "target"), anyFinite);
-    if (const json* up = JsonFieldReader::member(value, "up")) {
-        lookAt.up = fields.vec3(*up, childPath(path, "up"), anyFinite);
-    }
+    lookAt.eye = section.member("eye").vec3(anyFinite);
+    const JsonField target = section.member("target");
+    lookAt.target = target.vec3(anyFinite);
+    if (const auto up = section.optionalMember("up")) lookAt.up = up->vec3(anyFinite);
 
     const glm::dvec3 viewDirection = lookAt.target - lookAt.eye;
-    if (glm::length(viewDirection) == 0.0) fields.fail(childPath(path, "target"), "must differ from eye");
-    if (glm::length(lookAt.up) == 0.0) fields.fail(childPath(path, "up"), "must not be the zero vector");
+    if (glm::length(viewDirection) == 0.0) target.fail("must differ from eye");
+    if (glm::length(lookAt.up) == 0.0) section.failAt("up", "must not be the zero vector");
     // Relative test, so that the scale of the coordinates does not matter.
     const double sine = glm::length(glm::cross(glm::normalize(viewDirection), glm::normalize(lookAt.up)));
-    if (sine < 1e-6) {
-        fields.fail(childPath(path, "up"), "must not be parallel to the view direction (target - eye)");
-    }
+    if (sine < 1e-6) section.failAt("up", "must not be parallel to the view direction (target - eye)");
     return lookAt;
 }
 
-void readCamera(const JsonFieldReader& fields, const json& value, Camera& camera) {
-    const std::string path = "camera";
-    fields.expectObject(value, path, {"orbit", "look_at", "frame", "fov_deg", "projection"});
-    const json* orbit = JsonFieldReader::member(value, "orbit");
-    const json* lookAt = JsonFieldReader::member(value, "look_at");
-    if (orbit && lookAt) fields.fail(path, "has both orbit and look_at; give exactly one");
-    if (orbit) camera.pose = readOrbit(fields, *orbit, childPath(path, "orbit"));
-    if (lookAt) camera.pose = readLookAt(fields, *lookAt, childPath(path, "look_at"));
-    if (const json* frame = JsonFieldReader::member(value, "frame")) {
-        camera.framing = fields.name<Framing>(*frame, childPath(path, "frame"), framingFromString, framingNames());
-    }
-    if (const json* fov = JsonFieldReader::member(value, "fov_deg")) {
-        camera.fovDeg = fields.numberIn(*fov, childPath(path, "fov_deg"), {0.0, 180.0, false, false});
-    }
-    if (const json* projection = JsonFieldReader::member(value, "projection")) {
-        camera.projection = fields.name<Projection>(*projection, childPath(path, "projection"),
-                                                    projectionFromString, projectionNames());
-    }
+void readCamera(const JsonField& section, Camera& camera) {
+    section.allowOnlyKeys({"orbit", "look_at", "frame", "fov_deg", "projection"});
+    const std::optional<JsonField> orbit = section.optionalMember("orbit");
+    const std::optional<JsonField> lookAt = section.optionalMember("look_at");
+    if (orbit && lookAt) section.fail("has both orbit and look_at; give exactly one");
+    if (orbit) camera.pose = readOrbit(*orbit);
+    if (lookAt) camera.pose = readLookAt(*lookAt);
+    if (const auto frame = section.optionalMember("frame"))
+        camera.framing = frame->name<Framing>(framingFromString, framingNames());
+    if (const auto fov = section.optionalMember("fov_deg")) camera.fovDeg = fov->numberIn({0.0, 180.0, false, false});
+    if (const auto projection = section.optionalMember("projection"))
+        camera.projection = projection->name<Projection>(projectionFromString, projectionNames());
 }
 
 // "orientation": "data", "auto" or three signed axes ["+x", "+z", "-y"] that make a rotation.
-Orientation readOrientation(const JsonFieldReader& fields, const json& value) {
-    const std::string path = "orientation";
+Orientation readOrientation(const JsonField& field) {
     Orientation orientation;
-    if (value.is_string()) {
-        const std::string mode = value.get<std::string>();
+    if (field.isString()) {
+        const std::string mode = field.string();
         if (mode == "data") return orientation;
         if (mode == "auto") {
             orientation.mode = Orientation::Mode::Auto;
             return orientation;
         }
-        fields.fail(path, "unknown value \"" + mode + "\"; allowed: \"data\", \"auto\" or three axes such as "
-                          "[\"+x\", \"+z\", \"-y\"]");
+        field.fail("unknown value \"" + mode + "\"; allowed: \"data\", \"auto\" or three axes such as "
+                   "[\"+x\", \"+z\", \"-y\"]");
     }
-    fields.expectArray(value, path);
-    if (value.size() != 3) fields.fail(path, "expected three axes (display x, y, z), got " + std::to_string(value.size()));
+    if (field.arraySize() != 3)
+        field.fail("expected three axes (display x, y, z), got " + std::to_string(field.arraySize()));
     orientation.mode = Orientation::Mode::Axes;
     std::array<bool, 3> used{};
     for (std::size_t i = 0; i < 3; ++i) {
-        const std::string text = fields.string(value[i], elementPath(path, i));
+        const JsonField entry = field.element(i);
+        const std::string text = entry.string();
         const auto axis = signedAxisFromString(text);
-        if (!axis) fields.fail(elementPath(path, i), "expected +x, -x, +y, -y, +z or -z, got \"" + text + "\"");
-        if (used[std::size_t(axis->axis)]) fields.fail(path, "names an axis twice");
+        if (!axis) entry.fail("expected +x, -x, +y, -y, +z or -z, got \"" + text + "\"");
+        if (used[std::size_t(axis->axis)]) field.fail("names an axis twice");
         used[std::size_t(axis->axis)] = true;
         orientation.axes[i] = *axis;
     }
     if (glm::determinant(rotationOf(orientation.axes)) < 0.0)
-        fields.fail(path, "mirrors the data (a left-handed frame); negate one axis");
+        field.fail("mirrors the data (a left-handed frame); negate one axis");
     return orientation;
 }
 
 // "aspect": "physical", "cubic", "auto" or a scale per display axis [sx, sy, sz].
-Aspect readAspect(const JsonFieldReader& fields, const json& value) {
+Aspect readAspect(const JsonField& field) {
     Aspect aspect;
-    if (value.is_string()) {
-        const std::string mode = value.get<std::string>();
+    if (field.isString()) {
+        const std::string mode = field.string();
         if (mode == "physical") return aspect;
         aspect.mode = mode == "cubic" ? Aspect::Mode::Cubic : mode == "auto" ? Aspect::Mode::Auto : Aspect::Mode::Scale;
         if (aspect.mode == Aspect::Mode::Scale)
-            fields.fail("aspect", "unknown value \"" + mode + "\"; allowed: \"physical\", \"cubic\", \"auto\" or "
-                                  "a scale per axis [sx, sy, sz]");
+            field.fail("unknown value \"" + mode + "\"; allowed: \"physical\", \"cubic\", \"auto\" or a scale per "
+                       "axis [sx, sy, sz]");
         return aspect;
     }
     aspect.mode = Aspect::Mode::Scale;
-    aspect.scale = fields.vec3(value, "aspect", positive);
+    aspect.scale = field.vec3(positive);
     return aspect;
 }
 
-void readDisplay(const JsonFieldReader& fields, const json& root, DisplaySettings& display) {
-    if (const json* orientation = JsonFieldReader::member(root, "orientation"))
-        display.orientation = readOrientation(fields, *orientation);
-    if (const json* aspect = JsonFieldReader::member(root, "aspect")) display.aspect = readAspect(fields, *aspect);
-    if (const json* exaggeration = JsonFieldReader::member(root, "vertical_exaggeration")) {
-        if (exaggeration->is_string() && exaggeration->get<std::string>() == "auto")
+void readDisplay(const JsonField& root, DisplaySettings& display) {
+    if (const auto orientation = root.optionalMember("orientation")) display.orientation = readOrientation(*orientation);
+    if (const auto aspect = root.optionalMember("aspect")) display.aspect = readAspect(*aspect);
+    if (const auto exaggeration = root.optionalMember("vertical_exaggeration")) {
+        if (exaggeration->isString() && exaggeration->string() == "auto")
             display.verticalExaggeration.reset();
-        else if (exaggeration->is_string())
-            fields.fail("vertical_exaggeration", "expected a number > 0 or \"auto\", got \"" +
-                                                     exaggeration->get<std::string>() + "\"");
+        else if (exaggeration->isString())
+            exaggeration->fail("expected a number > 0 or \"auto\", got \"" + exaggeration->string() + "\"");
         else
-            display.verticalExaggeration = fields.numberIn(*exaggeration, "vertical_exaggeration", positive);
+            display.verticalExaggeration = exaggeration->numberIn(positive);
     }
 }
 
 // The dataset need not exist yet: the dataset loader reports a missing one, naming the manifest.
-std::filesystem::path readDataset(const JsonFieldReader& fields, const json& root,
-                                  const std::filesystem::path& origin) {
-    const json* dataset = JsonFieldReader::member(root, "dataset");
-    if (!dataset) fields.fail("dataset", "missing; a scene must name its dataset (a series manifest)");
-    const std::filesystem::path datasetPath = fields.pathName(*dataset, "dataset");
-    if (datasetPath.empty()) fields.fail("dataset", "must not be empty");
+std::filesystem::path readDataset(const JsonField& root, const std::filesystem::path& origin) {
+    const JsonField dataset = root.member("dataset", "missing; a scene must name its dataset (a series manifest)");
+    const std::filesystem::path datasetPath = dataset.pathName();
+    if (datasetPath.empty()) dataset.fail("must not be empty");
     // Relative to the scene file's folder; text read from no file is relative to the current directory.
     const std::filesystem::path sceneFolder =
         origin.empty() ? std::filesystem::current_path() : std::filesystem::absolute(origin).parent_path();
@@ -313,34 +263,29 @@ void resolveStyleFiles(Scene& scene, const std::filesystem::path& origin) {
 }  // namespace
 
 Scene parseScene(const std::string& text, const std::filesystem::path& origin) {
-    const JsonFieldReader fields(origin);
     // Comments are allowed so that hand-written scenes can explain themselves.
-    const json root = parseJsonText(text, origin, JsonComments::Allowed);
-    fields.expectObject(root, "",
-                        {"dataset", "image", "camera", "raycast", "stf", "compositor", "tstf", "final", "orientation",
-                         "aspect", "vertical_exaggeration", "exposure", "annotations", "animation"});
+    const json document = parseJsonText(text, origin, JsonComments::Allowed);
+    const JsonField root(origin, document, "");
+    root.allowOnlyKeys({"dataset", "image", "camera", "raycast", "stf", "compositor", "tstf", "final", "orientation",
+                        "aspect", "vertical_exaggeration", "exposure", "annotations", "animation"});
 
     Scene scene;
-    scene.dataset = readDataset(fields, root, origin);
-    readDisplay(fields, root, scene.display);
-    if (const json* image = JsonFieldReader::member(root, "image")) readImage(fields, *image, scene);
-    if (const json* camera = JsonFieldReader::member(root, "camera"))
-        readCamera(fields, *camera, scene.camera);
-    if (const json* raycast = JsonFieldReader::member(root, "raycast")) readRaycast(fields, *raycast, scene);
-    if (const json* stf = JsonFieldReader::member(root, "stf")) readStf(fields, *stf, scene);
-    if (const json* compositor = JsonFieldReader::member(root, "compositor"))
-        readCompositor(fields, *compositor, origin, scene);
-    if (const json* tstf = JsonFieldReader::member(root, "tstf")) readTstf(fields, *tstf, scene);
-    if (const json* exposure = JsonFieldReader::member(root, "exposure")) readExposure(fields, *exposure, scene.exposure);
-    if (const json* finalMode = JsonFieldReader::member(root, "final")) {
-        scene.finalMode = fields.name<FinalMode>(*finalMode, "final", finalModeFromString, finalModeNames());
-    }
-    if (const json* annotations = JsonFieldReader::member(root, "annotations"))
-        scene.annotations = readAnnotations(fields, *annotations);
+    scene.dataset = readDataset(root, origin);
+    readDisplay(root, scene.display);
+    if (const auto image = root.optionalMember("image")) readImage(*image, scene);
+    if (const auto camera = root.optionalMember("camera")) readCamera(*camera, scene.camera);
+    if (const auto raycast = root.optionalMember("raycast")) readRaycast(*raycast, scene);
+    if (const auto stf = root.optionalMember("stf")) readStf(*stf, scene);
+    if (const auto compositor = root.optionalMember("compositor")) readCompositor(*compositor, origin, scene);
+    if (const auto tstf = root.optionalMember("tstf")) readTstf(*tstf, scene);
+    if (const auto exposure = root.optionalMember("exposure")) readExposure(*exposure, scene.exposure);
+    if (const auto finalMode = root.optionalMember("final"))
+        scene.finalMode = finalMode->name<FinalMode>(finalModeFromString, finalModeNames());
+    if (const auto annotations = root.optionalMember("annotations")) scene.annotations = readAnnotations(*annotations);
     resolveStyleFiles(scene, origin);
     // Last: its keys are checked against the scene read so far.
-    if (const json* animation = JsonFieldReader::member(root, "animation"))
-        scene.animation = readAnimation(fields, *animation, scene, origin);
+    if (const auto animation = root.optionalMember("animation"))
+        scene.animation = readAnimation(*animation, scene, origin);
     return scene;
 }
 

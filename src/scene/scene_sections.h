@@ -6,22 +6,20 @@
 
 #include <nlohmann/json.hpp>
 
-#include "json_fields.h"
+#include "tstyles/core/json_field.h"
 #include "tstyles/scene/scene.h"
 
 namespace tstyles {
 
 // `scene` is what was read of the file before: each key is checked against it.
-Animation readAnimation(const JsonFieldReader& fields, const nlohmann::json& value, const Scene& scene,
-                        const std::filesystem::path& origin);
+Animation readAnimation(const JsonField& section, const Scene& scene, const std::filesystem::path& origin);
 nlohmann::ordered_json animationJson(const Animation& animation);
 
 // "compositor": sets scene.compositor and scene.compositorOptions.
-void readCompositor(const JsonFieldReader& fields, const nlohmann::json& value, const std::filesystem::path& origin,
-                    Scene& scene);
+void readCompositor(const JsonField& section, const std::filesystem::path& origin, Scene& scene);
 nlohmann::ordered_json compositorJson(const Scene& scene, const std::filesystem::path& sceneFolder);
 
-Annotations readAnnotations(const JsonFieldReader& fields, const nlohmann::json& value);
+Annotations readAnnotations(const JsonField& section);
 nlohmann::ordered_json annotationsJson(const Annotations& annotations);
 
 }  // namespace tstyles

@@ -195,7 +195,7 @@ case_folder_for_file() {
     refused "$SCRATCH/folder.png" "-o" "is a folder, not an image file" -- render "$DATASET" -o "$SCRATCH/folder.png"
     refused "$SCRATCH/folder.json" "-o" "is a folder, not a scene file" -- scene "$DATASET" -o "$SCRATCH/folder.json"
     refused "$SCRATCH/folder.png" "" "is a folder" -- compare "$SCRATCH/folder.png" "$SCRATCH/folder.png"
-    refused "$SCRATCH/folder.json" "" "is a folder, not a JSON file" -- compare "$SCRATCH/folder.png" \
+    refused "$SCRATCH/folder.json" "" "is a folder, not a thresholds file" -- compare "$SCRATCH/folder.png" \
         "$SCRATCH/folder.png" --thresholds "$SCRATCH/folder.json"
     write_suite folder.json
     refused "$SCRATCH/suite.json" "cases[0].scene" "no such scene file" -- check "$SCRATCH/suite.json"

@@ -53,7 +53,7 @@ TEST(JsonField, AMissingKeyFailsWithWhatTheCallerSays) {
         entry.allowOnlyKeys({"scene"});
         FAIL() << "no error";
     } catch (const InputError& error) {
-        EXPECT_STREQ(error.what(), "suite.json: cases[0].name: unknown key (allowed here: scene)");
+        EXPECT_STREQ(error.what(), "suite.json: cases[0].name: unknown key; the keys allowed in \"cases[0]\" are: scene");
     }
 }
 

@@ -65,7 +65,7 @@ TEST(ManifestErrors, TopLevelMustBeAnObject) {
 TEST(ManifestErrors, WrongFormatOrVersion) {
     expectMentions(errorWhenSet("/format", "other"), {"series.json", "format", "tstyles-series", "other"});
     expectMentions(errorWhenSet("/version", 2), {"series.json", "version", "unsupported version 2"});
-    expectMentions(errorWhenErased("/format"), {"series.json", "format", "missing required key"});
+    expectMentions(errorWhenErased("/format"), {"series.json", "format", "missing; this key is required"});
 }
 
 TEST(ManifestErrors, UnknownKeysAnywhere) {
@@ -80,7 +80,7 @@ TEST(ManifestErrors, UnknownKeysAnywhere) {
 
 TEST(ManifestErrors, WrongTypes) {
     expectMentions(errorWhenSet("/time_steps/0/time", "zero"),
-                   {"series.json", "time_steps[0].time", "expected a number", "found a string"});
+                   {"series.json", "time_steps[0].time", "expected a number", "got a string"});
     expectMentions(errorWhenSet("/time_steps/1/grid/dims", "64"),
                    {"time_steps[1].grid.dims", "expected an array"});
     expectMentions(errorWhenSet("/time_steps", json::object()),
@@ -95,12 +95,12 @@ TEST(ManifestErrors, WrongTypes) {
 
 TEST(ManifestErrors, MissingRequiredKeys) {
     expectMentions(errorWhenErased("/time_steps/0/grid"),
-                   {"series.json", "time_steps[0].grid", "missing required key"});
-    expectMentions(errorWhenErased("/time_steps/1/time"), {"time_steps[1].time", "missing required key"});
+                   {"series.json", "time_steps[0].grid", "missing; this key is required"});
+    expectMentions(errorWhenErased("/time_steps/1/time"), {"time_steps[1].time", "missing; this key is required"});
     expectMentions(errorWhenErased("/time_steps/1/values/file"),
-                   {"time_steps[1].values.file", "missing required key"});
+                   {"time_steps[1].values.file", "missing; this key is required"});
     expectMentions(errorWhenErased("/time_steps/0/placement/rotation/angle_deg"),
-                   {"time_steps[0].placement.rotation.angle_deg", "missing required key"});
+                   {"time_steps[0].placement.rotation.angle_deg", "missing; this key is required"});
 }
 
 TEST(ManifestErrors, GridNeedsTwoSamplesPerAxisAndPositiveSpacing) {
