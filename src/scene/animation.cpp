@@ -13,6 +13,7 @@
 #include "tstyles/scene/scene.h"
 #include "tstyles/scene/temporal_change.h"
 #include "tstyles/scene/scene_file.h"
+#include "tstyles/scene/scene_keys.h"
 
 namespace tstyles {
 namespace {
@@ -27,13 +28,6 @@ constexpr std::array curveNameTable{
     std::pair{CurveName::IndexTstf, "tstf.index"},
     std::pair{CurveName::GradientTstf, "tstf.gradient"},
 };
-
-// Keys of the scene format that hold whole numbers: an animated value is rounded there.
-bool isIntegerKey(const std::string& path) {
-    for (const char* key : {"image.width", "image.height", "exposure.first", "exposure.last"})
-        if (path == key) return true;
-    return false;
-}
 
 // Shifts every node of `group` by `offset`; positions stay inside [low, high] (the STF and the
 // gradient TSTF are read over [0, 1]; index TSTF nodes may lie anywhere, the ends hold).
@@ -122,37 +116,73 @@ Scene sceneAtFrame(const Scene& scene, int frame) {
     }
     if (!anyValueTrack) return result;
 
-    // Value tracks write into the scene's own JSON and read it back, so every frame is checked
-    // like a scene file. The stand-in file sits in the dataset's folder: relative paths resolve.
-    const std::filesystem::path folder = userAbsolutePath({}, scene.dataset).parent_path();
-    const std::filesystem::path origin = folder / "animated-scene.json";
-    nlohmann::json root = nlohmann::json::parse(sceneToJson(result, folder));
+    // Keys of the table (scene_keys.h) are set in the scene directly, checked against their line;
+    // the others (a node's position, a background channel) are written into the scene's own JSON,
+    // which is read back, so every frame is checked like a scene file. The stand-in file sits in
+    // the dataset's folder: relative paths resolve.
+    const auto failAtFrame = [frame](const std::string& problem) {
+        throw InputError("animation frame " + std::to_string(frame) + ": " + problem);
+    };
+    struct DirectValue {
+        std::size_t track;
+        const SceneKey* key;
+        double value;
+    };
+    std::vector<DirectValue> direct;
+    std::vector<std::pair<std::size_t, double>> throughJson;
     for (std::size_t i = 0; i < scene.animation.tracks.size(); ++i) {
         const AnimationTrack& track = scene.animation.tracks[i];
         const auto* target = std::get_if<ValueTrackTarget>(&track.target);
         if (!target) continue;
+        const SceneKey* key = findSceneKey(target->path);
+        const bool numeric = key && key->numeric;
         double value = track.valueAt(frame);
-        if (isIntegerKey(target->path)) value = std::round(value);
-        const auto steps = parseJsonPath(target->path);
-        if (!steps || !setNumberAtPath(root, *steps, value))
-            throwInputError("", "animation.tracks[" + std::to_string(i) + "].value",
-                            "the scene has no number at \"" + target->path + "\"");
+        if (numeric && key->numeric->whole) value = std::round(value);
+        if (numeric)
+            direct.push_back({i, key, value});
+        else
+            throughJson.emplace_back(i, value);
     }
-    try {
-        Scene moved = parseScene(root.dump(), origin);
-        // A range or threshold fitted to the data ("auto", fitSceneToSeries) reads back unfitted: keep the fit.
-        if (moved.gradientTstf.automaticRange && scene.gradientTstf.automaticRange) {
-            moved.gradientTstf.rangeLow = scene.gradientTstf.rangeLow;
-            moved.gradientTstf.rangeHigh = scene.gradientTstf.rangeHigh;
+    if (!throughJson.empty()) {
+        const std::filesystem::path folder = userAbsolutePath({}, scene.dataset).parent_path();
+        const std::filesystem::path origin = folder / "animated-scene.json";
+        nlohmann::json root = nlohmann::json::parse(sceneToJson(result, folder));
+        for (const auto& [index, value] : throughJson) {
+            const std::string& path = std::get<ValueTrackTarget>(scene.animation.tracks[index].target).path;
+            const auto steps = parseJsonPath(path);
+            if (!steps || !setNumberAtPath(root, *steps, value))
+                throwInputError("", "animation.tracks[" + std::to_string(index) + "].value",
+                                "the scene has no number at \"" + path + "\"");
         }
-        auto& movedUnchanged = moved.compositorOptions.unchanged;
-        const auto& fittedUnchanged = scene.compositorOptions.unchanged;
-        if (movedUnchanged && movedUnchanged->automatic && fittedUnchanged && fittedUnchanged->automatic)
-            takeFit(*movedUnchanged, fittedOf(*fittedUnchanged));
-        return moved;
-    } catch (const InputError& error) {
-        throw InputError("animation frame " + std::to_string(frame) + ": " + problemWithout(error.what(), origin));
+        try {
+            Scene moved = parseScene(root.dump(), origin);
+            // A range or threshold fitted to the data ("auto", fitSceneToSeries) reads back unfitted: keep the fit.
+            if (moved.gradientTstf.automaticRange && scene.gradientTstf.automaticRange) {
+                moved.gradientTstf.rangeLow = scene.gradientTstf.rangeLow;
+                moved.gradientTstf.rangeHigh = scene.gradientTstf.rangeHigh;
+            }
+            auto& movedUnchanged = moved.compositorOptions.unchanged;
+            const auto& fittedUnchanged = scene.compositorOptions.unchanged;
+            if (movedUnchanged && movedUnchanged->automatic && fittedUnchanged && fittedUnchanged->automatic)
+                takeFit(*movedUnchanged, fittedOf(*fittedUnchanged));
+            result = std::move(moved);
+        } catch (const InputError& error) {
+            failAtFrame(problemWithout(error.what(), origin));
+        }
     }
+    for (const DirectValue& entry : direct) {
+        const NumericKey& key = *entry.key->numeric;
+        const std::string path(entry.key->path);
+        if (!std::isfinite(entry.value) || !key.range.contains(entry.value))
+            failAtFrame(path + ": must be " + key.range.describe() + ", got " + formatNumber(entry.value));
+        if (!key.set(result, entry.value))
+            throwInputError("", "animation.tracks[" + std::to_string(entry.track) + "].value",
+                            "the scene has no number at \"" + path + "\"");
+    }
+    if (result.exposure.last && *result.exposure.last < result.exposure.first)
+        failAtFrame("exposure.last: is " + std::to_string(*result.exposure.last) + ", before exposure.first (" +
+                    std::to_string(result.exposure.first) + ")");
+    return result;
 }
 
 }  // namespace tstyles

@@ -4,6 +4,7 @@
 
 #include "name_table.h"
 #include "scene_sections.h"
+#include "tstyles/scene/scene_keys.h"
 
 namespace tstyles {
 namespace {
@@ -41,7 +42,7 @@ Annotations readAnnotations(const JsonField& section) {
     if (const auto box = section.optionalMember("box")) annotations.box = box->boolean();
     if (const auto scaleBar = section.optionalMember("scale_bar")) annotations.scaleBar = scaleBar->boolean();
     if (const auto coast = section.optionalMember("coast")) annotations.coast = coast->boolean();
-    if (const auto fontSize = section.optionalMember("font_size")) annotations.fontSize = fontSize->numberIn({4.0, 200.0});
+    if (const auto fontSize = section.optionalMember("font_size")) annotations.fontSize = readKeyNumber(*fontSize);
     return annotations;
 }
 

@@ -10,6 +10,7 @@
 
 #include "custom_compositor_check.h"
 #include "scene_sections.h"
+#include "tstyles/scene/scene_keys.h"
 #include "tstyles/scene/temporal_compositors.h"
 
 namespace tstyles {
@@ -46,20 +47,20 @@ UnchangedTime readUnchanged(const JsonField& section) {
                 below->fail("expected \"auto\" or a change in [0, 1], got \"" + below->string() + "\"");
         } else {
             unchanged.automatic = false;
-            unchanged.below = below->numberIn(Interval{0.0, 1.0});
+            unchanged.below = readKeyNumber(*below);
         }
     }
     // The keys that "auto" fits along with "below": numbers only beside a number for it.
-    const auto readFitted = [&](std::string_view key, const Interval& allowed, double& into) {
+    const auto readFitted = [&](std::string_view key, double& into) {
         const std::optional<JsonField> given = section.optionalMember(key);
         if (!given) return;
         if (unchanged.automatic) given->fail("is fitted with \"below\": \"auto\"; give \"below\" as a number with it");
-        into = given->numberIn(allowed);
+        into = readKeyNumber(*given);
     };
-    readFitted("tie", Interval{0.0, 1.0}, unchanged.tie);
-    readFitted("gain", Interval{1.0, 8.0}, unchanged.gain);
-    readFitted("boundary", Interval{0.0, std::numeric_limits<double>::max()}, unchanged.boundary);
-    if (const auto opacity = section.optionalMember("opacity")) unchanged.opacity = opacity->numberIn(Interval{0.0, 1.0});
+    readFitted("tie", unchanged.tie);
+    readFitted("gain", unchanged.gain);
+    readFitted("boundary", unchanged.boundary);
+    if (const auto opacity = section.optionalMember("opacity")) unchanged.opacity = readKeyNumber(*opacity);
     return unchanged;
 }
 
@@ -123,7 +124,7 @@ void readCompositor(const JsonField& section, const std::filesystem::path& origi
     const TemporalCompositorInfo& info = compositorInfo(scene.compositor);
     if (const auto threshold = section.optionalMember("threshold")) {
         if (!info.takesThreshold) threshold->fail(std::string(info.name) + " takes no threshold");
-        options.threshold = threshold->numberIn(Interval{0.0, 1.0});
+        options.threshold = readKeyNumber(*threshold);
     }
     if (const auto steps = section.optionalMember("steps")) {
         if (!info.takesSteps) steps->fail(std::string(info.name) + " takes no steps");

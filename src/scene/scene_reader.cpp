@@ -11,6 +11,7 @@
 #include "tstyles/core/json_text.h"
 #include "tstyles/core/user_paths.h"
 #include "tstyles/scene/scene_file.h"
+#include "tstyles/scene/scene_keys.h"
 #include "tstyles/scene/style_reference.h"
 
 namespace tstyles {
@@ -19,8 +20,6 @@ namespace {
 using nlohmann::json;
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
-constexpr Interval unitInterval{0.0, 1.0};
-constexpr Interval positive{0.0, infinity, false};
 
 // Editor groups are numbered from 1; a node without "group" belongs to none.
 NodeGroup readGroup(const JsonField& node) {
@@ -101,9 +100,8 @@ void readTstf(const JsonField& tstf, Scene& scene) {
 
 void readImage(const JsonField& image, Scene& scene) {
     image.allowOnlyKeys({"width", "height", "background"});
-    constexpr int largestSide = 16384;
-    if (const auto width = image.optionalMember("width")) scene.width = width->integerIn(1, largestSide);
-    if (const auto height = image.optionalMember("height")) scene.height = height->integerIn(1, largestSide);
+    if (const auto width = image.optionalMember("width")) scene.width = int(readKeyNumber(*width));
+    if (const auto height = image.optionalMember("height")) scene.height = int(readKeyNumber(*height));
     if (const auto background = image.optionalMember("background")) {
         const std::vector<double> rgba = background->numbers(4, unitInterval);
         scene.background = {rgba[0], rgba[1], rgba[2], rgba[3]};
@@ -112,18 +110,17 @@ void readImage(const JsonField& image, Scene& scene) {
 
 void readRaycast(const JsonField& raycast, Scene& scene) {
     raycast.allowOnlyKeys({"step", "termination"});
-    if (const auto step = raycast.optionalMember("step")) scene.raycast.step = step->numberIn(positive);
+    if (const auto step = raycast.optionalMember("step")) scene.raycast.step = readKeyNumber(*step);
     if (const auto termination = raycast.optionalMember("termination"))
-        scene.raycast.termination = termination->numberIn({0.0, 1.0, false, true});
+        scene.raycast.termination = readKeyNumber(*termination);
 }
 
 // "exposure": {"first": 2, "last": 5}; whether they fit the series is checked when the two meet.
 void readExposure(const JsonField& section, Exposure& exposure) {
     section.allowOnlyKeys({"first", "last"});
-    constexpr int largestStep = 1000000;
-    if (const auto first = section.optionalMember("first")) exposure.first = first->integerIn(0, largestStep);
+    if (const auto first = section.optionalMember("first")) exposure.first = int(readKeyNumber(*first));
     if (const auto last = section.optionalMember("last")) {
-        exposure.last = last->integerIn(0, largestStep);
+        exposure.last = int(readKeyNumber(*last));
         if (*exposure.last < exposure.first)
             last->fail("is " + std::to_string(*exposure.last) + ", before exposure.first (" +
                        std::to_string(exposure.first) + ")");
@@ -139,10 +136,10 @@ OrbitCamera readOrbit(const JsonField& section) {
     section.allowOnlyKeys({"target", "distance", "azimuth_deg", "elevation_deg"});
     OrbitCamera orbit;
     if (const auto target = section.optionalMember("target")) orbit.target = target->vec3(anyFinite);
-    if (const auto distance = section.optionalMember("distance")) orbit.distance = distance->numberIn(positive);
-    if (const auto azimuth = section.optionalMember("azimuth_deg")) orbit.azimuthDeg = azimuth->finiteNumber();
+    if (const auto distance = section.optionalMember("distance")) orbit.distance = readKeyNumber(*distance);
+    if (const auto azimuth = section.optionalMember("azimuth_deg")) orbit.azimuthDeg = readKeyNumber(*azimuth);
     if (const auto elevation = section.optionalMember("elevation_deg"))
-        orbit.elevationDeg = elevation->numberIn({-90.0, 90.0});
+        orbit.elevationDeg = readKeyNumber(*elevation);
     return orbit;
 }
 
@@ -173,7 +170,7 @@ void readCamera(const JsonField& section, Camera& camera) {
     if (lookAt) camera.pose = readLookAt(*lookAt);
     if (const auto frame = section.optionalMember("frame"))
         camera.framing = frame->name<Framing>(framingFromString, framingNames());
-    if (const auto fov = section.optionalMember("fov_deg")) camera.fovDeg = fov->numberIn({0.0, 180.0, false, false});
+    if (const auto fov = section.optionalMember("fov_deg")) camera.fovDeg = readKeyNumber(*fov);
     if (const auto projection = section.optionalMember("projection"))
         camera.projection = projection->name<Projection>(projectionFromString, projectionNames());
 }
@@ -222,7 +219,7 @@ Aspect readAspect(const JsonField& field) {
         return aspect;
     }
     aspect.mode = Aspect::Mode::Scale;
-    aspect.scale = field.vec3(positive);
+    aspect.scale = field.vec3(aboveZero);
     return aspect;
 }
 
@@ -235,7 +232,7 @@ void readDisplay(const JsonField& root, DisplaySettings& display) {
         else if (exaggeration->isString())
             exaggeration->fail("expected a number > 0 or \"auto\", got \"" + exaggeration->string() + "\"");
         else
-            display.verticalExaggeration = exaggeration->numberIn(positive);
+            display.verticalExaggeration = readKeyNumber(*exaggeration);
     }
 }
 

@@ -7,6 +7,7 @@
 
 #include <imgui.h>
 
+#include "key_slider.h"
 #include "side_panel.h"
 #include "tstyles/core/errors.h"
 
@@ -118,8 +119,8 @@ void drawAnnotationsSection(SidePanelState& state, UiAnchors& anchors) {
     std::array<char, 256> title{};
     std::snprintf(title.data(), title.size(), "%s", annotations.title.c_str());
     if (ImGui::InputText("title", title.data(), title.size())) annotations.title = title.data();
-    float fontSize = float(annotations.fontSize);
-    if (ImGui::SliderFloat("text size", &fontSize, 6.0f, 40.0f, "%.0f px at 512")) annotations.fontSize = fontSize;
+    drawKeySlider({"text size", "annotations.font_size", "%.0f px at 512", false, Interval{6.0, 40.0}},
+                  annotations.fontSize);
 }
 
 }  // namespace tstyles::viewer

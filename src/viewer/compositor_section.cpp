@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "camera_controller.h"
+#include "key_slider.h"
 #include "side_panel.h"
 #include "tstyles/scene/automatic_scene.h"
 #include "tstyles/scene/temporal_compositors.h"
@@ -39,10 +40,8 @@ void drawRaycastSettings(Scene& scene, double defaultStep) {
                                 ImGuiSliderFlags_Logarithmic))
             scene.raycast.step = std::max(step, 1e-9);
     }
-    const double lowest = 0.05;
-    const double highest = 1.0;
-    ImGui::SliderScalar("termination", ImGuiDataType_Double, &scene.raycast.termination, &lowest, &highest, "%.3f");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Rays stop once their accumulated opacity reaches this.");
+    // Below 0.05 a ray stops before it shows anything.
+    drawKeySlider({"termination", "raycast.termination", "%.3f", false, Interval{0.05, 1.0}}, scene.raycast.termination);
 }
 
 // The gradient TSTF's range, in density units: signed characteristics (a trend, a difference)
@@ -95,31 +94,21 @@ void drawUnchangedPlaces(Scene& scene, const Series& series) {
         ImGui::SetTooltip("No time colour where a place's values change by no more than the threshold, nor where two "
                           "time-steps tie (docs/compositors.md, \"Unchanged places\").");
     if (!unchanged) return;
-    const double low = 0.0;
-    const double high = 1.0;
-    if (ImGui::SliderScalar(unchanged->automatic ? "unchanged below (auto)" : "unchanged below", ImGuiDataType_Double,
-                            &unchanged->below, &low, &high, "%.4f", ImGuiSliderFlags_Logarithmic))
+    if (drawKeySlider({unchanged->automatic ? "unchanged below (auto)" : "unchanged below", "compositor.unchanged.below",
+                       "%.4f", true, std::nullopt,
+                       "\"auto\": a tenth of the typical largest change, or above the noise."},
+                      unchanged->below))
         unchanged->automatic = false;
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("A change in density units (0 to 1); \"auto\" is fitted to the data: a tenth of the typical "
-                          "largest change, or above the noise.");
-    if (ImGui::SliderScalar("tie", ImGuiDataType_Double, &unchanged->tie, &low, &high, "%.4f",
-                            ImGuiSliderFlags_Logarithmic))
+    if (drawKeySlider({"tie", "compositor.unchanged.tie", "%.4f", true, std::nullopt,
+                       "\"auto\": what the data's noise puts between two equal values."},
+                      unchanged->tie))
         unchanged->automatic = false;
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Two time-steps whose densities differ by no more than this tie (density units); \"auto\": "
-                          "what the data's noise puts between two equal values.");
-    ImGui::SliderScalar("unchanged opacity", ImGuiDataType_Double, &unchanged->opacity, &low, &high, "%.2f");
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Unchanged places show the STF alone with this share of its opacity: 1 as the STF has it, 0 "
-                          "transparent.");
-    const double lowestGain = 1.0;
-    const double highestGain = 8.0;
-    if (ImGui::SliderScalar("changed gain", ImGuiDataType_Double, &unchanged->gain, &lowestGain, &highestGain, "%.2f"))
+    drawKeySlider({"unchanged opacity", "compositor.unchanged.opacity", "%.2f"}, unchanged->opacity);
+    if (drawKeySlider({"changed gain", "compositor.unchanged.gain", "%.2f", false, std::nullopt,
+                       "\"auto\": the ratio of the ray lengths through all visible places and through the "
+                       "changing ones."},
+                      unchanged->gain))
         unchanged->automatic = false;
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Places that change show as if this many times as thick; \"auto\": the ratio of the ray "
-                          "lengths through all visible places and through the changing ones.");
     const double flattest = 0.0;
     if (ImGui::DragScalar("boundary", ImGuiDataType_Double, &unchanged->boundary, 0.01f, &flattest, nullptr, "%.3f"))
         unchanged->automatic = false;
@@ -135,10 +124,9 @@ void drawCompositorOptions(Scene& scene, const Series& series) {
     const TemporalCompositorInfo& info = compositorInfo(scene.compositor);
     CompositorOptions& options = scene.compositorOptions;
     if (info.takesThreshold) {
-        const double low = 0.0;
-        const double high = 1.0;
-        ImGui::SliderScalar("threshold", ImGuiDataType_Double, &options.threshold, &low, &high, "%.3f");
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("The density (0 to 1) a time-step must reach at the sample.");
+        drawKeySlider({"threshold", "compositor.threshold", "%.3f", false, std::nullopt,
+                       "The density a time-step must reach at the sample."},
+                      options.threshold);
     }
     if (info.takesSteps && series.size() > 0) {
         const int last = int(series.size()) - 1;
@@ -188,14 +176,14 @@ void drawCameraSection(SidePanelState& state, ViewerCommands& commands) {
     Camera& camera = state.scene.camera;
     if (auto chosen = nameCombo("projection", projectionNames(), toString(camera.projection)))
         camera.projection = *projectionFromString(projectionNames()[*chosen]);
-    const double narrow = 5.0;
-    const double wide = 120.0;
-    ImGui::SliderScalar("field of view", ImGuiDataType_Double, &camera.fovDeg, &narrow, &wide, "%.1f deg");
+    // Wider than 120 degrees a perspective bends the data out of shape; narrower than 5 it shows a speck.
+    drawKeySlider({"field of view", "camera.fov_deg", "%.1f deg", false, Interval{5.0, 120.0}}, camera.fovDeg);
     if (auto* orbit = std::get_if<OrbitCamera>(&camera.pose)) {
-        const double turn[2] = {-180.0, 180.0};
-        const double pole[2] = {-89.0, 89.0};
-        ImGui::SliderScalar("azimuth", ImGuiDataType_Double, &orbit->azimuthDeg, &turn[0], &turn[1], "%.1f deg");
-        ImGui::SliderScalar("elevation", ImGuiDataType_Double, &orbit->elevationDeg, &pole[0], &pole[1], "%.1f deg");
+        drawKeySlider({"azimuth", "camera.orbit.azimuth_deg", "%.1f deg", false, Interval{-180.0, 180.0}},
+                      orbit->azimuthDeg);
+        // At a pole the orbit's up direction is undefined: the slider stops a degree short.
+        drawKeySlider({"elevation", "camera.orbit.elevation_deg", "%.1f deg", false, Interval{-89.0, 89.0}},
+                      orbit->elevationDeg);
         ImGui::TextDisabled("distance %s, target %s", orbit->distance ? "set" : "framing the data",
                             orbit->target ? "set" : "data centre");
     } else {

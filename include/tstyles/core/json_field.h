@@ -36,6 +36,8 @@ struct Interval {
 // Any finite number (finiteness is checked before the interval).
 inline constexpr Interval anyFinite{-std::numeric_limits<double>::infinity(),
                                     std::numeric_limits<double>::infinity()};
+inline constexpr Interval unitInterval{0.0, 1.0};
+inline constexpr Interval aboveZero{0.0, std::numeric_limits<double>::infinity(), false};
 
 class JsonField {
 public:
