@@ -11,6 +11,7 @@
 #include "tstyles/render/style_library.h"
 #include "tstyles/scene/automatic_scene.h"
 #include "tstyles/scene/scene_file.h"
+#include "tstyles/scene/scene_keys.h"
 
 namespace py = pybind11;
 
@@ -34,6 +35,21 @@ void bindScene(py::module_& module) {
         return SceneHandle{std::move(automatic.scene), std::move(automatic.explanation)};
     });
     module.def("built_in_styles", &builtInStyleNames);
+    // The table of scene keys (scene_keys.h): path, type, default and what each takes, as
+    // docs/scene-format.md lists them; scene.py's docstrings are made from it.
+    module.def("scene_keys", [] {
+        std::vector<py::dict> keys;
+        for (const SceneKey& key : sceneKeys()) {
+            py::dict entry;
+            entry["path"] = std::string(key.path);
+            entry["type"] = std::string(key.type);
+            entry["default"] = std::string(key.defaultText);
+            entry["allowed"] = allowedText(key);
+            entry["whole"] = key.numeric && key.numeric->whole;
+            keys.push_back(std::move(entry));
+        }
+        return keys;
+    });
 }
 
 }  // namespace tstyles::python

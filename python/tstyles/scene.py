@@ -9,13 +9,6 @@ from . import _native
 # Where a scene made in Python names no dataset: the command line's stand-in for "none".
 _NO_DATASET = "-"
 
-# The names a scene's "compositor" takes (docs/compositors.md), in the order of the C++ table
-# (src/scene/temporal_compositors.cpp) and of the scene reader's "allowed values". The table's last
-# line, the scene's own GLSL compositor, has no name here: it is an object with "glsl" or "file".
-# _native does not list them; tests/python/test_render.py checks this list against the reader's.
-_COMPOSITORS = ("temporal-mip", "temporal-average", "temporal-max-change", "temporal-min", "temporal-std-dev",
-                "time-of-max", "first-arrival", "last-above", "linear-trend", "chronovolume", "difference")
-
 
 class Scene:
     """How a series is seen and classified: camera, STF, TSTFs (with lit-sphere styles), compositor.
@@ -97,13 +90,15 @@ class Scene:
     def __repr__(self):
         return f"<tstyles.Scene {self.compositor}, {self.width}x{self.height}>"
 
-    # The keys most scripts change, as attributes.
-    compositor = property(lambda self: self["compositor"], lambda self, v: self.__setitem__("compositor", v),
-                          doc=f"A name ({', '.join(_COMPOSITORS)}), or an object: a name with its options "
-                              "(threshold, steps, unchanged) or the scene's own GLSL compositor (glsl or file, "
-                              "with reads); docs/scene-format.md")
-    final_mode = property(lambda self: self["final"], lambda self, v: self.__setitem__("final", v),
-                          doc="stf, tstf or modulate")
+    @staticmethod
+    def keys():
+        """Every key of a scene file with its type, default and what it takes (docs/scene-format.md)."""
+        return [dict(key) for key in _native.scene_keys()]
+
+    # The keys most scripts change, as attributes: each reads and writes the key at its path, and
+    # its docstring is the key's line of the scene reader's table (_key_doc).
+    compositor = property(lambda self: self["compositor"], lambda self, v: self.__setitem__("compositor", v))
+    final_mode = property(lambda self: self["final"], lambda self, v: self.__setitem__("final", v))
     camera = property(lambda self: self["camera"], lambda self, v: self.__setitem__("camera", v))
     stf = property(lambda self: self["stf"], lambda self, v: self.__setitem__("stf", v))
     index_tstf = property(lambda self: self["tstf"]["index"], lambda self, v: self.set("tstf.index", v))
@@ -118,6 +113,28 @@ class Scene:
         content = self.to_dict()
         curves = [content.get("stf", {})] + list(content.get("tstf", {}).values())
         return sorted({node["style"] for curve in curves for node in curve.get("color", []) if "style" in node})
+
+
+# The key path each attribute stands for; its docstring comes from the key table.
+_ATTRIBUTE_KEYS = {"compositor": "compositor", "final_mode": "final", "camera": "camera.orbit",
+                   "stf": "stf.opacity", "index_tstf": "tstf.index.opacity", "gradient_tstf": "tstf.gradient.range",
+                   "width": "image.width", "height": "image.height", "background": "image.background"}
+
+
+def _key_doc(key):
+    text = f"{key['path']} ({key['type']}"
+    text += f", default {key['default']})" if key["default"] else ")"
+    return (text + ": " + key["allowed"]).replace("`", "")
+
+
+def _document_attributes():
+    keys = {key["path"]: key for key in _native.scene_keys()}
+    for attribute, path in _ATTRIBUTE_KEYS.items():
+        getter = getattr(Scene, attribute)
+        setattr(Scene, attribute, property(getter.fget, getter.fset, doc=_key_doc(keys[path])))
+
+
+_document_attributes()
 
 
 def _from_dict(content):

@@ -160,12 +160,18 @@ def test_render_errors_are_value_errors_with_the_cli_message(backend):
         assert str(error.value).startswith("scene: compositor: ")
 
 
+def allowed_in_key_table(path):
+    return next(key for key in tstyles.Scene.keys() if key["path"] == path)["allowed"].replace("`", "")
+
+
 def test_the_compositor_names_are_the_scene_readers():
     # _native lists no compositors: the reader's own list is the one in its message for an unknown name.
     with pytest.raises(ValueError) as error:
         tstyles.Scene({"compositor": "temporal-median"})
     allowed = str(error.value).split("; allowed values: ", 1)[1].split(", ")
-    assert allowed == list(tstyles.scene._COMPOSITORS)
+    assert len(allowed) == 11
+    # The attribute's docstring is the key table's line for "compositor", which names them all.
+    assert allowed_in_key_table("compositor") in tstyles.Scene.compositor.__doc__
     for name in allowed:
         assert name in tstyles.Scene.compositor.__doc__
         compositor = tstyles.Scene({"compositor": name}).compositor  # with its options' defaults: an object
@@ -178,3 +184,10 @@ def test_the_default_scene_reads_and_writes():
     assert scene.compositor == tstyles.Scene({}).compositor
     assert json.loads(scene.to_json()) == tstyles.Scene({}).to_dict()
     assert scene == tstyles.Scene({})
+
+
+def test_the_attributes_are_documented_from_the_key_table():
+    keys = {key["path"]: key for key in tstyles.Scene.keys()}
+    assert keys["image.width"]["allowed"] == "in [1, 16384]" and keys["image.width"]["whole"]
+    assert tstyles.Scene.width.__doc__ == "image.width (integer, default 512): in [1, 16384]"
+    assert "rays stop at this accumulated opacity" in keys["raycast.termination"]["allowed"]
