@@ -16,6 +16,36 @@ namespace {
 const OrbitCamera* orbitOf(const Scene& s) { return std::get_if<OrbitCamera>(&s.camera.pose); }
 OrbitCamera* orbitOf(Scene& s) { return std::get_if<OrbitCamera>(&s.camera.pose); }
 
+// A number of the orbit: none, and not set, where the camera is a look_at.
+template <double OrbitCamera::*number>
+std::optional<double> orbitNumber(const Scene& s) {
+    const OrbitCamera* orbit = orbitOf(s);
+    return orbit ? std::optional<double>(orbit->*number) : std::nullopt;
+}
+
+template <double OrbitCamera::*number>
+bool setOrbitNumber(Scene& s, double value) {
+    OrbitCamera* orbit = orbitOf(s);
+    if (orbit) orbit->*number = value;
+    return orbit != nullptr;
+}
+
+// A number of the unchanged places that "auto" fits: none, and not set, without unchanged places or
+// where they are fitted.
+template <double UnchangedTime::*number>
+std::optional<double> fittedUnchanged(const Scene& s) {
+    const auto& unchanged = s.compositorOptions.unchanged;
+    return unchanged && !unchanged->automatic ? std::optional<double>(*unchanged.*number) : std::nullopt;
+}
+
+template <double UnchangedTime::*number>
+bool setFittedUnchanged(Scene& s, double value) {
+    auto& unchanged = s.compositorOptions.unchanged;
+    if (!unchanged || unchanged->automatic) return false;
+    *unchanged.*number = value;
+    return true;
+}
+
 const std::vector<SceneKey>& keyTable() {
     static const std::vector<SceneKey> keys = {
         {"dataset", "string", "— (required)",
@@ -41,10 +71,10 @@ const std::vector<SceneKey>& keyTable() {
                         return s.display.verticalExaggeration;
                     },
                     [](Scene& s, double v) {
-                    if (!s.display.verticalExaggeration) return false;
-                    s.display.verticalExaggeration = v;
-                    return true;
-                }}},
+                        if (!s.display.verticalExaggeration) return false;
+                        s.display.verticalExaggeration = v;
+                        return true;
+                    }}},
         {"image.width", "integer", "`512`",
          "",
          NumericKey{true, Interval{1.0, 16384.0},
@@ -76,34 +106,18 @@ const std::vector<SceneKey>& keyTable() {
                         return o && o->distance ? std::optional<double>(*o->distance) : std::nullopt;
                     },
                     [](Scene& s, double v) {
-                    OrbitCamera* orbit = orbitOf(s);
-                    if (orbit) orbit->distance = v;
-                    return orbit != nullptr;
-                }}},
+                        OrbitCamera* orbit = orbitOf(s);
+                        if (orbit) orbit->distance = v;
+                        return orbit != nullptr;
+                    }}},
         {"camera.orbit.azimuth_deg", "number", "`30`",
          "turns from +z toward +x",
-         NumericKey{false, anyFinite,
-                    [](const Scene& s) -> std::optional<double> {
-                        const OrbitCamera* o = orbitOf(s);
-                        return o ? std::optional<double>(o->azimuthDeg) : std::nullopt;
-                    },
-                    [](Scene& s, double v) {
-                    OrbitCamera* orbit = orbitOf(s);
-                    if (orbit) orbit->azimuthDeg = v;
-                    return orbit != nullptr;
-                }}},
+         NumericKey{false, anyFinite, orbitNumber<&OrbitCamera::azimuthDeg>,
+                    setOrbitNumber<&OrbitCamera::azimuthDeg>}},
         {"camera.orbit.elevation_deg", "number", "`20`",
          "lifts from the xz-plane toward +y",
-         NumericKey{false, Interval{-90.0, 90.0},
-                    [](const Scene& s) -> std::optional<double> {
-                        const OrbitCamera* o = orbitOf(s);
-                        return o ? std::optional<double>(o->elevationDeg) : std::nullopt;
-                    },
-                    [](Scene& s, double v) {
-                    OrbitCamera* orbit = orbitOf(s);
-                    if (orbit) orbit->elevationDeg = v;
-                    return orbit != nullptr;
-                }}},
+         NumericKey{false, Interval{-90.0, 90.0}, orbitNumber<&OrbitCamera::elevationDeg>,
+                    setOrbitNumber<&OrbitCamera::elevationDeg>}},
         {"camera.look_at.eye", "3 numbers", "— (required in `look_at`)",
          "finite, different from `target`",
          std::nullopt},
@@ -164,10 +178,10 @@ const std::vector<SceneKey>& keyTable() {
                         return s.compositorOptions.threshold;
                     },
                     [](Scene& s, double v) {
-                    if (!compositorInfo(s.compositor).takesThreshold) return false;
-                    s.compositorOptions.threshold = v;
-                    return true;
-                }}},
+                        if (!compositorInfo(s.compositor).takesThreshold) return false;
+                        s.compositorOptions.threshold = v;
+                        return true;
+                    }}},
         {"compositor.steps", "2 integers `[from, to]`", "first and last time-step",
          "whole time-step indices of the series (checked when the scene meets it); `difference` only: "
          "density(to) - density(from)",
@@ -181,59 +195,24 @@ const std::vector<SceneKey>& keyTable() {
         {"compositor.unchanged.below", "number or `\"auto\"`", "`\"auto\"`",
          "a change in density units; `\"auto\"` fits `below`, `tie`, `gain` and `boundary` to the data "
          "whenever the scene meets a series (docs/automatic-scene.md)",
-         NumericKey{false, unitInterval,
-                    [](const Scene& s) -> std::optional<double> {
-                        const auto& u = s.compositorOptions.unchanged;
-                        return u && !u->automatic ? std::optional<double>(u->below) : std::nullopt;
-                    },
-                    [](Scene& s, double v) {
-                    auto& u = s.compositorOptions.unchanged;
-                    if (!u || u->automatic) return false;
-                    u->below = v;
-                    return true;
-                }}},
+         NumericKey{false, unitInterval, fittedUnchanged<&UnchangedTime::below>,
+                    setFittedUnchanged<&UnchangedTime::below>}},
         {"compositor.unchanged.tie", "number", "`0`",
          "with a number for `below`: a difference in density units up to which two time-steps tie",
-         NumericKey{false, unitInterval,
-                    [](const Scene& s) -> std::optional<double> {
-                        const auto& u = s.compositorOptions.unchanged;
-                        return u && !u->automatic ? std::optional<double>(u->tie) : std::nullopt;
-                    },
-                    [](Scene& s, double v) {
-                    auto& u = s.compositorOptions.unchanged;
-                    if (!u || u->automatic) return false;
-                    u->tie = v;
-                    return true;
-                }}},
+         NumericKey{false, unitInterval, fittedUnchanged<&UnchangedTime::tie>,
+                    setFittedUnchanged<&UnchangedTime::tie>}},
         {"compositor.unchanged.gain", "number", "`1`",
          "with a number for `below`: places whose time shows are as opaque as a slab this many times as "
          "thick",
-         NumericKey{false, Interval{1.0, 8.0},
-                    [](const Scene& s) -> std::optional<double> {
-                        const auto& u = s.compositorOptions.unchanged;
-                        return u && !u->automatic ? std::optional<double>(u->gain) : std::nullopt;
-                    },
-                    [](Scene& s, double v) {
-                    auto& u = s.compositorOptions.unchanged;
-                    if (!u || u->automatic) return false;
-                    u->gain = v;
-                    return true;
-                }}},
+         NumericKey{false, Interval{1.0, 8.0}, fittedUnchanged<&UnchangedTime::gain>,
+                    setFittedUnchanged<&UnchangedTime::gain>}},
         {"compositor.unchanged.boundary", "number", "`0`",
          "with a number for `below`: a value gradient (density per display length); unchanged places keep "
          "their whole share where the gradient is as steep and a quarter of it where the value is flat; "
          "0: the whole share everywhere",
          NumericKey{false, Interval{0.0, std::numeric_limits<double>::infinity()},
-                    [](const Scene& s) -> std::optional<double> {
-                        const auto& u = s.compositorOptions.unchanged;
-                        return u && !u->automatic ? std::optional<double>(u->boundary) : std::nullopt;
-                    },
-                    [](Scene& s, double v) {
-                    auto& u = s.compositorOptions.unchanged;
-                    if (!u || u->automatic) return false;
-                    u->boundary = v;
-                    return true;
-                }}},
+                    fittedUnchanged<&UnchangedTime::boundary>,
+                    setFittedUnchanged<&UnchangedTime::boundary>}},
         {"compositor.unchanged.opacity", "number", "`1`",
          "the share of the STF's opacity that places without time colour keep: 0 transparent",
          NumericKey{false, unitInterval,
@@ -242,10 +221,10 @@ const std::vector<SceneKey>& keyTable() {
                         return u ? std::optional<double>(u->opacity) : std::nullopt;
                     },
                     [](Scene& s, double v) {
-                    auto& u = s.compositorOptions.unchanged;
-                    if (u) u->opacity = v;
-                    return u.has_value();
-                }}},
+                        auto& u = s.compositorOptions.unchanged;
+                        if (u) u->opacity = v;
+                        return u.has_value();
+                    }}},
         {"compositor.glsl", "string", "",
          "the scene's own compositor: a GLSL function body (docs/compositors.md), checked by the sandbox "
          "on reading; no `name` with it",
