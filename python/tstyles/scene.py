@@ -115,10 +115,11 @@ class Scene:
         return sorted({node["style"] for curve in curves for node in curve.get("color", []) if "style" in node})
 
 
-# The key path each attribute stands for; its docstring comes from the key table.
-_ATTRIBUTE_KEYS = {"compositor": "compositor", "final_mode": "final", "camera": "camera.orbit",
-                   "stf": "stf.opacity", "index_tstf": "tstf.index.opacity", "gradient_tstf": "tstf.gradient.range",
-                   "width": "image.width", "height": "image.height", "background": "image.background"}
+# The key path each attribute stands for; its docstring comes from the key table: that key's line,
+# or for a section (a path ending in ".") the lines of every key in it.
+_ATTRIBUTE_KEYS = {"compositor": "compositor", "final_mode": "final", "camera": "camera.", "stf": "stf.",
+                   "index_tstf": "tstf.index.", "gradient_tstf": "tstf.gradient.", "width": "image.width",
+                   "height": "image.height", "background": "image.background"}
 
 
 def _key_doc(key):
@@ -128,10 +129,11 @@ def _key_doc(key):
 
 
 def _document_attributes():
-    keys = {key["path"]: key for key in _native.scene_keys()}
+    keys = _native.scene_keys()
     for attribute, path in _ATTRIBUTE_KEYS.items():
+        lines = [key for key in keys if key["path"] == path or (path.endswith(".") and key["path"].startswith(path))]
         getter = getattr(Scene, attribute)
-        setattr(Scene, attribute, property(getter.fget, getter.fset, doc=_key_doc(keys[path])))
+        setattr(Scene, attribute, property(getter.fget, getter.fset, doc="\n".join(_key_doc(key) for key in lines)))
 
 
 _document_attributes()

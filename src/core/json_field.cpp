@@ -31,6 +31,10 @@ bool Interval::contains(double value) const {
     return aboveLow && belowHigh;
 }
 
+std::string Interval::refusal(double value) const {
+    return "must be " + describe() + ", got " + formatNumber(value);
+}
+
 std::string Interval::describe() const {
     if (std::isinf(high) && std::isinf(low)) return "finite";
     if (std::isinf(high)) return (lowIncluded ? ">= " : "> ") + formatNumber(low);
@@ -128,7 +132,7 @@ double JsonField::finiteNumber() const {
 
 double JsonField::numberIn(const Interval& allowed) const {
     const double number = finiteNumber();
-    if (!allowed.contains(number)) fail("must be " + allowed.describe() + ", got " + formatNumber(number));
+    if (!allowed.contains(number)) fail(allowed.refusal(number));
     return number;
 }
 

@@ -107,15 +107,6 @@ const char* walkName(TimeStepWalk walk) {
     return "ray list";
 }
 
-const char* raycastPartName(RaycastPart part) {
-    switch (part) {
-        case RaycastPart::Whole: return "whole";
-        case RaycastPart::RaySetup: return "ray setup";
-        case RaycastPart::March: return "march";
-    }
-    return "whole";
-}
-
 RaycastVariant partOf(const RaycastVariant& whole, RaycastPart part) {
     RaycastVariant variant = whole;
     variant.part = part;

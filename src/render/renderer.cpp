@@ -91,8 +91,7 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
     target_.bind();
     entryExitBuffers_.bind();
     RaycastVariant variant = variantFor(scene, options);
-    RaycastParameters parameters = parametersFor(scene, view, options, variant);
-    parameters.inverseViewProjection = inverseViewProjection;
+    const RaycastParameters parameters = parametersFor(scene, view, options, variant);
     // Rays through pixels outside the series' projected bounds meet no time-step and would give
     // the background: clear to it and raycast only the rectangle that can differ.
     const glm::vec4 premultipliedBackground(glm::vec3(parameters.background) * parameters.background.a,
@@ -158,6 +157,7 @@ RaycastVariant Renderer::variantFor(const Scene& scene, const FrameOptions& opti
 RaycastParameters Renderer::parametersFor(const Scene& scene, const View& view, const FrameOptions& options,
                                           const RaycastVariant& variant) const {
     RaycastParameters parameters;
+    parameters.inverseViewProjection = glm::mat4(glm::inverse(view.projectionMatrix * view.viewMatrix));
     parameters.viewport = options.size;
     parameters.timeStepCount = int(gpuSeries_->timeStepCount());
     parameters.atlasSize = gpuSeries_->layout().size;

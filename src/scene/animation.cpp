@@ -174,14 +174,12 @@ Scene sceneAtFrame(const Scene& scene, int frame) {
         const NumericKey& key = *entry.key->numeric;
         const std::string path(entry.key->path);
         if (!std::isfinite(entry.value) || !key.range.contains(entry.value))
-            failAtFrame(path + ": must be " + key.range.describe() + ", got " + formatNumber(entry.value));
+            failAtFrame(path + ": " + key.range.refusal(entry.value));
         if (!key.set(result, entry.value))
             throwInputError("", "animation.tracks[" + std::to_string(entry.track) + "].value",
                             "the scene has no number at \"" + path + "\"");
     }
-    if (result.exposure.last && *result.exposure.last < result.exposure.first)
-        failAtFrame("exposure.last: is " + std::to_string(*result.exposure.last) + ", before exposure.first (" +
-                    std::to_string(result.exposure.first) + ")");
+    if (const auto problem = result.exposure.orderProblem()) failAtFrame("exposure.last: " + *problem);
     return result;
 }
 

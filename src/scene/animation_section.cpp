@@ -70,7 +70,8 @@ AnimationTrack readTrack(const JsonField& section, const Scene& scene, const std
     if (bool(valuePath) == bool(focus))
         section.fail("needs exactly one of \"value\" (a key path of the scene) and \"focus\" (a curve)");
     if (valuePath) {
-        if (section.optionalMember("group")) section.failAt("group", "belongs to a \"focus\" track, not a \"value\" track");
+        if (section.optionalMember("group"))
+            section.failAt("group", "belongs to a \"focus\" track, not a \"value\" track");
         const ValueTrackTarget target{valuePath->string()};
         checkValueKeys(section, scene, origin, target, track.keys);
         track.target = target;

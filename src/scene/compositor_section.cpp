@@ -5,7 +5,6 @@
 // {"name": "temporal-mip", "unchanged": {"below": "auto", "opacity": 0.2}}.
 #include <cmath>
 #include <fstream>
-#include <limits>
 #include <sstream>
 
 #include "custom_compositor_check.h"
@@ -16,7 +15,6 @@
 namespace tstyles {
 namespace {
 
-using nlohmann::json;
 using nlohmann::ordered_json;
 
 constexpr std::pair<CompositorReads, const char*> kReadsNames[] = {

@@ -58,6 +58,11 @@ glm::ivec2 CompositorOptions::differenceSteps(std::size_t stepCount, const std::
     return {differenceFrom, to};
 }
 
+std::optional<std::string> Exposure::orderProblem() const {
+    if (!last || *last >= first) return std::nullopt;
+    return "is " + std::to_string(*last) + ", before exposure.first (" + std::to_string(first) + ")";
+}
+
 glm::ivec2 Exposure::stepsOf(std::size_t stepCount, const std::filesystem::path& sceneFile) const {
     const int lastStep = int(stepCount) - 1;
     const std::string available = " (the series has " + std::to_string(stepCount) + " time-steps, 0 to " +
@@ -66,9 +71,8 @@ glm::ivec2 Exposure::stepsOf(std::size_t stepCount, const std::filesystem::path&
         throwInputError(sceneFile, "exposure.first", "is " + std::to_string(first) + available);
     const int end = last.value_or(lastStep);
     if (end > lastStep) throwInputError(sceneFile, "exposure.last", "is " + std::to_string(end) + available);
-    if (end < first)
-        throwInputError(sceneFile, "exposure.last",
-                        "is " + std::to_string(end) + ", before exposure.first (" + std::to_string(first) + ")");
+    // Without a last, the last time-step is at or after first (checked above).
+    if (const auto problem = orderProblem()) throwInputError(sceneFile, "exposure.last", *problem);
     return {first, end};
 }
 

@@ -11,7 +11,6 @@
 namespace tstyles {
 namespace {
 
-
 // The orbit of a scene whose camera is one, else null.
 const OrbitCamera* orbitOf(const Scene& s) { return std::get_if<OrbitCamera>(&s.camera.pose); }
 OrbitCamera* orbitOf(Scene& s) { return std::get_if<OrbitCamera>(&s.camera.pose); }

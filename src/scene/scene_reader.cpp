@@ -19,8 +19,6 @@ namespace {
 
 using nlohmann::json;
 
-constexpr double infinity = std::numeric_limits<double>::infinity();
-
 // Editor groups are numbered from 1; a node without "group" belongs to none.
 NodeGroup readGroup(const JsonField& node) {
     const std::optional<JsonField> group = node.optionalMember("group");
@@ -72,7 +70,7 @@ void readCurve(const JsonField& object, const Interval& positions, TransferFunct
 void readGradientRange(const JsonField& range, GradientTstf& tstf) {
     if (!range.isArray()) range.fail("expected [low, high] or \"auto\", got " + std::string(range.value().type_name()));
     // Signed characteristics (a trend, a difference) take a range around 0.
-    const std::vector<double> ends = range.numbers(2, Interval{-infinity, infinity});
+    const std::vector<double> ends = range.numbers(2, anyFinite);
     if (!(ends[0] < ends[1]))
         range.fail("must be [low, high] with low < high, got [" + formatNumber(ends[0]) + ", " + formatNumber(ends[1]) +
                    "]");
@@ -121,9 +119,7 @@ void readExposure(const JsonField& section, Exposure& exposure) {
     if (const auto first = section.optionalMember("first")) exposure.first = int(readKeyNumber(*first));
     if (const auto last = section.optionalMember("last")) {
         exposure.last = int(readKeyNumber(*last));
-        if (*exposure.last < exposure.first)
-            last->fail("is " + std::to_string(*exposure.last) + ", before exposure.first (" +
-                       std::to_string(exposure.first) + ")");
+        if (const auto problem = exposure.orderProblem()) last->fail(*problem);
     }
 }
 
@@ -224,7 +220,8 @@ Aspect readAspect(const JsonField& field) {
 }
 
 void readDisplay(const JsonField& root, DisplaySettings& display) {
-    if (const auto orientation = root.optionalMember("orientation")) display.orientation = readOrientation(*orientation);
+    if (const auto orientation = root.optionalMember("orientation"))
+        display.orientation = readOrientation(*orientation);
     if (const auto aspect = root.optionalMember("aspect")) display.aspect = readAspect(*aspect);
     if (const auto exaggeration = root.optionalMember("vertical_exaggeration")) {
         if (exaggeration->isString() && exaggeration->string() == "auto")

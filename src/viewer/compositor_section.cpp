@@ -41,7 +41,8 @@ void drawRaycastSettings(Scene& scene, double defaultStep) {
             scene.raycast.step = std::max(step, 1e-9);
     }
     // Below 0.05 a ray stops before it shows anything.
-    drawKeySlider({"termination", "raycast.termination", "%.3f", false, Interval{0.05, 1.0}}, scene.raycast.termination);
+    drawKeySlider({"termination", "raycast.termination", "%.3f", false, Interval{0.05, 1.0}},
+                  scene.raycast.termination);
 }
 
 // The gradient TSTF's range, in density units: signed characteristics (a trend, a difference)
@@ -94,8 +95,8 @@ void drawUnchangedPlaces(Scene& scene, const Series& series) {
         ImGui::SetTooltip("No time colour where a place's values change by no more than the threshold, nor where two "
                           "time-steps tie (docs/compositors.md, \"Unchanged places\").");
     if (!unchanged) return;
-    if (drawKeySlider({unchanged->automatic ? "unchanged below (auto)" : "unchanged below", "compositor.unchanged.below",
-                       "%.4f", true, std::nullopt,
+    const char* belowLabel = unchanged->automatic ? "unchanged below (auto)" : "unchanged below";
+    if (drawKeySlider({belowLabel, "compositor.unchanged.below", "%.4f", true, std::nullopt,
                        "\"auto\": a tenth of the typical largest change, or above the noise."},
                       unchanged->below))
         unchanged->automatic = false;

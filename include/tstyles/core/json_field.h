@@ -29,6 +29,8 @@ struct Interval {
     bool highIncluded = true;
 
     bool contains(double value) const;
+    // Why `value` is not one of them: "must be in [0, 1], got 1.5" (every reader's wording).
+    std::string refusal(double value) const;
     // "in [0, 1]", "in (0, 180)", "> 0", ">= 0", "finite".
     std::string describe() const;
 };

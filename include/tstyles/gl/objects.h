@@ -75,9 +75,9 @@ private:
     GlHandle<VertexArrayTraits> handle_;
 };
 
-// The GPU time of the commands between begin() and end() (GL_TIME_ELAPSED: the time the GPU
-// spent on them, which llvmpipe measures in its rasterizer threads; timestamps would give it the
-// time the commands were queued). One such query runs at a time.
+// The GPU time of the commands between begin() and end() (GL_TIME_ELAPSED). One such query runs at
+// a time. A GPU's; llvmpipe stamps commands when it queues them, not when its threads rasterize
+// them, so its readings are not the pass' time (render/pass_clock.h).
 class TimerQuery {
 public:
     static TimerQuery create();

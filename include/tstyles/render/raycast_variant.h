@@ -29,7 +29,6 @@ enum class RaycastPart {
     March,     // the samples' lattice, the walk and the empty-space test; nothing fetched or composited
 };
 
-const char* raycastPartName(RaycastPart part);  // "whole", "ray setup", "march"
 
 struct RaycastVariant {
     TemporalCompositor compositor = TemporalCompositor::MaxIntensityProjection;

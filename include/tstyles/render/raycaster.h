@@ -51,7 +51,7 @@ struct RaycastParameters {
     glm::ivec3 packedAtlasSize{1};
     // Lit-sphere styles (RaycastVariant::styled): each track's node range, the view rotation and
     // the style-image footprint of a pixel.
-    std::array<glm::ivec2, 3> styleTracks{};
+    std::array<glm::ivec2, contract::STYLE_TRACK_COUNT> styleTracks{};
     glm::mat3 worldToView{1.0f};
     float styleFootprint = 0.0f;
     // Rays are clipped to this world box (FrameOptions::clipBox); the default holds everything.

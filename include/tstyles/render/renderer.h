@@ -121,7 +121,7 @@ private:
     void follow(const Series& series, const std::optional<WholeSeries>& whole);
     // The raycasting program a frame needs (builds the gradient atlas where it starts to pay).
     RaycastVariant variantFor(const Scene& scene, const FrameOptions& options);
-    // Its uniforms, but for the inverse view-projection, which the entry/exit pass shares.
+    // Its uniforms.
     RaycastParameters parametersFor(const Scene& scene, const View& view, const FrameOptions& options,
                                     const RaycastVariant& variant) const;
 

@@ -120,6 +120,9 @@ struct Exposure {
     int first = 0;
     std::optional<int> last;
     bool operator==(const Exposure&) const = default;
+    // What is wrong with "exposure.last" where it comes before first ("is 2, before exposure.first
+    // (5)"), for every place that checks it: the reader, the series, an animation frame.
+    std::optional<std::string> orderProblem() const;
     // [first, last] on a series of `stepCount` time-steps; an InputError naming "exposure.first" or
     // "exposure.last" of `sceneFile` where they do not fit it.
     glm::ivec2 stepsOf(std::size_t stepCount, const std::filesystem::path& sceneFile = {}) const;

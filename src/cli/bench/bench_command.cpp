@@ -47,7 +47,7 @@ struct BenchOptions {
     std::vector<int> scalingSteps;
     bool styled = false;
     bool distributed = false;  // sort-last over the MPI processes (bench_distributed.h)
-    bool stages = false;       // also time the passes and the raycasting pass' parts on the GPU
+    bool stages = false;       // also time the passes and the raycasting pass' parts (PassClock)
     GpuMemoryOption gpuMemory;
     GlOptions gl;
 };
@@ -59,7 +59,8 @@ struct BenchCase {
     glm::ivec2 size;
 };
 
-// Where a case's GPU time goes (--stages): medians of timer queries over the timed frames.
+// Where a case's device time goes (--stages): medians of the pass clocks (render/pass_clock.h) over
+// the timed frames.
 struct StageTimes {
     double entryExitMs = 0.0;
     double raycastMs = 0.0;   // the whole raycasting pass
@@ -217,7 +218,8 @@ void printStages(const std::vector<BenchResult>& results) {
     for (const auto& r : results) {
         const StageTimes& stages = *r.stages;
         std::cout << std::left << std::setw(28) << r.benchCase.dataset << std::setw(21)
-                  << toString(r.benchCase.compositor) << std::right << std::setw(11) << widthByHeightText(r.benchCase.size)
+                  << toString(r.benchCase.compositor) << std::right << std::setw(11)
+                  << widthByHeightText(r.benchCase.size)
                   << std::fixed << std::setprecision(1) << std::setw(12) << stages.entryExitMs << std::setw(11)
                   << stages.raycastMs << std::setw(11) << stages.raySetupMs << std::setw(9)
                   << stages.marchAtFrameSamplesMs(r.statistics.samples) << std::setw(11)
@@ -339,8 +341,9 @@ Command addBenchCommand(CLI::App& app) {
         ->check(CLI::Range(2, 1000));
     command->add_flag("--styled", options->styled, "Measure the Figure 4 scenes with lit-sphere styles");
     command->add_flag("--stages", options->stages,
-                      "Also time each frame's passes on the GPU with timer queries (entry/exit, raycasting) and the "
-                      "raycasting pass' parts (ray setup, march, sampling) and print where the time goes");
+                      "Also time each frame's passes (entry/exit, raycasting; timer queries on a GPU, glFinish and the "
+                      "wall clock on llvmpipe) and the raycasting pass' parts (ray setup, march, sampling) and print "
+                      "where the time goes");
     command->add_flag("--distributed", options->distributed,
                       "Under mpirun: render sort-last over the MPI processes and report each frame's rendering (the "
                       "slowest block) and compositing, for strong scaling (docs/scaling.md)");

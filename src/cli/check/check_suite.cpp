@@ -69,7 +69,8 @@ void readRendererThresholds(const JsonField& entries, SuiteThresholds& threshold
     for (std::size_t i = 0; i < entries.arraySize(); ++i) {
         const JsonField entry = entries.element(i);
         entry.allowOnlyKeys({"renderer", "thresholds"});
-        const JsonField renderer = entry.member("renderer", "missing; a text that GL_RENDERER contains, e.g. \"llvmpipe\"");
+        const JsonField renderer =
+            entry.member("renderer", "missing; a text that GL_RENDERER contains, e.g. \"llvmpipe\"");
         const JsonField values = entry.member("thresholds", "missing; the thresholds on that renderer");
         thresholds.renderers.push_back({textIn(renderer), thresholdsFromJson(values, thresholds.base)});
     }
@@ -81,8 +82,10 @@ CheckSuite readSuiteFile(const fs::path& file) {
     root.allowOnlyKeys({"thresholds", "renderer_thresholds", "cases"});
     CheckSuite suite{file.stem().string(), file, {}};
     SuiteThresholds thresholds;
-    if (const auto base = root.optionalMember("thresholds")) thresholds.base = thresholdsFromJson(*base, thresholds.base);
-    if (const auto renderers = root.optionalMember("renderer_thresholds")) readRendererThresholds(*renderers, thresholds);
+    if (const auto base = root.optionalMember("thresholds"))
+        thresholds.base = thresholdsFromJson(*base, thresholds.base);
+    if (const auto renderers = root.optionalMember("renderer_thresholds"))
+        readRendererThresholds(*renderers, thresholds);
     const JsonField cases = root.member("cases", "missing; expected a non-empty array of cases");
     if (cases.arraySize() == 0) cases.fail("expected a non-empty array of cases");
     for (std::size_t i = 0; i < cases.arraySize(); ++i) suite.cases.push_back(readCase(cases.element(i), thresholds));
