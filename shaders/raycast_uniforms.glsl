@@ -48,10 +48,7 @@ RAYCAST_UNIFORM(vec2, changeRange)
 // The densities the STF shows at all (time_step_visit.glsl): outside, a time-step is transparent.
 RAYCAST_UNIFORM(vec2, stfVisibleRange)
 
-// The compositors' options: first-arrival's and last-above's density threshold, difference's
-// time-steps [from, to].
-RAYCAST_UNIFORM(float, compositorThreshold)
-RAYCAST_UNIFORM(ivec2, compositorSteps)
+// A compositor's options are uniforms its module declares (the table of compositors names them).
 
 // Unchanged places (UNCHANGED_TIME, CompositorOptions::unchanged; temporal_sample.glsl): where the
 // densities at a sample change over the time-steps by no more than `unchangedBelow` (density

@@ -3,6 +3,8 @@
 // has no data, nothing shows. Colour and style come from the more opaque of the two.
 #include "temporal_sample.glsl"
 
+uniform ivec2 compositorSteps;  // the "steps" option: [from, to]
+
 const int COMPOSITOR_READS = READS_GRADIENT_TSTF;
 const bool COMPOSITOR_IGNORES_TRANSPARENT = false;
 const bool COMPOSITOR_READS_TRANSPARENT_COLOUR = false;

@@ -4,6 +4,8 @@
 // time-steps shows no time colour (there is no tie: the first or last to reach the threshold is one).
 #include "temporal_sample.glsl"
 
+uniform float compositorThreshold;  // the "threshold" option
+
 const int COMPOSITOR_READS = READS_INDEX_TSTF;
 const bool COMPOSITOR_IGNORES_TRANSPARENT = false;
 const bool COMPOSITOR_READS_TRANSPARENT_COLOUR = false;

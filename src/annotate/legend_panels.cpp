@@ -31,16 +31,11 @@ bool gradientTstfShown(const Scene& scene) {
 }
 bool stfShown(const Scene& scene) { return scene.finalMode != FinalMode::Tstf; }
 
-// What the gradient TSTF's legend measures, in the series' units.
+// What the gradient TSTF's legend measures, in the series' units (a trend per unit of time).
 std::string gradientLegendTitle(const Scene& scene, const std::string& valueUnit) {
-    switch (scene.compositor) {
-        case TemporalCompositor::MaxDensityChange: return withUnit("change", valueUnit);
-        case TemporalCompositor::StandardDeviation: return withUnit("standard deviation", valueUnit);
-        case TemporalCompositor::LinearTrend:
-            return withUnit("trend", valueUnit.empty() ? "per unit of time" : valueUnit + " per unit of time");
-        case TemporalCompositor::Difference: return withUnit("difference", valueUnit);
-        default: return withUnit("value", valueUnit);
-    }
+    const TemporalCompositorInfo& info = compositorInfo(scene.compositor);
+    if (info.range != AutomaticRange::SignedPerTime) return withUnit(info.valueName, valueUnit);
+    return withUnit(info.valueName, valueUnit.empty() ? "per unit of time" : valueUnit + " per unit of time");
 }
 
 // The focus: the most opaque time-steps of the index TSTF, where opacity varies at all.

@@ -87,8 +87,7 @@ SceneOnSeries atRequestedFrame(const RenderOptions& options, SceneOnSeries fitte
         fitted.scene.animation = animation;
         fitted.scene = sceneAtFrame(fitted.scene, *options.frame);
     }
-    fitted.scene.exposure.stepsOf(fitted.series.size(), options.inputs.front());
-    fitted.scene.compositorOptions.differenceSteps(fitted.series.size(), options.inputs.front());
+    checkTimeStepsFit(fitted.scene, fitted.series.size(), options.inputs.front());
     return fitted;
 }
 

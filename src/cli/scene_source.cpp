@@ -53,8 +53,8 @@ DisplaySettings displayFromOptions(const std::string& key, const std::string& op
 // One line per compositor: its name and what it shows.
 std::string compositorHelp() {
     std::string help = "Temporal compositor (docs/compositors.md):";
-    for (const TemporalCompositorInfo& info : temporalCompositors())
-        if (info.compositor != TemporalCompositor::Custom) help += std::string("\n  ") + info.name + ": " + info.summary;
+    for (const std::string& name : temporalCompositorNames())
+        help += "\n  " + name + ": " + compositorInfo(*temporalCompositorFromString(name)).summary;
     return help;
 }
 

@@ -2,8 +2,8 @@
 #include "tstyles/core/json_field.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
+#include <limits>
 
 #include "tstyles/core/errors.h"
 #include "tstyles/core/user_paths.h"
@@ -18,29 +18,6 @@ std::string joined(const std::vector<std::string>& names) {
 }
 
 }  // namespace
-
-std::string formatNumber(double value) {
-    char buffer[64];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-    return std::string(buffer, result.ptr);
-}
-
-bool Interval::contains(double value) const {
-    const bool aboveLow = lowIncluded ? value >= low : value > low;
-    const bool belowHigh = highIncluded ? value <= high : value < high;
-    return aboveLow && belowHigh;
-}
-
-std::string Interval::refusal(double value) const {
-    return "must be " + describe() + ", got " + formatNumber(value);
-}
-
-std::string Interval::describe() const {
-    if (std::isinf(high) && std::isinf(low)) return "finite";
-    if (std::isinf(high)) return (lowIncluded ? ">= " : "> ") + formatNumber(low);
-    return std::string("in ") + (lowIncluded ? "[" : "(") + formatNumber(low) + ", " + formatNumber(high) +
-           (highIncluded ? "]" : ")");
-}
 
 JsonField::JsonField(const std::filesystem::path& file, const nlohmann::json& value, std::string path)
     : file_(&file), value_(&value), path_(std::move(path)) {}
@@ -68,6 +45,10 @@ std::string JsonField::childPath(std::string_view key) const {
 }
 
 void JsonField::allowOnlyKeys(std::initializer_list<std::string_view> keys) const {
+    allowOnlyKeys(std::span<const std::string_view>(keys.begin(), keys.size()));
+}
+
+void JsonField::allowOnlyKeys(std::span<const std::string_view> keys) const {
     expectType(value_->is_object(), "an object");
     for (const auto& item : value_->items()) {
         // Not a structured binding: clang 14 (the fuzz build) cannot capture one in a lambda.

@@ -79,10 +79,10 @@ constexpr GridKind kGridKinds[] = {
 // The custom compositor twice, once for each transfer function that may read it.
 std::vector<RaycastVariant> compositorChoices() {
     std::vector<RaycastVariant> choices;
-    for (const TemporalCompositorInfo& info : temporalCompositors()) {
+    for (std::size_t line = 0; line < temporalCompositors().size(); ++line) {
         RaycastVariant variant;
-        variant.compositor = info.compositor;
-        if (info.compositor != TemporalCompositor::Custom) {
+        variant.compositor = TemporalCompositor(line);
+        if (variant.compositor != kCustomCompositor) {
             choices.push_back(variant);
             continue;
         }
@@ -111,7 +111,7 @@ RaycastVariant partOf(const RaycastVariant& whole, RaycastPart part) {
     RaycastVariant variant = whole;
     variant.part = part;
     if (part == RaycastPart::Whole) return variant;
-    variant.compositor = TemporalCompositor::MaxIntensityProjection;
+    variant.compositor = compositorNamed("temporal-mip");
     variant.customCode.clear();
     variant.customCodeName.clear();
     variant.customReads = CompositorReads::IndexTstf;
@@ -150,7 +150,7 @@ ShaderDefines RaycastVariant::defines() const {
 
 ShaderModules RaycastVariant::modules() const {
     ShaderModules modules{{"time_step_walk.glsl", walkModule(walk), std::nullopt}};
-    if (compositor == TemporalCompositor::Custom) {
+    if (compositor == kCustomCompositor) {
         modules.push_back({"compositor.glsl", "tc_custom.glsl", std::nullopt});
         modules.push_back({"custom_compositor_body.glsl", customCodeName, customCode});
     } else {

@@ -43,7 +43,7 @@ const Program& Raycaster::programFor(const RaycastVariant& variant) {
             .first->second;
     } catch (const std::runtime_error& error) {
         // With the scene's own code the compiler's complaint is about the user's input, and names its lines.
-        if (variant.compositor != TemporalCompositor::Custom) throw;
+        if (variant.compositor != kCustomCompositor) throw;
         throw InputError(variant.customCodeName + ": " + firstCompileErrorIn(error.what(), variant.customCodeName));
     }
 }
@@ -67,10 +67,9 @@ void Raycaster::draw(const RaycastVariant& variant, const RaycastParameters& par
     program.set(u::seriesUpper, parameters.seriesUpper);
     program.set(u::finalMode, finalModeCode(parameters.finalMode));
     program.set(u::changeRange, parameters.changeRange);
-    const TemporalCompositorInfo& compositor = compositorInfo(variant.compositor);
-    if (compositor.takesThreshold) program.set(u::compositorThreshold, parameters.compositorThreshold);
     program.set(u::stfVisibleRange, parameters.stfVisibleRange);
-    if (compositor.takesSteps) program.set(u::compositorSteps, parameters.compositorSteps);
+    for (const CompositorOptionUniform& option : parameters.compositorOptions)
+        std::visit([&](const auto& value) { program.set(option.name, value); }, option.value);
     if (variant.unchangedTime) {
         program.set(u::unchangedBelow, parameters.unchangedBelow);
         program.set(u::unchangedTie, parameters.unchangedTie);

@@ -27,6 +27,27 @@ double styleFootprint(const View& view, int imageHeight, double finestSpacing) {
     return pixelFootprint / (2.0 * featureRadius);
 }
 
+// The uniforms of the options that `compositor` (the variant's) takes, with the scene's values: a
+// time-step pair checked against the series, a choice as its place.
+std::vector<CompositorOptionUniform> compositorOptionUniforms(TemporalCompositor compositor, const Scene& scene,
+                                                              std::size_t timeStepCount) {
+    std::vector<CompositorOptionUniform> uniforms;
+    for (const CompositorOption& option : compositorInfo(compositor).options) {
+        switch (option.kind) {
+            case CompositorOptionKind::Number:
+                uniforms.push_back({option.uniform, float(scene.compositorOptions.number(option))});
+                break;
+            case CompositorOptionKind::TimeStepPair:
+                uniforms.push_back({option.uniform, scene.compositorOptions.timeStepsOn(option, timeStepCount)});
+                break;
+            case CompositorOptionKind::Choice:
+                uniforms.push_back({option.uniform, int(scene.compositorOptions.choice(option))});
+                break;
+        }
+    }
+    return uniforms;
+}
+
 }  // namespace
 
 Renderer::Renderer(ShaderLibrary shaders)
@@ -116,7 +137,7 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
 RaycastVariant Renderer::variantFor(const Scene& scene, const FrameOptions& options) {
     RaycastVariant variant;
     variant.compositor = scene.compositor;
-    if (const auto& custom = scene.compositorOptions.custom; scene.compositor == TemporalCompositor::Custom && custom) {
+    if (const auto& custom = scene.compositorOptions.custom; scene.compositor == kCustomCompositor && custom) {
         variant.customCode = custom->glsl;
         variant.customCodeName = custom->ownFile ? custom->origin.string() : custom->origin.string() + ": compositor.glsl";
         variant.customReads = custom->reads;
@@ -167,7 +188,7 @@ RaycastParameters Renderer::parametersFor(const Scene& scene, const View& view, 
     parameters.background = glm::vec4(scene.background);
     parameters.finalMode = scene.finalMode;
     parameters.changeRange = glm::vec2(float(scene.gradientTstf.rangeLow), float(scene.gradientTstf.rangeHigh));
-    parameters.compositorThreshold = float(scene.compositorOptions.threshold);
+    parameters.compositorOptions = compositorOptionUniforms(variant.compositor, scene, gpuSeries_->timeStepCount());
     parameters.stfVisibleRange = transferTables_.stfVisibleRange();
     if (variant.unchangedTime) {
         const auto& unchanged = *scene.compositorOptions.unchanged;
@@ -183,8 +204,6 @@ RaycastParameters Renderer::parametersFor(const Scene& scene, const View& view, 
         parameters.unchangedBoundary = float(unchanged.boundary);
         parameters.unchangedOpacity = float(unchanged.opacity);
     }
-    if (compositorInfo(scene.compositor).takesSteps)
-        parameters.compositorSteps = scene.compositorOptions.differenceSteps(gpuSeries_->timeStepCount());
     parameters.exposedSteps = options.soloTimeStep ? glm::ivec2(*options.soloTimeStep)
                                                    : scene.exposure.stepsOf(gpuSeries_->timeStepCount());
     if (variant.walk == TimeStepWalk::PackedGroups) {

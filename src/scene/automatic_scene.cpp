@@ -119,7 +119,7 @@ AutomaticScene automaticScene(const Series& series, const std::filesystem::path&
     result.explanation.push_back(windowText(series, window));
     result.explanation.push_back(std::string("shading: the lit-sphere style ") + kNeutralStyle + " on the STF");
 
-    scene.compositor = TemporalCompositor::MaxIntensityProjection;
+    scene.compositor = compositorNamed("temporal-mip");
     scene.finalMode = FinalMode::Modulate;
     scene.indexTstf.curve.opacity = {OpacityNode{0.0, 1.0}};
     scene.gradientTstf.automaticRange = true;
@@ -161,7 +161,7 @@ UnchangedFit automaticUnchangedFit(const Scene& scene, const Series& series) {
 }
 
 std::pair<double, double> gradientRangeForChange(const Scene& scene, const Series& series, double change) {
-    const AutomaticRange range = scene.compositor == TemporalCompositor::Custom
+    const AutomaticRange range = scene.compositor == kCustomCompositor
                                      ? AutomaticRange::Change
                                      : compositorInfo(scene.compositor).range;
     switch (range) {

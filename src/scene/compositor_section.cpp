@@ -98,6 +98,38 @@ CustomCompositor readCustom(const JsonField& section, const std::filesystem::pat
     return custom;
 }
 
+// A value of `option` from the compositor's object.
+CompositorOptionValue readOption(const CompositorOption& option, const JsonField& field) {
+    switch (option.kind) {
+        case CompositorOptionKind::Number: return field.numberIn(option.range);
+        case CompositorOptionKind::TimeStepPair: {
+            const std::vector<double> pair = field.numbers(2, Interval{0.0, 1.0e6});
+            for (std::size_t i = 0; i < 2; ++i)
+                if (pair[i] != std::floor(pair[i])) field.element(i).fail("must be a whole time-step index");
+            return TimeStepPair{int(pair[0]), int(pair[1])};
+        }
+        case CompositorOptionKind::Choice:
+            return option.choices[field.name<std::size_t>([&](const std::string& name) { return option.choiceNamed(name); },
+                                                         option.choiceNames())];
+    }
+    field.fail("an option of an unknown kind");
+}
+
+// What the scene file holds for `option`: a number or a choice always (a default too, so that the
+// file says it); time-steps only where given, since their default is the series' own.
+std::optional<ordered_json> optionJson(const CompositorOption& option, const CompositorOptions& options) {
+    switch (option.kind) {
+        case CompositorOptionKind::Number: return ordered_json(options.number(option));
+        case CompositorOptionKind::Choice: return ordered_json(option.choices[options.choice(option)]);
+        case CompositorOptionKind::TimeStepPair: {
+            const TimeStepPair steps = options.timeSteps(option);
+            if (!steps.to) return std::nullopt;
+            return ordered_json::array({steps.from, *steps.to});
+        }
+    }
+    return std::nullopt;
+}
+
 }  // namespace
 
 void readCompositor(const JsonField& section, const std::filesystem::path& origin, Scene& scene) {
@@ -107,11 +139,14 @@ void readCompositor(const JsonField& section, const std::filesystem::path& origi
     }
     if (!section.isObject())
         section.fail("expected a name or an object, got " + std::string(section.value().type_name()));
-    section.allowOnlyKeys({"name", "threshold", "steps", "glsl", "file", "reads", "unchanged"});
+    // Every compositor's options, so that one of another compositor is refused as not taken.
+    std::vector<std::string_view> keys = {"name", "glsl", "file", "reads", "unchanged"};
+    for (const CompositorOption* option : compositorOptionsOfAll()) keys.emplace_back(option->key);
+    section.allowOnlyKeys(keys);
     CompositorOptions& options = scene.compositorOptions;
     if (section.optionalMember("glsl") || section.optionalMember("file")) {
         if (section.optionalMember("name")) section.failAt("name", "a compositor with its own code has no name");
-        scene.compositor = TemporalCompositor::Custom;
+        scene.compositor = kCustomCompositor;
         options.custom = readCustom(section, origin);
     } else {
         scene.compositor =
@@ -120,23 +155,17 @@ void readCompositor(const JsonField& section, const std::filesystem::path& origi
             section.failAt("reads", "only a compositor with its own code says what reads it");
     }
     const TemporalCompositorInfo& info = compositorInfo(scene.compositor);
-    if (const auto threshold = section.optionalMember("threshold")) {
-        if (!info.takesThreshold) threshold->fail(std::string(info.name) + " takes no threshold");
-        options.threshold = readKeyNumber(*threshold);
-    }
-    if (const auto steps = section.optionalMember("steps")) {
-        if (!info.takesSteps) steps->fail(std::string(info.name) + " takes no steps");
-        const std::vector<double> pair = steps->numbers(2, Interval{0.0, 1.0e6});
-        for (std::size_t i = 0; i < 2; ++i)
-            if (pair[i] != std::floor(pair[i])) steps->element(i).fail("must be a whole time-step index");
-        options.differenceFrom = int(pair[0]);
-        options.differenceTo = int(pair[1]);
+    for (const CompositorOption* known : compositorOptionsOfAll()) {
+        const std::optional<JsonField> given = section.optionalMember(known->key);
+        if (!given) continue;
+        const CompositorOption* option = info.options.find(known->key);
+        if (!option) given->fail(std::string(info.name) + " takes no " + known->key);
+        options.values[option->key] = readOption(*option, *given);
     }
     if (const auto unchanged = section.optionalMember("unchanged")) {
         if (!info.takesUnchanged)
-            unchanged->fail(std::string(info.name) +
-                            " does not pick a time-step, so no place is left without time colour (temporal-mip, "
-                            "temporal-min, time-of-max, first-arrival and last-above do)");
+            unchanged->fail(std::string(info.name) + " does not pick a time-step, so no place is left without time "
+                            "colour (" + listedNames(compositorsTakingUnchanged()) + " do)");
         options.unchanged = readUnchanged(*unchanged);
     }
 }
@@ -144,7 +173,7 @@ void readCompositor(const JsonField& section, const std::filesystem::path& origi
 ordered_json compositorJson(const Scene& scene, const std::filesystem::path& sceneFolder) {
     const TemporalCompositorInfo& info = compositorInfo(scene.compositor);
     const CompositorOptions& options = scene.compositorOptions;
-    if (scene.compositor == TemporalCompositor::Custom && options.custom) {
+    if (scene.compositor == kCustomCompositor && options.custom) {
         ordered_json custom;
         // Code read from a file of its own stays in that file; inline code stays inline.
         if (!options.custom->ownFile)
@@ -156,13 +185,11 @@ ordered_json compositorJson(const Scene& scene, const std::filesystem::path& sce
         return custom;
     }
     const bool unchanged = info.takesUnchanged && options.unchanged;
-    if (!info.takesThreshold && !info.takesSteps && !unchanged) return info.name;
+    if (info.options.empty() && !unchanged) return info.name;
     ordered_json object;
     object["name"] = info.name;
-    if (info.takesThreshold) object["threshold"] = options.threshold;
-    // No `to`: from the first time-step to the last, the default.
-    if (info.takesSteps && options.differenceTo)
-        object["steps"] = ordered_json::array({options.differenceFrom, *options.differenceTo});
+    for (const CompositorOption& option : info.options)
+        if (const std::optional<ordered_json> value = optionJson(option, options)) object[option.key] = *value;
     if (unchanged) {
         ordered_json section;
         section["below"] = options.unchanged->automatic ? ordered_json("auto") : ordered_json(options.unchanged->below);

@@ -1,4 +1,4 @@
-// The names that scene files, the CLI and the viewer use for temporal compositors and final modes.
+// The names of the final modes, and what the scene's compositor options, exposure and other parts hold.
 #include "tstyles/scene/scene.h"
 
 #include <array>
@@ -20,42 +20,62 @@ constexpr std::array finalModeNameTable{
 
 }  // namespace
 
-std::string toString(TemporalCompositor tc) { return compositorInfo(tc).name; }
-
-std::optional<TemporalCompositor> temporalCompositorFromString(const std::string& name) {
-    for (const auto& info : temporalCompositors())
-        if (name == info.name) return info.compositor;
-    return std::nullopt;
-}
-
 std::string toString(FinalMode mode) { return nameOf(finalModeNameTable, mode); }
 
 std::optional<FinalMode> finalModeFromString(const std::string& name) {
     return valueOf(finalModeNameTable, name);
 }
 
-std::vector<std::string> temporalCompositorNames() {
-    std::vector<std::string> names;
-    for (const auto& info : temporalCompositors())
-        if (info.compositor != TemporalCompositor::Custom) names.emplace_back(info.name);
-    return names;
-}
-
 std::vector<std::string> finalModeNames() { return allNames(finalModeNameTable); }
 
-}  // namespace tstyles
 
-namespace tstyles {
+bool CompositorOptions::operator==(const CompositorOptions& other) const {
+    if (custom != other.custom || unchanged != other.unchanged) return false;
+    for (const CompositorOption* option : compositorOptionsOfAll()) {
+        switch (option->kind) {
+            case CompositorOptionKind::Number:
+                if (number(*option) != other.number(*option)) return false;
+                break;
+            case CompositorOptionKind::TimeStepPair:
+                if (timeSteps(*option) != other.timeSteps(*option)) return false;
+                break;
+            case CompositorOptionKind::Choice:
+                if (choice(*option) != other.choice(*option)) return false;
+                break;
+        }
+    }
+    return true;
+}
 
-glm::ivec2 CompositorOptions::differenceSteps(std::size_t stepCount, const std::filesystem::path& sceneFile) const {
+double CompositorOptions::number(const CompositorOption& option) const {
+    const auto found = values.find(std::string_view(option.key));
+    const double* given = found == values.end() ? nullptr : std::get_if<double>(&found->second);
+    return given ? *given : option.defaultNumber;
+}
+
+std::size_t CompositorOptions::choice(const CompositorOption& option) const {
+    const auto found = values.find(std::string_view(option.key));
+    const std::string* given = found == values.end() ? nullptr : std::get_if<std::string>(&found->second);
+    return given ? option.choiceNamed(*given).value_or(0) : 0;
+}
+
+TimeStepPair CompositorOptions::timeSteps(const CompositorOption& option) const {
+    const auto found = values.find(std::string_view(option.key));
+    const TimeStepPair* given = found == values.end() ? nullptr : std::get_if<TimeStepPair>(&found->second);
+    return given ? *given : TimeStepPair{};
+}
+
+glm::ivec2 CompositorOptions::timeStepsOn(const CompositorOption& option, std::size_t stepCount,
+                                          const std::filesystem::path& sceneFile) const {
+    const TimeStepPair steps = timeSteps(option);
     const int lastStep = int(stepCount) - 1;
-    const int to = differenceTo.value_or(lastStep);
-    for (const auto& [index, step] : {std::pair{0, differenceFrom}, std::pair{1, to}})
+    const int to = steps.to.value_or(lastStep);
+    for (const auto& [index, step] : {std::pair{0, steps.from}, std::pair{1, to}})
         if (step < 0 || step > lastStep)
-            throwInputError(sceneFile, "compositor.steps[" + std::to_string(index) + "]",
+            throwInputError(sceneFile, "compositor." + std::string(option.key) + "[" + std::to_string(index) + "]",
                             "is " + std::to_string(step) + " (the series has " + std::to_string(stepCount) +
                                 " time-steps, 0 to " + std::to_string(lastStep) + ")");
-    return {differenceFrom, to};
+    return {steps.from, to};
 }
 
 std::optional<std::string> Exposure::orderProblem() const {
@@ -74,6 +94,13 @@ glm::ivec2 Exposure::stepsOf(std::size_t stepCount, const std::filesystem::path&
     // Without a last, the last time-step is at or after first (checked above).
     if (const auto problem = orderProblem()) throwInputError(sceneFile, "exposure.last", *problem);
     return {first, end};
+}
+
+void checkTimeStepsFit(const Scene& scene, std::size_t stepCount, const std::filesystem::path& sceneFile) {
+    scene.exposure.stepsOf(stepCount, sceneFile);
+    for (const CompositorOption& option : compositorInfo(scene.compositor).options)
+        if (option.kind == CompositorOptionKind::TimeStepPair)
+            scene.compositorOptions.timeStepsOn(option, stepCount, sceneFile);
 }
 
 }  // namespace tstyles

@@ -1,61 +1,86 @@
-// The table of temporal compositors (paper 5.3 and the ones users of temporal data ask for).
+// Lookups in the table of temporal compositors (temporal_compositors.h).
 #include "tstyles/scene/temporal_compositors.h"
 
-#include <array>
-#include <stdexcept>
+#include <algorithm>
+
+#include "tstyles/scene/scene.h"
 
 namespace tstyles {
-namespace {
 
-// The enumerators are brought in inside the initialiser only: CompositorReads shares names with
-// the TSTF types, and the file is compiled in one unity file with others.
-constexpr std::array kCompositors = [] {
-    using enum TemporalCompositor;
-    using enum CompositorReads;
-    using enum AutomaticRange;
-    using Info = TemporalCompositorInfo;
-    return std::array{
-        Info{MaxIntensityProjection, "temporal-mip", "tc_max_intensity_projection.glsl", IndexTstf, Change, false,
-             false, true, "the time-step with the highest STF opacity, by the index TSTF"},
-        Info{Average, "temporal-average", "tc_average.glsl", Composited, Change, false, false,
-             false, "colours and opacities averaged over the visible time-steps"},
-        Info{MaxDensityChange, "temporal-max-change", "tc_max_density_change.glsl", GradientTstf, Change, false,
-             false, false, "largest minus smallest density, by the gradient TSTF"},
-        Info{Minimum, "temporal-min", "tc_minimum.glsl", IndexTstf, Change, false, false,
-             true, "the time-step with the lowest density, by the index TSTF"},
-        Info{StandardDeviation, "temporal-std-dev", "tc_standard_deviation.glsl", GradientTstf, HalfChange, false,
-             false, false, "standard deviation of the densities, by the gradient TSTF"},
-        Info{TimeOfMaximum, "time-of-max", "tc_time_of_maximum.glsl", IndexTstf, Change, false, false,
-             true, "the time-step of the highest density (time to peak), by the index TSTF"},
-        Info{FirstArrival, "first-arrival", "tc_first_arrival.glsl", IndexTstf, Change, true, false,
-             true, "the first time-step at or above the threshold, by the index TSTF"},
-        Info{LastAbove, "last-above", "tc_last_above.glsl", IndexTstf, Change, true, false,
-             true, "the last time-step at or above the threshold, by the index TSTF"},
-        Info{LinearTrend, "linear-trend", "tc_linear_trend.glsl", GradientTstf, SignedPerTime, false, false,
-             false, "least-squares slope of density over time, by the gradient TSTF"},
-        Info{Chronovolume, "chronovolume", "tc_chronovolume.glsl", Composited, Change, false, false,
-             false, "the time-steps composited front to back in time order"},
-        Info{Difference, "difference", "tc_difference.glsl", GradientTstf, SignedChange, false, true,
-             false, "density of one time-step minus another's, by the gradient TSTF"},
-        Info{Custom, "custom", "", IndexTstf, Change, false, false,
-             false, "the scene's own GLSL over the time-steps at the sample"},
-    };
-}();
+std::optional<std::size_t> CompositorOption::choiceNamed(std::string_view name) const {
+    for (std::size_t i = 0; i < choiceCount(); ++i)
+        if (name == choices[i]) return i;
+    return std::nullopt;
+}
 
-}  // namespace
+std::vector<std::string> CompositorOption::choiceNames() const {
+    return {choices.begin(), choices.begin() + std::ptrdiff_t(choiceCount())};
+}
 
-std::span<const TemporalCompositorInfo> temporalCompositors() { return kCompositors; }
+const CompositorOption* CompositorOptionList::find(std::string_view key) const {
+    const auto found = std::find_if(begin(), end(), [&](const CompositorOption& option) { return key == option.key; });
+    return found == end() ? nullptr : found;
+}
+
+std::span<const TemporalCompositorInfo> temporalCompositors() { return kTemporalCompositors; }
 
 const TemporalCompositorInfo& compositorInfo(TemporalCompositor compositor) {
-    for (const auto& info : kCompositors)
-        if (info.compositor == compositor) return info;
-    throw std::logic_error("a temporal compositor without a line in the table");
+    return kTemporalCompositors.at(compositor.line());
+}
+
+std::string toString(TemporalCompositor compositor) { return compositorInfo(compositor).name; }
+
+std::optional<TemporalCompositor> temporalCompositorFromString(const std::string& name) {
+    for (std::size_t line = 0; line < kTemporalCompositors.size(); ++line)
+        if (name == kTemporalCompositors[line].name && TemporalCompositor(line) != kCustomCompositor)
+            return TemporalCompositor(line);
+    return std::nullopt;
+}
+
+std::vector<std::string> temporalCompositorNames() {
+    std::vector<std::string> names;
+    for (std::size_t line = 0; line < kTemporalCompositors.size(); ++line)
+        if (TemporalCompositor(line) != kCustomCompositor) names.emplace_back(kTemporalCompositors[line].name);
+    return names;
 }
 
 CompositorReads compositorReads(const Scene& scene) {
-    if (scene.compositor == TemporalCompositor::Custom && scene.compositorOptions.custom)
+    if (scene.compositor == kCustomCompositor && scene.compositorOptions.custom)
         return scene.compositorOptions.custom->reads;
     return compositorInfo(scene.compositor).reads;
+}
+
+std::vector<const CompositorOption*> compositorOptionsOfAll() {
+    std::vector<const CompositorOption*> options;
+    for (const TemporalCompositorInfo& info : kTemporalCompositors)
+        for (const CompositorOption& option : info.options)
+            if (std::none_of(options.begin(), options.end(),
+                             [&](const CompositorOption* known) { return std::string_view(known->key) == option.key; }))
+                options.push_back(&option);
+    return options;
+}
+
+std::vector<std::string> compositorsTaking(std::string_view key) {
+    std::vector<std::string> names;
+    for (const TemporalCompositorInfo& info : kTemporalCompositors)
+        if (info.options.find(key)) names.emplace_back(info.name);
+    return names;
+}
+
+std::vector<std::string> compositorsTakingUnchanged() {
+    std::vector<std::string> names;
+    for (const TemporalCompositorInfo& info : kTemporalCompositors)
+        if (info.takesUnchanged) names.emplace_back(info.name);
+    return names;
+}
+
+std::string listedNames(const std::vector<std::string>& names, std::string_view quote) {
+    std::string text;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (i > 0) text += i + 1 == names.size() ? " and " : ", ";
+        text += std::string(quote) + names[i] + std::string(quote);
+    }
+    return text;
 }
 
 }  // namespace tstyles

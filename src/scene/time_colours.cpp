@@ -20,7 +20,7 @@ void applyTimeColours(Scene& scene, std::size_t stepCount) {
 }
 
 std::string applyAutomaticGradientColours(Scene& scene) {
-    const bool signedValues = scene.compositor != TemporalCompositor::Custom &&
+    const bool signedValues = scene.compositor != kCustomCompositor &&
                               (compositorInfo(scene.compositor).range == AutomaticRange::SignedChange ||
                                compositorInfo(scene.compositor).range == AutomaticRange::SignedPerTime);
     if (signedValues) {

@@ -67,10 +67,9 @@ void drawGradientRange(GradientTstf& tstf, CompositorReads reads) {
 
 void drawCompositorChoice(Scene& scene, const Series& series) {
     const std::vector<std::string> names = compositorChoices(scene);
-    const std::string now =
-        scene.compositor == TemporalCompositor::Custom ? kCustomCompositorChoice : toString(scene.compositor);
+    const std::string now = scene.compositor == kCustomCompositor ? kCustomCompositorChoice : toString(scene.compositor);
     if (auto chosen = nameCombo("compositor", names, now)) {
-        scene.compositor = names[*chosen] == kCustomCompositorChoice ? TemporalCompositor::Custom
+        scene.compositor = names[*chosen] == kCustomCompositorChoice ? kCustomCompositor
                                                                      : *temporalCompositorFromString(names[*chosen]);
         // "auto" fits the compositor (a trend's range is signed and per unit of time).
         if (scene.gradientTstf.automaticRange && series.size() > 0)
@@ -119,28 +118,44 @@ void drawUnchangedPlaces(Scene& scene, const Series& series) {
                           "stay; 0: everywhere. \"auto\": the 99th percentile of the visible places' gradient.");
 }
 
-// The options of the chosen compositor: a threshold, the two time-steps of a difference, or what
-// the scene's own code is read by.
+// One option of the chosen compositor, by its kind: a slider over a number's range (its scene key's
+// line), two time-step sliders, or a list of choices.
+void drawCompositorOption(const CompositorOption& option, CompositorOptions& options, const Series& series) {
+    const std::string keyPath = std::string("compositor.") + option.key;
+    switch (option.kind) {
+        case CompositorOptionKind::Number: {
+            double value = options.number(option);
+            if (drawKeySlider({option.key, keyPath, "%.3f"}, value)) options.values[option.key] = value;
+            return;
+        }
+        case CompositorOptionKind::TimeStepPair: {
+            if (series.size() == 0) return;
+            const int last = int(series.size()) - 1;
+            const TimeStepPair steps = options.timeSteps(option);
+            int chosen[2] = {std::clamp(steps.from, 0, last), std::clamp(steps.to.value_or(last), 0, last)};
+            const std::string label = std::string(option.key) + " (from, to)";
+            if (ImGui::SliderInt2(label.c_str(), chosen, 0, last))
+                options.values[option.key] = TimeStepPair{std::clamp(chosen[0], 0, last), std::clamp(chosen[1], 0, last)};
+            break;
+        }
+        case CompositorOptionKind::Choice: {
+            const std::vector<std::string> names = option.choiceNames();
+            if (const auto chosen = nameCombo(option.key, names, names[options.choice(option)]))
+                options.values[option.key] = names[*chosen];
+            break;
+        }
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", option.help);
+}
+
+// The options of the chosen compositor (its table line's), its unchanged places, or what the
+// scene's own code is read by.
 void drawCompositorOptions(Scene& scene, const Series& series) {
     const TemporalCompositorInfo& info = compositorInfo(scene.compositor);
     CompositorOptions& options = scene.compositorOptions;
-    if (info.takesThreshold) {
-        drawKeySlider({"threshold", "compositor.threshold", "%.3f", false, std::nullopt,
-                       "The density a time-step must reach at the sample."},
-                      options.threshold);
-    }
-    if (info.takesSteps && series.size() > 0) {
-        const int last = int(series.size()) - 1;
-        int chosen[2] = {std::clamp(options.differenceFrom, 0, last),
-                         std::clamp(options.differenceTo.value_or(last), 0, last)};
-        if (ImGui::SliderInt2("steps (from, to)", chosen, 0, last)) {
-            options.differenceFrom = std::clamp(chosen[0], 0, last);
-            options.differenceTo = std::clamp(chosen[1], 0, last);
-        }
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("The difference shows density(to) - density(from).");
-    }
+    for (const CompositorOption& option : info.options) drawCompositorOption(option, options, series);
     if (info.takesUnchanged) drawUnchangedPlaces(scene, series);
-    if (scene.compositor == TemporalCompositor::Custom && options.custom) {
+    if (scene.compositor == kCustomCompositor && options.custom) {
         const bool index = options.custom->reads == CompositorReads::IndexTstf;
         ImGui::TextDisabled("the scene's own GLSL, read by the %s TSTF", index ? "index" : "gradient");
         if (ImGui::IsItemHovered())

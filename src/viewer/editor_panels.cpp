@@ -24,8 +24,8 @@ void placeWindow(const ScreenRect& rect) {
 // composited ones too.
 std::string readersOf(bool gradientTstf) {
     std::string names;
-    for (const TemporalCompositorInfo& info : temporalCompositors()) {
-        if (info.compositor == TemporalCompositor::Custom) continue;
+    for (const std::string& name : temporalCompositorNames()) {
+        const TemporalCompositorInfo& info = compositorInfo(*temporalCompositorFromString(name));
         const bool gradient = info.reads == CompositorReads::GradientTstf;
         if (gradient != gradientTstf) continue;
         names += (names.empty() ? "" : ", ") + std::string(info.name);

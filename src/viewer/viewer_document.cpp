@@ -78,8 +78,7 @@ ViewerDocument openDocument(const std::vector<std::filesystem::path>& paths, con
     if (document.series->size() == 0) throwInputError(document.series->manifestPath, "", "the series has no time-steps");
     if (document.sceneFile) {
         // As `render` does: settings that name time-steps the series lacks fail on opening, named.
-        document.scene.exposure.stepsOf(document.series->size(), *document.sceneFile);
-        document.scene.compositorOptions.differenceSteps(document.series->size(), *document.sceneFile);
+        checkTimeStepsFit(document.scene, document.series->size(), *document.sceneFile);
     }
     document.histogram = (current != nullptr && current->series == document.series)
                              ? current->histogram

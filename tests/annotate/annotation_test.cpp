@@ -155,12 +155,12 @@ TEST(Legend, ManyTimeStepsBecomeAStripOfCellsThatDoNotOverlap) {
 
 TEST(Legend, FollowsWhatReadsTheCompositor) {
     const Series series = datedSeries();
-    for (const TemporalCompositorInfo& info : temporalCompositors()) {
-        if (info.compositor == TemporalCompositor::Custom) continue;
+    for (const std::string& name : temporalCompositorNames()) {
         Scene scene;
         scene.annotations.legend = true;
         scene.finalMode = FinalMode::Tstf;  // the TSTF's legend alone
-        scene.compositor = info.compositor;
+        scene.compositor = *temporalCompositorFromString(name);
+        const TemporalCompositorInfo& info = compositorInfo(scene.compositor);
         Image image(512, 512);
         const View view = resolveView(scene.camera, series.worldBounds(), 512, 512);
         const AnnotationLayout layout = drawAnnotations(image, scene, series, DisplayFrame{}, view, Font::openDefault());
@@ -177,7 +177,7 @@ TEST(Legend, FollowsWhatReadsTheCompositor) {
     Scene custom;
     custom.annotations.legend = true;
     custom.finalMode = FinalMode::Tstf;
-    custom.compositor = TemporalCompositor::Custom;
+    custom.compositor = kCustomCompositor;
     custom.compositorOptions.custom = CustomCompositor{"return 0.0;", "scene.json", false, CompositorReads::GradientTstf};
     Image image(512, 512);
     const View view = resolveView(custom.camera, series.worldBounds(), 512, 512);

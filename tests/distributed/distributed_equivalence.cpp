@@ -67,10 +67,10 @@ struct SceneCases {
 };
 
 std::vector<TemporalCompositor> everyBuiltInCompositor() {
-    return {TemporalCompositor::MaxIntensityProjection, TemporalCompositor::Average, TemporalCompositor::MaxDensityChange,
-            TemporalCompositor::Minimum, TemporalCompositor::StandardDeviation, TemporalCompositor::TimeOfMaximum,
-            TemporalCompositor::FirstArrival, TemporalCompositor::LastAbove, TemporalCompositor::LinearTrend,
-            TemporalCompositor::Chronovolume, TemporalCompositor::Difference};
+    return {compositorNamed("temporal-mip"), compositorNamed("temporal-average"), compositorNamed("temporal-max-change"),
+            compositorNamed("temporal-min"), compositorNamed("temporal-std-dev"), compositorNamed("time-of-max"),
+            compositorNamed("first-arrival"), compositorNamed("last-above"), compositorNamed("linear-trend"),
+            compositorNamed("chronovolume"), compositorNamed("difference")};
 }
 
 GlBackend backendFromEnvironment() {
@@ -162,13 +162,13 @@ int run(const std::filesystem::path& sourceDir, const std::filesystem::path& out
     const std::vector<SceneCases> cases = {
         {"figure4-temporal-mip.json", everyBuiltInCompositor()},   // partial overlap
         {"figure5-focus-step5.json", everyBuiltInCompositor()},    // the hurricane
-        {"figure4-styled-temporal-average.json", {TemporalCompositor::Average, TemporalCompositor::MaxIntensityProjection}},
-        {"figure1-styled-focus-step3.json", {TemporalCompositor::MaxIntensityProjection}},
+        {"figure4-styled-temporal-average.json", {compositorNamed("temporal-average"), compositorNamed("temporal-mip")}},
+        {"figure1-styled-focus-step3.json", {compositorNamed("temporal-mip")}},
         // The sonar: each ping cut to the beams and range bins of the block.
-        {"figure6-centre-index-tstf.json", {TemporalCompositor::MaxIntensityProjection, TemporalCompositor::Average}},
-        {"figure6-right-max-density-change.json", {TemporalCompositor::MaxDensityChange}},
+        {"figure6-centre-index-tstf.json", {compositorNamed("temporal-mip"), compositorNamed("temporal-average")}},
+        {"figure6-right-max-density-change.json", {compositorNamed("temporal-max-change")}},
         // A curvilinear (structured) grid, also kept whole, with lit-sphere styles.
-        {"warped-box-styled.json", {TemporalCompositor::MaxIntensityProjection}},
+        {"warped-box-styled.json", {compositorNamed("temporal-mip")}},
     };
     const auto context = createHeadlessContext(backendFromEnvironment(), false);
     int failures = 0;
@@ -231,8 +231,8 @@ int run(const std::filesystem::path& sourceDir, const std::filesystem::path& out
     // slowest to render, takes the MIP alone.
     for (const char* dataset : {"superellipsoid", "hurricane", "sonar", "warped-box"})
         for (TemporalCompositor compositor :
-             {TemporalCompositor::MaxIntensityProjection, TemporalCompositor::MaxDensityChange})
-            if (std::string(dataset) != "sonar" || compositor == TemporalCompositor::MaxIntensityProjection)
+             {compositorNamed("temporal-mip"), compositorNamed("temporal-max-change")})
+            if (std::string(dataset) != "sonar" || compositor == compositorNamed("temporal-mip"))
                 failures += compareAutomaticScene(mpi, sourceDir / "data" / dataset / "series.json", compositor,
                                                   outputDir);
     if (mpi.isFirst()) std::cout << (failures == 0 ? "all within the thresholds\n" : "some cases are beyond the thresholds\n");

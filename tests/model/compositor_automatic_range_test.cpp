@@ -38,23 +38,22 @@ TEST(CompositorAutomaticRange, FitsEachCompositorsCharacteristic) {
     visible.stf.curve.opacity = {{0.0, 1.0}};
     const double change = typicalLargestChange(series, visible.stf);
     ASSERT_NEAR(change, 0.4, 1e-6);
-    using enum TemporalCompositor;
     const auto expectRange = [&](TemporalCompositor compositor, double low, double high) {
         const auto [actualLow, actualHigh] = rangeFor(compositor, series);
         EXPECT_NEAR(actualLow, low, 1e-9) << toString(compositor);
         EXPECT_NEAR(actualHigh, high, 1e-9) << toString(compositor);
     };
-    expectRange(MaxDensityChange, 0.0, change);
-    expectRange(StandardDeviation, 0.0, change / 2);  // values spread over C deviate at most C / 2
-    expectRange(Difference, -change, change);
-    expectRange(LinearTrend, -change / 4.0, change / 4.0);  // a change of C over the 4 time units
-    expectRange(Custom, 0.0, change);
+    expectRange(compositorNamed("temporal-max-change"), 0.0, change);
+    expectRange(compositorNamed("temporal-std-dev"), 0.0, change / 2);  // values spread over C deviate at most C / 2
+    expectRange(compositorNamed("difference"), -change, change);
+    expectRange(compositorNamed("linear-trend"), -change / 4.0, change / 4.0);  // a change of C over the 4 time units
+    expectRange(kCustomCompositor, 0.0, change);
 }
 
 TEST(CompositorAutomaticRange, ATrendOnOneInstantFallsBackToTheChange) {
     Series series = risingBox();
     series.steps[1].time = series.steps[0].time;
-    const auto [low, high] = rangeFor(TemporalCompositor::LinearTrend, series);
+    const auto [low, high] = rangeFor(compositorNamed("linear-trend"), series);
     EXPECT_NEAR(high, 0.4, 1e-6);
     EXPECT_NEAR(low, -0.4, 1e-6);
 }

@@ -55,11 +55,10 @@ Scene roundTrip(const Scene& scene) {
 }
 
 TEST(CompositorScene, EveryNameReadsBackAndRoundTrips) {
-    for (const TemporalCompositorInfo& info : temporalCompositors()) {
-        if (info.compositor == TemporalCompositor::Custom) continue;
-        const Scene scene = parseScene(sceneWith("\"" + std::string(info.name) + "\""), kOrigin);
-        EXPECT_EQ(scene.compositor, info.compositor) << info.name;
-        EXPECT_EQ(roundTrip(scene), scene) << info.name;
+    for (const std::string& name : temporalCompositorNames()) {
+        const Scene scene = parseScene(sceneWith("\"" + name + "\""), kOrigin);
+        EXPECT_EQ(scene.compositor, *temporalCompositorFromString(name)) << name;
+        EXPECT_EQ(roundTrip(scene), scene) << name;
     }
 }
 
@@ -75,23 +74,23 @@ TEST(CompositorScene, EveryCompositorButTheScenesOwnIsNamedForUsers) {
 
 TEST(CompositorScene, ThresholdAndStepsAreReadAndWrittenBack) {
     const Scene arrival = parseScene(sceneWith(R"({"name": "first-arrival", "threshold": 0.4})"), kOrigin);
-    EXPECT_EQ(arrival.compositor, TemporalCompositor::FirstArrival);
-    EXPECT_EQ(arrival.compositorOptions.threshold, 0.4);
+    EXPECT_EQ(arrival.compositor, compositorNamed("first-arrival"));
+    EXPECT_EQ(arrival.compositorOptions.number(kThresholdOption), 0.4);
     EXPECT_EQ(roundTrip(arrival), arrival);
     EXPECT_NE(sceneToJson(arrival, kOrigin.parent_path()).find("\"threshold\": 0.4"), std::string::npos);
 
+    const CompositorOption& steps = *compositorInfo(compositorNamed("difference")).options.find("steps");
     const Scene difference = parseScene(sceneWith(R"({"name": "difference", "steps": [3, 1]})"), kOrigin);
-    EXPECT_EQ(difference.compositorOptions.differenceFrom, 3);
-    EXPECT_EQ(difference.compositorOptions.differenceTo, 1);
-    EXPECT_EQ(difference.compositorOptions.differenceSteps(5), glm::ivec2(3, 1));
+    EXPECT_EQ(difference.compositorOptions.timeSteps(steps), (TimeStepPair{3, 1}));
+    EXPECT_EQ(difference.compositorOptions.timeStepsOn(steps, 5), glm::ivec2(3, 1));
     EXPECT_EQ(roundTrip(difference), difference);
 
     // Without steps: from the first time-step to the last, and written back without them.
     const Scene whole = parseScene(sceneWith(R"({"name": "difference"})"), kOrigin);
-    EXPECT_EQ(whole.compositorOptions.differenceSteps(7), glm::ivec2(0, 6));
+    EXPECT_EQ(whole.compositorOptions.timeStepsOn(steps, 7), glm::ivec2(0, 6));
     EXPECT_EQ(sceneToJson(whole, kOrigin.parent_path()).find("steps"), std::string::npos);
     // A name in an object without options is a name.
-    EXPECT_EQ(parseScene(sceneWith(R"({"name": "temporal-min"})"), kOrigin).compositor, TemporalCompositor::Minimum);
+    EXPECT_EQ(parseScene(sceneWith(R"({"name": "temporal-min"})"), kOrigin).compositor, compositorNamed("temporal-min"));
 }
 
 TEST(CompositorScene, UnchangedPlacesAreReadAndWrittenBack) {
@@ -117,9 +116,9 @@ TEST(CompositorScene, UnchangedPlacesAreReadAndWrittenBack) {
     EXPECT_EQ(roundTrip(given), given);
 
     // Every compositor that picks a time-step takes it; the others are named in the refusal.
-    for (const TemporalCompositorInfo& info : temporalCompositors()) {
-        if (info.compositor == TemporalCompositor::Custom) continue;
-        const std::string json = sceneWith(R"({"name": ")" + std::string(info.name) + R"(", "unchanged": {}})");
+    for (const std::string& name : temporalCompositorNames()) {
+        const TemporalCompositorInfo& info = compositorInfo(*temporalCompositorFromString(name));
+        const std::string json = sceneWith(R"({"name": ")" + name + R"(", "unchanged": {}})");
         if (info.takesUnchanged)
             EXPECT_EQ(roundTrip(parseScene(json, kOrigin)), parseScene(json, kOrigin)) << info.name;
         else
@@ -142,7 +141,7 @@ TEST(CompositorScene, ASignedGradientRangeReadsAndRoundTrips) {
 TEST(CompositorScene, DifferenceStepsBeyondTheSeriesNameTheField) {
     const Scene scene = parseScene(sceneWith(R"({"name": "difference", "steps": [0, 9]})"), kOrigin);
     try {
-        scene.compositorOptions.differenceSteps(4, kOrigin);
+        scene.compositorOptions.timeStepsOn(*compositorInfo(scene.compositor).options.find("steps"), 4, kOrigin);
         FAIL() << "steps beyond the series";
     } catch (const InputError& error) {
         const std::string message = error.what();
@@ -201,7 +200,7 @@ TEST(CompositorScene, InlineCodeAndWhatReadsItRoundTrip) {
     const std::string code = "float best = -1.0;\nfor (int i = 0; i < count; ++i) best = max(best, density[i]);\n"
                              "return best;\n";
     const Scene scene = parseScene(inlineCompositor(code, "gradient-tstf"), kOrigin);
-    EXPECT_EQ(scene.compositor, TemporalCompositor::Custom);
+    EXPECT_EQ(scene.compositor, kCustomCompositor);
     ASSERT_TRUE(scene.compositorOptions.custom.has_value());
     EXPECT_EQ(scene.compositorOptions.custom->glsl, code);
     EXPECT_FALSE(scene.compositorOptions.custom->ownFile);
@@ -233,16 +232,17 @@ TEST(CompositorScene, CodeInItsOwnFileStaysInThatFile) {
 }
 
 TEST(CompositorScene, WhatReadsEachCompositor) {
-    EXPECT_EQ(compositorInfo(TemporalCompositor::MaxIntensityProjection).reads, CompositorReads::IndexTstf);
-    EXPECT_EQ(compositorInfo(TemporalCompositor::TimeOfMaximum).reads, CompositorReads::IndexTstf);
-    EXPECT_EQ(compositorInfo(TemporalCompositor::FirstArrival).reads, CompositorReads::IndexTstf);
-    EXPECT_EQ(compositorInfo(TemporalCompositor::StandardDeviation).reads, CompositorReads::GradientTstf);
-    EXPECT_EQ(compositorInfo(TemporalCompositor::LinearTrend).reads, CompositorReads::GradientTstf);
-    EXPECT_EQ(compositorInfo(TemporalCompositor::Difference).reads, CompositorReads::GradientTstf);
-    EXPECT_EQ(compositorInfo(TemporalCompositor::Average).reads, CompositorReads::Composited);
-    EXPECT_EQ(compositorInfo(TemporalCompositor::Chronovolume).reads, CompositorReads::Composited);
-    for (const TemporalCompositorInfo& info : temporalCompositors())
-        EXPECT_EQ(info.compositor == TemporalCompositor::Custom, std::string(info.shaderModule).empty()) << info.name;
+    EXPECT_EQ(compositorInfo(compositorNamed("temporal-mip")).reads, CompositorReads::IndexTstf);
+    EXPECT_EQ(compositorInfo(compositorNamed("time-of-max")).reads, CompositorReads::IndexTstf);
+    EXPECT_EQ(compositorInfo(compositorNamed("first-arrival")).reads, CompositorReads::IndexTstf);
+    EXPECT_EQ(compositorInfo(compositorNamed("temporal-std-dev")).reads, CompositorReads::GradientTstf);
+    EXPECT_EQ(compositorInfo(compositorNamed("linear-trend")).reads, CompositorReads::GradientTstf);
+    EXPECT_EQ(compositorInfo(compositorNamed("difference")).reads, CompositorReads::GradientTstf);
+    EXPECT_EQ(compositorInfo(compositorNamed("temporal-average")).reads, CompositorReads::Composited);
+    EXPECT_EQ(compositorInfo(compositorNamed("chronovolume")).reads, CompositorReads::Composited);
+    for (std::size_t line = 0; line < temporalCompositors().size(); ++line)
+        EXPECT_EQ(TemporalCompositor(line) == kCustomCompositor, std::string(temporalCompositors()[line].shaderModule).empty())
+            << temporalCompositors()[line].name;
 }
 
 }  // namespace

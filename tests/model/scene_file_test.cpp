@@ -82,7 +82,7 @@ TEST(SceneFile, ReadsEveryKeyOfAFullScene) {
     const std::vector<tstyles::OpacityNode> stfOpacity{{0.0, 0.0}, {0.5, 0.8}};
     EXPECT_EQ(scene.stf.curve.opacity, stfOpacity);
     EXPECT_EQ(scene.stf.curve.color.at(0).color, glm::dvec3(1.0, 0.9, 0.8));
-    EXPECT_EQ(scene.compositor, tstyles::TemporalCompositor::MaxDensityChange);
+    EXPECT_EQ(scene.compositor, tstyles::compositorNamed("temporal-max-change"));
     EXPECT_EQ(scene.indexTstf.curve.opacity.at(1).at, 3.0);
     EXPECT_EQ(scene.gradientTstf.rangeLow, 0.1);
     EXPECT_EQ(scene.gradientTstf.rangeHigh, 0.7);
@@ -98,7 +98,7 @@ TEST(SceneFile, AMinimalSceneTakesTheDefaults) {
     EXPECT_EQ(scene.width, 512);
     EXPECT_EQ(scene.camera.fovDeg, 30.0);
     EXPECT_FALSE(scene.raycast.step.has_value());
-    EXPECT_EQ(scene.compositor, tstyles::TemporalCompositor::MaxIntensityProjection);
+    EXPECT_EQ(scene.compositor, tstyles::compositorNamed("temporal-mip"));
     EXPECT_EQ(scene.finalMode, tstyles::FinalMode::Modulate);
     EXPECT_EQ(scene.stf.curve.evaluate(0.25).opacity, 0.25);
 }
@@ -138,7 +138,7 @@ TEST(SceneFile, TheDocumentedExampleParses) {
     ASSERT_NE(start, std::string::npos) << "no json block in " << doc;
     const auto end = text.find("```", start + 8);
     const Scene scene = tstyles::parseScene(text.substr(start + 8, end - start - 8), doc);
-    EXPECT_EQ(scene.compositor, tstyles::TemporalCompositor::MaxIntensityProjection);
+    EXPECT_EQ(scene.compositor, tstyles::compositorNamed("temporal-mip"));
     EXPECT_EQ(scene.dataset, (doc.parent_path() / "../superellipsoid/series.json").lexically_normal());
 }
 
@@ -261,7 +261,7 @@ Scene everyFeatureScene(const std::filesystem::path& dataset) {
     scene.raycast.termination = 0.9;
     scene.stf.curve.opacity = {{0.0, 0.0}, {0.3, 0.2}, {0.3, 0.7}, {1.0, 1.0 / 3.0}};
     scene.stf.curve.color = {{0.1, {1.0, 0.0, 0.0}}, {0.9, {0.0, 0.5, 1.0}}};
-    scene.compositor = tstyles::TemporalCompositor::Average;
+    scene.compositor = tstyles::compositorNamed("temporal-average");
     scene.indexTstf.curve.opacity = {{0.0, 0.2}, {2.5, 1.0}, {7.0, 0.0}};
     scene.indexTstf.curve.color = {};
     scene.gradientTstf.rangeLow = 0.05;
@@ -316,7 +316,7 @@ TEST(SceneEnums, NamesReadBack) {
         ASSERT_TRUE(mode.has_value()) << name;
         EXPECT_EQ(tstyles::toString(*mode), name);
     }
-    EXPECT_EQ(tstyles::toString(tstyles::TemporalCompositor::MaxDensityChange), "temporal-max-change");
+    EXPECT_EQ(tstyles::toString(tstyles::compositorNamed("temporal-max-change")), "temporal-max-change");
     EXPECT_FALSE(tstyles::finalModeFromString("Modulate").has_value());
 }
 

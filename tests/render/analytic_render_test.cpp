@@ -66,7 +66,7 @@ TEST(AnalyticRender, DisjointBoxesShowTheirIndexTstfColours) {
     scene.indexTstf.curve.opacity = {{0.0, 1.0}};
     scene.indexTstf.curve.color = {{0.0, {1.0, 0.0, 0.0}}, {1.0, {0.0, 1.0, 0.0}}};
     scene.finalMode = FinalMode::Tstf;
-    for (auto compositor : {TemporalCompositor::MaxIntensityProjection, TemporalCompositor::Average}) {
+    for (auto compositor : {compositorNamed("temporal-mip"), compositorNamed("temporal-average")}) {
         scene.compositor = compositor;
         const Image image = renderSeries(series, scene);
         expectPixel(image, pixelOf({0.35, 0.35}, centre, kViewHeight, kSize), {1, 0, 0, 1}, "time-step 0");
@@ -84,7 +84,7 @@ TEST(AnalyticRender, TemporalMaximumIntensityProjectionTakesTheMostOpaqueTimeSte
     scene.indexTstf.curve.opacity = {{0.0, 1.0}};
     scene.indexTstf.curve.color = {{0.0, {1, 0, 0}}, {1.0, {0, 1, 0}}, {2.0, {0, 0, 1}}};
     scene.finalMode = FinalMode::Tstf;
-    scene.compositor = TemporalCompositor::MaxIntensityProjection;
+    scene.compositor = compositorNamed("temporal-mip");
     const Image image = renderSeries(series, scene);
     expectPixel(image, pixelOf(centre, centre, kViewHeight, kSize), {0, 1, 0, 1}, "time-step 1 wins");
 }
@@ -98,7 +98,7 @@ TEST(AnalyticRender, TemporalAverageOverThreeFullyOverlappingSteps) {
     // STF: opacity 0.1 * density, colour from blue (density 0) to red (density 1).
     scene.stf.curve.opacity = {{0.0, 0.0}, {1.0, 0.1}};
     scene.stf.curve.color = {{0.0, {0, 0, 1}}, {1.0, {1, 0, 0}}};
-    scene.compositor = TemporalCompositor::Average;
+    scene.compositor = compositorNamed("temporal-average");
     scene.finalMode = FinalMode::Stf;
 
     // Per sample: opacities averaged, colours averaged weighted by opacity.
@@ -130,7 +130,7 @@ TEST(AnalyticRender, MaxDensityChangeReadsTheGradientTstfWhereStepsOverlapAndThe
     scene.gradientTstf.curve.color = {{0.0, {0, 1, 0}}, {1.0, {1, 0.5, 0}}};  // green to orange
     scene.gradientTstf.rangeLow = 0.0;
     scene.gradientTstf.rangeHigh = 1.0;
-    scene.compositor = TemporalCompositor::MaxDensityChange;
+    scene.compositor = compositorNamed("temporal-max-change");
     scene.finalMode = FinalMode::Tstf;
     const Image image = renderSeries(series, scene);
 
@@ -157,7 +157,7 @@ TEST(AnalyticRender, AMaskSplitsABoxBetweenTstfInsideAndStfOutside) {
     scene.stf.curve = constantFunction({0, 0, 1}, 1.0);
     scene.indexTstf.curve = constantFunction({1, 0, 0}, 1.0);
     scene.finalMode = FinalMode::Tstf;
-    for (auto compositor : {TemporalCompositor::MaxIntensityProjection, TemporalCompositor::Average}) {
+    for (auto compositor : {compositorNamed("temporal-mip"), compositorNamed("temporal-average")}) {
         scene.compositor = compositor;
         const Image image = renderSeries(series, scene);
         expectPixel(image, pixelOf({0.1, 0.35}, centre, kViewHeight, kSize), {1, 0, 0, 1}, "inside the mask: TSTF");
@@ -248,7 +248,7 @@ TEST(AnalyticRender, TemporalMipBreaksOpacityTiesInFavourOfTheMoreVisibleTimeSte
     scene.indexTstf.curve.opacity = {{0.0, 0.2}, {1.0, 1.0}, {2.0, 0.2}};
     scene.indexTstf.curve.color = {{0.0, {1, 0, 0}}, {1.0, {0, 1, 0}}, {2.0, {0, 0, 1}}};
     scene.finalMode = FinalMode::Tstf;
-    scene.compositor = TemporalCompositor::MaxIntensityProjection;
+    scene.compositor = compositorNamed("temporal-mip");
     const Image image = renderSeries(series, scene);
     expectPixel(image, pixelOf(centre, centre, kViewHeight, kSize), {0, 1, 0, 1}, "time-step 1 wins the tie");
 }

@@ -151,7 +151,7 @@ TEST(AutomaticSceneRender, MaxDensityChangeDiffersFromTemporalMip) {
     const auto file = sampleFolder() / "moving-blob-change.nii";
     testdata::writeMovingBlobNifti(file);
     const Image mip = renderAutomatically(file).image;
-    const Image change = renderAutomatically(file, TemporalCompositor::MaxDensityChange).image;
+    const Image change = renderAutomatically(file, compositorNamed("temporal-max-change")).image;
     int different = 0;
     for (int y = 0; y < kSize; ++y)
         for (int x = 0; x < kSize; ++x)

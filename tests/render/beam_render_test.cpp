@@ -225,7 +225,7 @@ TEST(BeamRender, BoxInsideAFanIsCompositedFromBothWhereTheyOverlap) {
 
     Scene scene = orthographicSceneLookingDownZ(kCentre, kViewHeight, kSize);
     scene.stf.curve = constantFunction({1.0, 1.0, 1.0}, 1.0);
-    scene.compositor = TemporalCompositor::Average;
+    scene.compositor = compositorNamed("temporal-average");
     scene.indexTstf.curve.opacity = {{0.0, 0.02}, {1.0, 0.01}};
     scene.indexTstf.curve.color = {{0.0, {1.0, 0.0, 0.0}}, {1.0, {0.0, 1.0, 0.0}}};
     scene.finalMode = FinalMode::Tstf;

@@ -44,7 +44,7 @@ glm::vec4 rampColour(double value, double low, double high) {
 
 TEST(CompositorRender, TemporalMinimumShowsTheLowestDensitysTimeStep) {
     const Series series = stackedBoxes({0.5f, 0.2f, 0.7f});
-    Scene scene = tstfScene(TemporalCompositor::Minimum);
+    Scene scene = tstfScene(compositorNamed("temporal-min"));
     colourEachStep(scene);
     expectStackPixel(renderSeries(series, scene), kStackCentre, kGreen, "time-step 1 is lowest");
     // Where the lowest density is transparent in the STF, nothing shows: what persists through
@@ -57,40 +57,40 @@ TEST(CompositorRender, TimeOfMaximumShowsTheHighestDensitysTimeStepWhateverItsOp
     // The STF makes dense samples fainter, so the most opaque time-step (temporal MIP's) is the
     // least dense one: time-of-max still picks the densest.
     const Series series = stackedBoxes({0.3f, 0.8f, 0.5f});
-    Scene scene = tstfScene(TemporalCompositor::TimeOfMaximum);
+    Scene scene = tstfScene(compositorNamed("time-of-max"));
     scene.stf.curve.opacity = {{0.0, 1.0}, {1.0, 0.1}};
     colourEachStep(scene);
     expectStackPixel(renderSeries(series, scene), kStackCentre, kGreen, "time-step 1 is densest");
-    scene.compositor = TemporalCompositor::MaxIntensityProjection;
+    scene.compositor = compositorNamed("temporal-mip");
     expectStackPixel(renderSeries(series, scene), kStackCentre, kRed, "temporal MIP: time-step 0 is most opaque");
     // A tie goes to the earlier time-step.
-    scene.compositor = TemporalCompositor::TimeOfMaximum;
+    scene.compositor = compositorNamed("time-of-max");
     expectStackPixel(renderSeries(stackedBoxes({0.8f, 0.3f, 0.8f}), scene), kStackCentre, kRed, "tie: time-step 0");
 }
 
 TEST(CompositorRender, FirstArrivalShowsTheFirstTimeStepAtTheThreshold) {
     const Series series = stackedBoxes({0.2f, 0.6f, 0.9f});
-    Scene scene = tstfScene(TemporalCompositor::FirstArrival);
+    Scene scene = tstfScene(compositorNamed("first-arrival"));
     colourEachStep(scene);
-    scene.compositorOptions.threshold = 0.5;
+    scene.compositorOptions.values["threshold"] = 0.5;
     expectStackPixel(renderSeries(series, scene), kStackCentre, kGreen, "0.6 >= 0.5 first at time-step 1");
-    scene.compositorOptions.threshold = 0.9;  // "at or above"
+    scene.compositorOptions.values["threshold"] = 0.9;  // "at or above"
     expectStackPixel(renderSeries(series, scene), kStackCentre, kBlue, "0.9 reaches 0.9 at time-step 2");
-    scene.compositorOptions.threshold = 0.1;
+    scene.compositorOptions.values["threshold"] = 0.1;
     expectStackPixel(renderSeries(series, scene), kStackCentre, kRed, "every time-step reaches 0.1");
-    scene.compositorOptions.threshold = 0.95;
+    scene.compositorOptions.values["threshold"] = 0.95;
     expectStackPixel(renderSeries(series, scene), kStackCentre, kTransparent, "none reaches 0.95");
 }
 
 TEST(CompositorRender, LastAboveShowsTheLastTimeStepAtTheThreshold) {
     const Series series = stackedBoxes({0.9f, 0.6f, 0.2f});
-    Scene scene = tstfScene(TemporalCompositor::LastAbove);
+    Scene scene = tstfScene(compositorNamed("last-above"));
     colourEachStep(scene);
-    scene.compositorOptions.threshold = 0.5;
+    scene.compositorOptions.values["threshold"] = 0.5;
     expectStackPixel(renderSeries(series, scene), kStackCentre, kGreen, "0.6 >= 0.5 last at time-step 1");
-    scene.compositorOptions.threshold = 0.1;
+    scene.compositorOptions.values["threshold"] = 0.1;
     expectStackPixel(renderSeries(series, scene), kStackCentre, kBlue, "every time-step reaches 0.1");
-    scene.compositorOptions.threshold = 0.95;
+    scene.compositorOptions.values["threshold"] = 0.95;
     expectStackPixel(renderSeries(series, scene), kStackCentre, kTransparent, "none reaches 0.95");
 }
 
@@ -102,13 +102,13 @@ TEST(CompositorRender, StandardDeviationOfKnownDensities) {
     double variance = 0.0;
     for (float d : densities) variance += (d - mean) * (d - mean) / 3.0;  // population: divided by n
     const double deviation = std::sqrt(variance);                         // 0.2944
-    Scene scene = tstfScene(TemporalCompositor::StandardDeviation);
+    Scene scene = tstfScene(compositorNamed("temporal-std-dev"));
     rampOver(scene, 0.0, 0.5);
     expectStackPixel(renderSeries(series, scene), kStackCentre, rampColour(deviation, 0.0, 0.5), "standard deviation");
 }
 
 TEST(CompositorRender, LinearTrendIsTheSlopeOverTheTimeStamps) {
-    Scene scene = tstfScene(TemporalCompositor::LinearTrend);
+    Scene scene = tstfScene(compositorNamed("linear-trend"));
     // Densities 0.2, 0.4, 0.6 at times 0, 1, 2: 0.2 per unit time, the middle of [0, 0.4].
     rampOver(scene, 0.0, 0.4);
     expectStackPixel(renderSeries(stackedBoxes({0.2f, 0.4f, 0.6f}), scene), kStackCentre, {0.5f, 0.75f, 0.0f, 1.0f},
@@ -137,7 +137,7 @@ TEST(CompositorRender, DifferenceOfTwoChosenTimeStepsIsSigned) {
     // x in [0.35, 0.7].
     const Series series =
         makeSeries({constantBox({0, 0, 0}, 0.7f), constantBox({0, 0, 0}, 0.4f), constantBox({0.35, 0, 0}, 0.2f)});
-    Scene scene = tstfScene(TemporalCompositor::Difference);
+    Scene scene = tstfScene(compositorNamed("difference"));
     rampOver(scene, -1.0, 1.0);
     const glm::dvec2 overlap(0.525, 0.35);
     const glm::dvec2 withoutStep2(0.15, 0.35);
@@ -145,12 +145,10 @@ TEST(CompositorRender, DifferenceOfTwoChosenTimeStepsIsSigned) {
     const Image firstToLast = renderSeries(series, scene);
     expectStackPixel(firstToLast, overlap, rampColour(-0.5, -1.0, 1.0), "0.2 - 0.7");
     expectStackPixel(firstToLast, withoutStep2, kTransparent, "time-step 2 has no data there");
-    scene.compositorOptions.differenceFrom = 2;
-    scene.compositorOptions.differenceTo = 1;
+    scene.compositorOptions.values["steps"] = TimeStepPair{2, 1};
     const Image backwards = renderSeries(series, scene);
     expectStackPixel(backwards, overlap, rampColour(0.2, -1.0, 1.0), "0.4 - 0.2");
-    scene.compositorOptions.differenceFrom = 0;
-    scene.compositorOptions.differenceTo = 1;
+    scene.compositorOptions.values["steps"] = TimeStepPair{0, 1};
     expectStackPixel(renderSeries(series, scene), withoutStep2, rampColour(-0.3, -1.0, 1.0), "0.4 - 0.7");
 }
 
@@ -175,7 +173,7 @@ TEST(CompositorRender, ChronovolumeCompositesTheTimeStepsInTimeOrder) {
     scene.indexTstf.curve.opacity = {{0.0, 1.0}};
     scene.indexTstf.curve.color = {{0.0, {1, 0, 0}}, {1.0, {0, 0, 1}}};
     scene.finalMode = FinalMode::Modulate;
-    scene.compositor = TemporalCompositor::Chronovolume;
+    scene.compositor = compositorNamed("chronovolume");
     const glm::dvec4 red(1, 0, 0, 0.1);
     const glm::dvec4 blue(0, 0, 1, 0.2);
     expectStackPixel(renderSeries(series, scene), kStackCentre, chronovolumePixel({red, blue}, kConstantBoxWidth),
@@ -229,12 +227,12 @@ TEST_F(StylesInsideTheMasksOnly, TheTemporalAverageAveragesTheStyledAndThePlainT
     const glm::dvec3 colour = (glm::dvec3(styledInside) * styledInside.a + glm::dvec3(plainOutside) * plainOutside.a) /
                               (styledInside.a + plainOutside.a);
     const double alpha = slabOpacity(opacity, kConstantBoxWidth);
-    expectStackPixel(renderSeries(maskedBoxes(), maskedStyleScene(TemporalCompositor::Average)), kStackCentre,
+    expectStackPixel(renderSeries(maskedBoxes(), maskedStyleScene(compositorNamed("temporal-average"))), kStackCentre,
                 glm::vec4(glm::vec3(colour * alpha), float(alpha)), "styled inside, plain outside");
 }
 
 TEST_F(StylesInsideTheMasksOnly, TheChronovolumeCompositesTheStyledBeforeThePlainTimeStep) {
-    expectStackPixel(renderSeries(maskedBoxes(), maskedStyleScene(TemporalCompositor::Chronovolume)), kStackCentre,
+    expectStackPixel(renderSeries(maskedBoxes(), maskedStyleScene(compositorNamed("chronovolume"))), kStackCentre,
                 chronovolumePixel({styledInside, plainOutside}, kConstantBoxWidth), "styled in front of plain");
 }
 

@@ -61,7 +61,7 @@ void expectCustomEqualsBuiltIn(const std::string& sceneName, const std::string& 
     const Series& series = loadSeriesOnce(kSourceDir / "data" / dataset / "series.json");
     Scene own = scene;
     scene.compositor = builtIn;
-    own.compositor = TemporalCompositor::Custom;
+    own.compositor = kCustomCompositor;
     own.compositorOptions.custom = custom;
     FrameOptions skipping;
     FrameOptions naive;
@@ -74,18 +74,18 @@ void expectCustomEqualsBuiltIn(const std::string& sceneName, const std::string& 
 }
 
 TEST(CustomCompositorRender, ReproducingTemporalMipGivesTheBuiltInImage) {
-    expectCustomEqualsBuiltIn("figure4-temporal-mip", "superellipsoid", TemporalCompositor::MaxIntensityProjection,
+    expectCustomEqualsBuiltIn("figure4-temporal-mip", "superellipsoid", compositorNamed("temporal-mip"),
                               customCode(kMostOpaque, CompositorReads::IndexTstf));
 }
 
 TEST(CustomCompositorRender, ReproducingTemporalMipGivesTheBuiltInImageOnPackedGroups) {
     expectCustomEqualsBuiltIn("figure4-temporal-mip", "superellipsoid-aligned",
-                              TemporalCompositor::MaxIntensityProjection,
+                              compositorNamed("temporal-mip"),
                               customCode(kMostOpaque, CompositorReads::IndexTstf));
 }
 
 TEST(CustomCompositorRender, ReproducingTimeOfMaximumGivesTheBuiltInImage) {
-    expectCustomEqualsBuiltIn("figure4-temporal-mip", "superellipsoid", TemporalCompositor::TimeOfMaximum,
+    expectCustomEqualsBuiltIn("figure4-temporal-mip", "superellipsoid", compositorNamed("time-of-max"),
                               customCode(kDensest, CompositorReads::IndexTstf));
 }
 
@@ -101,7 +101,7 @@ TEST(CustomCompositorRender, AValueForTheGradientTstfReadsThroughItsRange) {
     scene.gradientTstf.rangeLow = 0.25;
     scene.gradientTstf.rangeHigh = 0.75;
     scene.finalMode = FinalMode::Tstf;
-    scene.compositor = TemporalCompositor::Custom;
+    scene.compositor = kCustomCompositor;
     scene.compositorOptions.custom = customCode(R"(float sum = 0.0;
 int n = 0;
 for (int i = 0; i < count; ++i) {

@@ -47,7 +47,7 @@ Scene linearScene() {
     Scene scene = orthographicSceneLookingDownZ(kCentre, kViewHeight, kSize);
     scene.stf.curve.opacity = {{0.0, 0.05}, {1.0, 0.6}};
     scene.stf.curve.color = {{0.0, {0, 0, 1}}, {1.0, {1, 0.5, 0}}};
-    scene.compositor = TemporalCompositor::Average;
+    scene.compositor = compositorNamed("temporal-average");
     scene.finalMode = FinalMode::Stf;
     return scene;
 }

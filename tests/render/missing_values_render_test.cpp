@@ -46,7 +46,7 @@ TEST(MissingValuesRender, AverageLeavesOutTheTimeStepWithoutData) {
     // Density 0 is not transparent here, so a missing value read as 0 would show.
     scene.stf.curve.opacity = {{0.0, 0.05}, {1.0, 0.15}};
     scene.stf.curve.color = {{0.0, {0, 0, 1}}, {1.0, {1, 0, 0}}};
-    scene.compositor = TemporalCompositor::Average;
+    scene.compositor = compositorNamed("temporal-average");
     scene.finalMode = FinalMode::Stf;
     // The average over the given time-steps: opacities averaged, colours weighted by opacity.
     const auto averageOf = [](std::initializer_list<float> present) {
@@ -75,7 +75,7 @@ TEST(MissingValuesRender, MipPicksTheOtherTimeStepWhereTheLargerHasNoData) {
     scene.stf.curve.opacity = {{0.0, 1.0}, {1.0, 0.0}};
     scene.indexTstf.curve.opacity = {{0.0, 1.0}};
     scene.indexTstf.curve.color = {{0.0, {1, 0, 0}}, {1.0, {0, 1, 0}}};
-    scene.compositor = TemporalCompositor::MaxIntensityProjection;
+    scene.compositor = compositorNamed("temporal-mip");
     scene.finalMode = FinalMode::Tstf;
     const Image image = renderSeries(series, scene);
     expectPixel(image, pixelOf(kInsideTheGap, kCentre, kViewHeight, kSize), {1, 0, 0, 1}, "step 0 where step 1 is missing");
@@ -91,7 +91,7 @@ TEST(MissingValuesRender, MaxDensityChangeIsOnlyBetweenValidValues) {
     scene.stf.curve.color = {{0.0, {0, 0, 0}}, {1.0, {1, 1, 1}}};
     scene.gradientTstf.curve.opacity = {{0.0, 1.0}};
     scene.gradientTstf.curve.color = {{0.0, {0, 1, 0}}, {1.0, {1, 0.5, 0}}};
-    scene.compositor = TemporalCompositor::MaxDensityChange;
+    scene.compositor = compositorNamed("temporal-max-change");
     scene.finalMode = FinalMode::Tstf;
     const Image image = renderSeries(series, scene);
     const double change = b - a;
@@ -106,8 +106,8 @@ TEST(MissingValuesRender, AFullyMissingRegionIsTransparent) {
     scene.background = {0.25, 0.5, 0.75, 1.0};
     scene.stf.curve = constantFunction({1, 1, 1}, 1.0);  // opaque white wherever there is data
     scene.finalMode = FinalMode::Stf;
-    for (auto compositor : {TemporalCompositor::MaxIntensityProjection, TemporalCompositor::Average,
-                            TemporalCompositor::MaxDensityChange}) {
+    for (auto compositor : {compositorNamed("temporal-mip"), compositorNamed("temporal-average"),
+                            compositorNamed("temporal-max-change")}) {
         scene.compositor = compositor;
         for (std::size_t steps : {1u, 2u}) {
             std::vector<BoxSpec> boxes(steps, boxMissingOnTheLeft(0.5f));

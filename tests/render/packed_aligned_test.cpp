@@ -137,7 +137,7 @@ const glm::dvec2 kColumnViewCentre(kGridWidth / 2.0, 1.5 * kSpacing);
 // opacity given.
 Scene columnBlockScene(const std::vector<OpacityNode>& stfOpacity) {
     Scene scene = orthographicSceneLookingDownZ(kColumnViewCentre, kColumnViewHeight, kColumnImageSize);
-    scene.compositor = TemporalCompositor::MaxIntensityProjection;
+    scene.compositor = compositorNamed("temporal-mip");
     scene.finalMode = FinalMode::Tstf;
     scene.stf.curve.opacity = stfOpacity;
     scene.stf.curve.color = {{0.0, {1.0, 1.0, 1.0}}};
@@ -211,7 +211,7 @@ TEST(PackedAlignedRender, MaxDensityChangeCountsTheGroupTransparentInEveryBrick)
     }
     const Series series = makeSeries(boxes);
     Scene scene = columnBlockScene({{0.0, 0.0}, {0.5, 0.0}, {0.55, 1.0}, {1.0, 1.0}});
-    scene.compositor = TemporalCompositor::MaxDensityChange;
+    scene.compositor = compositorNamed("temporal-max-change");
     scene.gradientTstf.curve.opacity = {{0.0, 1.0}};
     scene.gradientTstf.curve.color = {{0.0, {0, 1, 0}}, {1.0, {1, 0.5, 0}}};  // green to orange
     scene.gradientTstf.rangeLow = 0.0;

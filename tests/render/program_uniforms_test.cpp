@@ -45,13 +45,13 @@ TEST(RaycastUniforms, EveryNameIsDeclaredInEveryRaycastingProgram) {
     // parts bench --stages times: each declares every name (those it does not use are optimised
     // away, and setting them writes nowhere).
     RaycastVariant packed;
-    packed.compositor = TemporalCompositor::FirstArrival;
+    packed.compositor = compositorNamed("first-arrival");
     packed.walk = TimeStepWalk::PackedGroups;
     packed.allAffine = true;
     packed.styledTracks = 7;
     packed.unchangedTime = true;
     RaycastVariant beams;
-    beams.compositor = TemporalCompositor::Difference;
+    beams.compositor = compositorNamed("difference");
     beams.rectilinearGrids = false;
     beams.beamGrids = true;
     RaycastVariant naive;

@@ -20,11 +20,11 @@ namespace {
 const glm::vec4 kWhite{1, 1, 1, 1};
 
 constexpr TemporalCompositor kPickingCompositors[] = {
-    TemporalCompositor::MaxIntensityProjection, TemporalCompositor::Minimum, TemporalCompositor::TimeOfMaximum,
-    TemporalCompositor::FirstArrival, TemporalCompositor::LastAbove};
+    compositorNamed("temporal-mip"), compositorNamed("temporal-min"), compositorNamed("time-of-max"),
+    compositorNamed("first-arrival"), compositorNamed("last-above")};
 // The two that pick by the highest value.
-constexpr TemporalCompositor kPeakPickers[] = {TemporalCompositor::TimeOfMaximum,
-                                               TemporalCompositor::MaxIntensityProjection};
+constexpr TemporalCompositor kPeakPickers[] = {compositorNamed("time-of-max"),
+                                               compositorNamed("temporal-mip")};
 
 // An opaque white STF, the TSTF alone, time-step 0 red, 1 green, 2 blue; every time-step reaches
 // the threshold of first-arrival and last-above.
@@ -32,7 +32,7 @@ Scene pickingScene(TemporalCompositor compositor, std::optional<double> below, d
     Scene scene = orthographicSceneLookingDownZ(kStackCentre, kStackViewHeight, kStackSize);
     scene.stf.curve = constantFunction({1, 1, 1}, 1.0);
     scene.compositor = compositor;
-    scene.compositorOptions.threshold = 0.05;
+    scene.compositorOptions.values["threshold"] = 0.05;
     scene.finalMode = FinalMode::Tstf;
     scene.indexTstf.curve.opacity = {{0.0, 1.0}};
     scene.indexTstf.curve.color = {{0.0, {1, 0, 0}}, {1.0, {0, 1, 0}}, {2.0, {0, 0, 1}}};
@@ -64,7 +64,7 @@ TEST(UnchangedTimeRender, ASeriesConstantOverTimeShowsNoTimeColourAnywhere) {
         const std::string name = toString(compositor);
         // Without the option the paper's compositors pick a time-step by the tie rules: red or blue.
         const Image everywhere = renderSeries(series, pickingScene(compositor, std::nullopt));
-        expectStackPixel(everywhere, kStackCentre, compositor == TemporalCompositor::LastAbove ? kBlue : kRed, name);
+        expectStackPixel(everywhere, kStackCentre, compositor == compositorNamed("last-above") ? kBlue : kRed, name);
         // With the fitted threshold (nothing changes: every place unchanged), no time colour.
         Scene fitted = pickingScene(compositor, 0.0);
         fitted.compositorOptions.unchanged->automatic = true;
@@ -84,7 +84,7 @@ TEST(UnchangedTimeRender, TiesNeverChooseAColour) {
     for (TemporalCompositor compositor : kPeakPickers)
         expectStackPixel(renderSeries(peakTwice, pickingScene(compositor, 0.0)), kStackCentre, kWhite,
                          toString(compositor));
-    expectStackPixel(renderSeries(stackedBoxes({0.3f, 0.8f, 0.3f}), pickingScene(TemporalCompositor::Minimum, 0.0)),
+    expectStackPixel(renderSeries(stackedBoxes({0.3f, 0.8f, 0.3f}), pickingScene(compositorNamed("temporal-min"), 0.0)),
                 kStackCentre, kWhite, "temporal-min, a tie of the lowest");
     // Ahead by 0.05: a colour with a tie of 0.04, none with 0.06.
     const Series peakOnce = stackedBoxes({0.8f, 0.3f, 0.85f});
@@ -94,12 +94,12 @@ TEST(UnchangedTimeRender, TiesNeverChooseAColour) {
         expectStackPixel(renderSeries(peakOnce, pickingScene(compositor, 0.0, 0.06)), kStackCentre, kWhite, name);
     }
     const Series lowOnce = stackedBoxes({0.35f, 0.8f, 0.3f});
-    expectStackPixel(renderSeries(lowOnce, pickingScene(TemporalCompositor::Minimum, 0.0, 0.04)), kStackCentre, kBlue,
+    expectStackPixel(renderSeries(lowOnce, pickingScene(compositorNamed("temporal-min"), 0.0, 0.04)), kStackCentre, kBlue,
                 "temporal-min");
-    expectStackPixel(renderSeries(lowOnce, pickingScene(TemporalCompositor::Minimum, 0.0, 0.06)), kStackCentre, kWhite,
+    expectStackPixel(renderSeries(lowOnce, pickingScene(compositorNamed("temporal-min"), 0.0, 0.06)), kStackCentre, kWhite,
                 "temporal-min");
     // A tie shows as an unchanged place does: transparent where they are.
-    Scene tiedTransparent = pickingScene(TemporalCompositor::TimeOfMaximum, 0.0);
+    Scene tiedTransparent = pickingScene(compositorNamed("time-of-max"), 0.0);
     tiedTransparent.compositorOptions.unchanged->opacity = 0.0;
     expectStackPixel(renderSeries(peakTwice, tiedTransparent), kStackCentre, kTransparent,
                      "a tie, unchanged places transparent");
@@ -109,13 +109,13 @@ TEST(UnchangedTimeRender, ArrivalsShowTimeWhereTheRangeExceedsTheThreshold) {
     // Densities 0.2, 0.6, 0.9: a range of 0.7. First arrival at 0.5 is time-step 1 where the
     // threshold is below 0.7, and no time colour at 0.7 and above ("by no more than").
     const Series series = stackedBoxes({0.2f, 0.6f, 0.9f});
-    Scene arrival = pickingScene(TemporalCompositor::FirstArrival, 0.65);
-    arrival.compositorOptions.threshold = 0.5;
+    Scene arrival = pickingScene(compositorNamed("first-arrival"), 0.65);
+    arrival.compositorOptions.values["threshold"] = 0.5;
     expectStackPixel(renderSeries(series, arrival), kStackCentre, kGreen, "first-arrival, threshold 0.65");
     arrival.compositorOptions.unchanged->below = 0.75;
     expectStackPixel(renderSeries(series, arrival), kStackCentre, kWhite, "first-arrival, threshold 0.75");
-    Scene departure = pickingScene(TemporalCompositor::LastAbove, 0.65);
-    departure.compositorOptions.threshold = 0.5;
+    Scene departure = pickingScene(compositorNamed("last-above"), 0.65);
+    departure.compositorOptions.values["threshold"] = 0.5;
     expectStackPixel(renderSeries(series, departure), kStackCentre, kBlue, "last-above, threshold 0.65");
     departure.compositorOptions.unchanged->below = 0.75;
     expectStackPixel(renderSeries(series, departure), kStackCentre, kWhite, "last-above, threshold 0.75");
@@ -130,7 +130,7 @@ TEST(UnchangedTimeRender, UnchangedPlacesKeepTheirShareOfTheStfsOpacity) {
     }
     // A quarter of the opacity per reference length: a slab of the box's width (7 reference
     // lengths) gathers 1 - 0.75^7 (Beer-Lambert with the renderer's opacity correction), white.
-    Scene faint = pickingScene(TemporalCompositor::MaxIntensityProjection, 0.0);
+    Scene faint = pickingScene(compositorNamed("temporal-mip"), 0.0);
     faint.compositorOptions.unchanged->opacity = 0.25;
     const float opacity = float(slabOpacity(0.25, kConstantBoxWidth));
     expectStackPixel(renderSeries(series, faint), kStackCentre, glm::vec4(opacity, opacity, opacity, opacity),
@@ -153,8 +153,8 @@ TEST(UnchangedTimeRender, PlacesThatChangeShowAsIfGainTimesAsThick) {
     // STF opacity 0.25 per reference length modulated by an opaque index TSTF: a place that changes
     // (first arrival at time-step 1, green) gathers 1 - 0.75^2 per reference length with a gain of 2,
     // over the box's 7 reference lengths; an unchanged one (a constant series) 0.25, as the STF has it.
-    Scene scene = pickingScene(TemporalCompositor::FirstArrival, 0.1);
-    scene.compositorOptions.threshold = 0.5;
+    Scene scene = pickingScene(compositorNamed("first-arrival"), 0.1);
+    scene.compositorOptions.values["threshold"] = 0.5;
     scene.compositorOptions.unchanged->gain = 2.0;
     scene.stf.curve = constantFunction({1, 1, 1}, 0.25);
     scene.finalMode = FinalMode::Modulate;
@@ -174,7 +174,7 @@ TEST(UnchangedTimeRender, UnchangedPlacesKeepTheirBoundaries) {
     BoxSpec box;
     box.density = [](glm::ivec3 voxel) { return float(0.1 + 0.05 * voxel.x); };
     const Series series = makeSeries({box, box, box});
-    Scene scene = pickingScene(TemporalCompositor::MaxIntensityProjection, 0.1);
+    Scene scene = pickingScene(compositorNamed("temporal-mip"), 0.1);
     scene.stf.curve = constantFunction({1, 1, 1}, 0.25);
     scene.finalMode = FinalMode::Modulate;
     scene.compositorOptions.unchanged->boundary = 1.0;
@@ -210,7 +210,7 @@ TEST(UnchangedTimeRender, AMovingBlobColoursOnlyItsPath) {
     const Series series = makeSeries(boxes);
     const glm::dvec2 centre(1.15, 0.15);
     const double viewHeight = 2.6;
-    Scene picking = pickingScene(TemporalCompositor::MaxIntensityProjection, 0.0);
+    Scene picking = pickingScene(compositorNamed("temporal-mip"), 0.0);
     picking.camera = orthographicSceneLookingDownZ(centre, viewHeight, kStackSize).camera;
     picking.compositorOptions.unchanged->automatic = true;
     for (TemporalCompositor compositor : kPeakPickers) {

@@ -9,6 +9,7 @@
 #include <initializer_list>
 #include <limits>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -16,30 +17,9 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include "tstyles/core/interval.h"
+
 namespace tstyles {
-
-// Shortest text that reads back as the same double ("0.1", "1e+300", "inf").
-std::string formatNumber(double value);
-
-// The values a number may take; either end may be open, and `high` may be +infinity.
-struct Interval {
-    double low;
-    double high;
-    bool lowIncluded = true;
-    bool highIncluded = true;
-
-    bool contains(double value) const;
-    // Why `value` is not one of them: "must be in [0, 1], got 1.5" (every reader's wording).
-    std::string refusal(double value) const;
-    // "in [0, 1]", "in (0, 180)", "> 0", ">= 0", "finite".
-    std::string describe() const;
-};
-
-// Any finite number (finiteness is checked before the interval).
-inline constexpr Interval anyFinite{-std::numeric_limits<double>::infinity(),
-                                    std::numeric_limits<double>::infinity()};
-inline constexpr Interval unitInterval{0.0, 1.0};
-inline constexpr Interval aboveZero{0.0, std::numeric_limits<double>::infinity(), false};
 
 class JsonField {
 public:
@@ -61,6 +41,7 @@ public:
     // Objects. allowOnlyKeys also checks that the value is an object at all; an unknown key is
     // reported with the keys allowed there.
     void allowOnlyKeys(std::initializer_list<std::string_view> keys) const;
+    void allowOnlyKeys(std::span<const std::string_view> keys) const;
     JsonField member(std::string_view key) const;  // missing: "missing; this key is required"
     // Missing: fails at the key with `whenMissing` ("missing; every case names its scene file").
     JsonField member(std::string_view key, const std::string& whenMissing) const;

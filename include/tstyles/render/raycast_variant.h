@@ -31,8 +31,8 @@ enum class RaycastPart {
 
 
 struct RaycastVariant {
-    TemporalCompositor compositor = TemporalCompositor::MaxIntensityProjection;
-    // TemporalCompositor::Custom: the scene's code, its name in compiler messages, what reads it.
+    TemporalCompositor compositor = compositorNamed("temporal-mip");
+    // kCustomCompositor: the scene's code, its name in compiler messages, what reads it.
     std::string customCode;
     std::string customCodeName;
     CompositorReads customReads = CompositorReads::IndexTstf;

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <variant>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -16,6 +18,13 @@
 #include "tstyles/scene/scene.h"
 
 namespace tstyles {
+
+// A compositor option's uniform (CompositorOption::uniform, declared by the compositor's module) and
+// its value, of the GLSL type of the option's kind.
+struct CompositorOptionUniform {
+    const char* name;
+    std::variant<float, int, glm::ivec2> value;
+};
 
 // The uniforms of a raycasting pass; which program it needs is its RaycastVariant.
 struct RaycastParameters {
@@ -29,12 +38,10 @@ struct RaycastParameters {
     glm::vec4 background{0.0f};
     FinalMode finalMode = FinalMode::Modulate;
     glm::vec2 changeRange{0.0f, 1.0f};
-    // The compositor's options (those its table line takes): first-arrival and last-above's
-    // density threshold, difference's time-steps [from, to].
-    float compositorThreshold = 0.5f;
+    // The options of the variant's compositor (those its table line takes), by their uniforms.
+    std::vector<CompositorOptionUniform> compositorOptions;
     // visibleDensityRange of the STF's table: time-steps outside it are transparent.
     glm::vec2 stfVisibleRange{0.0f, 1.0f};
-    glm::ivec2 compositorSteps{0};
     // CompositorOptions::unchanged (RaycastVariant::unchangedTime): the change up to which a place
     // is unchanged, the difference up to which two time-steps tie, and the share of the STF's
     // opacity an unchanged place keeps; a changing place's opacity as if `changedGain` times as thick.

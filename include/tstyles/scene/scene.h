@@ -2,8 +2,10 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -12,33 +14,10 @@
 #include "tstyles/scene/animation.h"
 #include "tstyles/scene/annotations.h"
 #include "tstyles/scene/camera.h"
+#include "tstyles/scene/temporal_compositors.h"
 #include "tstyles/scene/transfer_function.h"
 
 namespace tstyles {
-
-// The temporal compositor: how the n values that overlap at a sample become one temporal
-// characteristic. What each one computes and which TSTF reads it: tstyles/scene/temporal_compositors.h.
-enum class TemporalCompositor {
-    MaxIntensityProjection,
-    Average,
-    MaxDensityChange,
-    Minimum,
-    StandardDeviation,
-    TimeOfMaximum,
-    FirstArrival,
-    LastAbove,
-    LinearTrend,
-    Chronovolume,
-    Difference,
-    Custom,  // the scene's own GLSL (CompositorOptions::custom)
-};
-
-// Which transfer function reads a compositor's temporal characteristic.
-enum class CompositorReads {
-    IndexTstf,     // a time-step index
-    GradientTstf,  // a value in density units, through the gradient TSTF's range
-    Composited,    // each time-step is styled on its own and the results are combined
-};
 
 // A scene's own compositor: a GLSL function body over the documented inputs (docs/compositors.md).
 struct CustomCompositor {
@@ -77,33 +56,44 @@ struct UnchangedTime {
     bool operator==(const UnchangedTime&) const = default;
 };
 
-// The settings some compositors take.
+// A value of a compositor's option, of its kind (CompositorOptionKind): a number, time-steps, a
+// choice's name.
+struct TimeStepPair {
+    int from = 0;
+    std::optional<int> to;  // none: the series' last time-step
+    bool operator==(const TimeStepPair&) const = default;
+};
+using CompositorOptionValue = std::variant<double, TimeStepPair, std::string>;
+
+// The settings of the scene's compositor.
 struct CompositorOptions {
-    double threshold = 0.5;  // first-arrival, last-above: the density to reach
-    // difference: the time-steps [from, to]; the difference is density(to) - density(from).
-    // No `to`: the series' last time-step.
-    int differenceFrom = 0;
-    std::optional<int> differenceTo;
+    // The table's options (temporal_compositors.h) by key: a value of the option's kind, or none for
+    // its default. They stay when the compositor changes: compositors that take an option share it.
+    std::map<std::string, CompositorOptionValue, std::less<>> values;
     std::optional<CustomCompositor> custom;
     // The compositors that pick a time-step (TemporalCompositorInfo::takesUnchanged): none shows
     // time colours everywhere, as the paper does.
     std::optional<UnchangedTime> unchanged;
-    bool operator==(const CompositorOptions&) const = default;
-    // [from, to] of the difference on a series of `stepCount` time-steps; an InputError naming
-    // "compositor.steps" of `sceneFile` where they do not fit it.
-    glm::ivec2 differenceSteps(std::size_t stepCount, const std::filesystem::path& sceneFile = {}) const;
+    // Equal when every option of the table has the same value, given or by default.
+    bool operator==(const CompositorOptions& other) const;
+
+    // A Number option's value; a Choice option's place in its choices; a TimeStepPair option's
+    // time-steps, `to` none for the last.
+    double number(const CompositorOption& option) const;
+    std::size_t choice(const CompositorOption& option) const;
+    TimeStepPair timeSteps(const CompositorOption& option) const;
+    // A TimeStepPair option's [from, to] on a series of `stepCount` time-steps; an InputError naming
+    // "compositor.KEY[i]" of `sceneFile` where they do not fit it.
+    glm::ivec2 timeStepsOn(const CompositorOption& option, std::size_t stepCount,
+                           const std::filesystem::path& sceneFile = {}) const;
 };
 
 // What the compositor returns: STF alone, TSTF alone, or the STF modulated by the TSTF.
 enum class FinalMode { Stf, Tstf, Modulate };
 
-std::string toString(TemporalCompositor tc);
-std::optional<TemporalCompositor> temporalCompositorFromString(const std::string& name);
 std::string toString(FinalMode mode);
 std::optional<FinalMode> finalModeFromString(const std::string& name);
-// Every accepted name, in declaration order (for messages and UI lists); the custom compositor,
-// which needs its code, is not among the compositor names.
-std::vector<std::string> temporalCompositorNames();
+// Every accepted name, in declaration order (for messages and UI lists).
 std::vector<std::string> finalModeNames();
 
 struct RaycastSettings {
@@ -143,7 +133,7 @@ struct Scene {
     RaycastSettings raycast;
     Stf stf = defaultStf();
     Exposure exposure;
-    TemporalCompositor compositor = TemporalCompositor::MaxIntensityProjection;
+    TemporalCompositor compositor;  // the table's first, temporal-mip
     CompositorOptions compositorOptions;
     IndexTstf indexTstf = defaultIndexTstf();
     GradientTstf gradientTstf = defaultGradientTstf();
@@ -152,5 +142,9 @@ struct Scene {
     Animation animation;
     bool operator==(const Scene&) const = default;
 };
+
+// Fails, with an InputError naming the key of `sceneFile`, where a setting of the scene names a
+// time-step that a series of `stepCount` lacks: the exposure, a time-step option of its compositor.
+void checkTimeStepsFit(const Scene& scene, std::size_t stepCount, const std::filesystem::path& sceneFile);
 
 }  // namespace tstyles

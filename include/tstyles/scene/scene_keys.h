@@ -6,6 +6,7 @@
 // a test fails when the committed table differs).
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -22,19 +23,21 @@ struct NumericKey {
     Interval range;      // the values the reader takes
     // The key's value in `scene`, or none where the scene has no number there (the camera is a
     // look_at, the compositor takes no threshold, the value is "auto" or left to the data).
-    std::optional<double> (*get)(const Scene& scene);
+    std::function<std::optional<double>(const Scene& scene)> get;
     // Sets a value inside `range`; false where the scene has no place for it (a look_at camera, a
     // compositor without a threshold, a value that is "auto"), as a scene file would refuse it.
     // A key that is only absent (no step, no last time-step) is set.
-    bool (*set)(Scene& scene, double value);
+    std::function<bool(Scene& scene, double value)> set;
 };
 
+// A compositor's options ("compositor.threshold") are lines made from the table of compositors
+// (temporal_compositors.h), and so are the lists of compositors in the lines of "compositor".
 struct SceneKey {
-    std::string_view path;         // "raycast.termination"
-    std::string_view type;         // as the documentation says it: "number", "3 numbers", "string or object"
-    std::string_view defaultText;  // markdown: "`0.99`", "half the finest voxel spacing"
+    std::string path;         // "raycast.termination"
+    std::string type;         // as the documentation says it: "number", "3 numbers", "string or object"
+    std::string defaultText;  // markdown: "`0.99`", "half the finest voxel spacing"
     // What the key takes, in markdown; for a numeric key, after its range ("(0, 1]; rays stop ...").
-    std::string_view allowed;
+    std::string allowed;
     std::optional<NumericKey> numeric;
 };
 

@@ -29,7 +29,7 @@ BenchDataset benchDatasetFor(const std::string& folder);
 
 // The compositors every dataset is measured with.
 inline constexpr TemporalCompositor kBenchCompositors[] = {
-    TemporalCompositor::MaxIntensityProjection, TemporalCompositor::Average, TemporalCompositor::MaxDensityChange};
+    compositorNamed("temporal-mip"), compositorNamed("temporal-average"), compositorNamed("temporal-max-change")};
 
 // The median of frame times (the mean of the middle two for an even count); `values` not empty.
 double median(std::vector<double> values);

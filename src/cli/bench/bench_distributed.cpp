@@ -22,7 +22,7 @@ namespace {
 
 struct DistributedResult {
     std::string dataset;
-    TemporalCompositor compositor = TemporalCompositor::MaxIntensityProjection;
+    TemporalCompositor compositor = compositorNamed("temporal-mip");
     glm::ivec2 size{0};
     double frameMs = 0.0;      // median of the whole frame on process 0 (render, composite, background)
     double renderMs = 0.0;     // median over frames of the slowest process's block
