@@ -17,8 +17,8 @@ render() {
 }
 
 # Time-steps picked or styled by the index TSTF, on the hurricane (every time-step on one grid).
-# The scene's threshold (0.3) is first-arrival's and last-above's.
-for compositor in temporal-mip time-of-max first-arrival last-above temporal-average chronovolume; do
+# The scene's threshold (0.3) is first-arrival's, last-above's and threshold-crossing's (rising).
+for compositor in temporal-mip time-of-max first-arrival last-above threshold-crossing temporal-average chronovolume; do
   render "$scenes/compositors-hurricane-index.json" "$compositor"
 done
 # The minimum needs every time-step dense at a place: the moving storm leaves none, the bouncing

@@ -9,7 +9,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/cli_test_lib.sh"
 OUTPUT="$SCRATCH/out.png"
 SCENE="$SCRATCH/scene.json"
 COMPOSITORS="temporal-mip temporal-average temporal-max-change temporal-min temporal-std-dev time-of-max
-first-arrival last-above linear-trend chronovolume difference"
+first-arrival last-above threshold-crossing linear-trend chronovolume difference"
 # The bundled Figure 4 scene: an STF that shows the super-ellipsoid, an index TSTF over time.
 FIGURE4="$SOURCE_DIR/data/scenes/figure4-temporal-mip.json"
 

@@ -203,7 +203,7 @@ const BadScene badScenes[] = {
      "must be in [0, 1], got -0.5"},
     {R"({"dataset": "a", "compositor": "temporal-median"})", "compositor",
      "allowed values: temporal-mip, temporal-average, temporal-max-change, temporal-min, temporal-std-dev, "
-     "time-of-max, first-arrival, last-above, linear-trend, chronovolume, difference"},
+     "time-of-max, first-arrival, last-above, threshold-crossing, linear-trend, chronovolume, difference"},
     {R"({"dataset": "a", "final": "blend"})", "final", "allowed values: stf, tstf, modulate"},
     // Index TSTF nodes may lie before time-step 0 (a focus swept to the first step), but not as text.
     {R"({"dataset": "a", "tstf": {"index": {"opacity": [{"at": "1", "opacity": 1}]}}})",

@@ -139,7 +139,7 @@ TEST(SceneKeys, TheDocumentedTableIsTheKeyTable) {
     const std::size_t tableStart = begin + std::string(kSceneKeyTableBegin).size() + 1;
     EXPECT_EQ(doc.substr(tableStart, end - tableStart), sceneKeyTable())
         << "docs/scene-format.md's table of keys differs from src/scene/scene_keys.cpp: run "
-           "build/tools/write_scene_key_table docs/scene-format.md";
+           "build/tools/write_doc_tables docs";
 }
 
 }  // namespace

@@ -94,6 +94,26 @@ TEST(CompositorRender, LastAboveShowsTheLastTimeStepAtTheThreshold) {
     expectStackPixel(renderSeries(series, scene), kStackCentre, kTransparent, "none reaches 0.95");
 }
 
+TEST(CompositorRender, ThresholdCrossingShowsTheFirstCrossingInItsDirection) {
+    // Against 0.5: above from the start (first-arrival picks time-step 0), falls at 1, rises at 2.
+    const Series series = stackedBoxes({0.6f, 0.2f, 0.7f});
+    Scene scene = tstfScene(compositorNamed("threshold-crossing"));
+    colourEachStep(scene);
+    // Transparent below the threshold: a falling crossing shows as the time-step before it does.
+    scene.stf.curve.opacity = {{0.0, 0.0}, {0.49, 0.0}, {0.5, 1.0}};
+    scene.compositorOptions.values["threshold"] = 0.5;
+    expectStackPixel(renderSeries(series, scene), kStackCentre, kBlue, "rising (the default): 0.2 -> 0.7 at 2");
+    scene.compositorOptions.values["direction"] = std::string("falling");
+    expectStackPixel(renderSeries(series, scene), kStackCentre, kGreen, "falling: 0.6 -> 0.2 at 1, shown as 0.6");
+    scene.compositorOptions.values["threshold"] = 0.1;
+    expectStackPixel(renderSeries(series, scene), kStackCentre, kTransparent, "always above 0.1: no crossing");
+    scene.compositorOptions.values["direction"] = std::string("rising");
+    scene.compositorOptions.values["threshold"] = 0.65;
+    expectStackPixel(renderSeries(series, scene), kStackCentre, kBlue, "0.6 is below 0.65: rises at 2 only");
+    scene.compositorOptions.values["threshold"] = 0.1;
+    expectStackPixel(renderSeries(series, scene), kStackCentre, kTransparent, "never below 0.1: no rise");
+}
+
 TEST(CompositorRender, StandardDeviationOfKnownDensities) {
     const std::vector<float> densities{0.2f, 0.4f, 0.9f};
     const Series series = stackedBoxes(densities);

@@ -2,7 +2,7 @@
 // animation tracks name it), its type, its default and what it takes. The reader checks numbers
 // against their line's range, an animated value is rounded where the line says whole and applied to
 // the scene through the line's accessors, the viewer's widgets take their ranges and tooltips from
-// it, and docs/scene-format.md's table of keys is generated from it (tools/write_scene_key_table.cpp;
+// it, and docs/scene-format.md's table of keys is generated from it (tools/write_doc_tables.cpp;
 // a test fails when the committed table differs).
 #pragma once
 
@@ -60,8 +60,7 @@ std::string allowedText(const SceneKey& key);
 // between these two lines there.
 std::string sceneKeyTable();
 inline constexpr const char* kSceneKeyTableBegin =
-    "<!-- The table of keys is generated from src/scene/scene_keys.cpp: build/tools/write_scene_key_table "
-    "docs/scene-format.md -->";
+    "<!-- The table of keys is generated from src/scene/scene_keys.cpp: build/tools/write_doc_tables docs -->";
 inline constexpr const char* kSceneKeyTableEnd = "<!-- End of the generated table of keys. -->";
 
 }  // namespace tstyles

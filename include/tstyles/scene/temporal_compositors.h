@@ -136,6 +136,19 @@ inline constexpr std::array kTemporalCompositors = [] {
         Info{.name = "last-above", .shaderModule = "tc_last_above.glsl", .reads = IndexTstf, .takesUnchanged = true,
              .options = {kThresholdOption},
              .summary = "the last time-step at or above the threshold, by the index TSTF"},
+        Info{.name = "threshold-crossing", .shaderModule = "tc_threshold_crossing.glsl", .reads = IndexTstf,
+             .takesUnchanged = true,
+             .options = {kThresholdOption,
+                         CompositorOption{
+                             .key = "direction",
+                             .kind = CompositorOptionKind::Choice,
+                             .uniform = "compositorDirection",
+                             .help = "\"rising\": the first time-step at or above the threshold after one below it; "
+                                     "\"falling\": the first below it after one at or above it",
+                             .choices = {"rising", "falling"},
+                         }},
+             .summary = "the first time-step at which the density crosses the threshold (rising or falling), by the "
+                        "index TSTF"},
         Info{.name = "linear-trend", .shaderModule = "tc_linear_trend.glsl", .reads = GradientTstf,
              .range = SignedPerTime, .valueName = "trend",
              .summary = "least-squares slope of density over time, by the gradient TSTF"},
@@ -191,6 +204,14 @@ std::vector<const CompositorOption*> compositorOptionsOfAll();
 // `takesUnchanged`.
 std::vector<std::string> compositorsTaking(std::string_view key);
 std::vector<std::string> compositorsTakingUnchanged();
+// The markdown table of docs/compositors.md's list of compositors, made from the table; it stands
+// between these two lines there (build/tools/write_doc_tables docs writes it).
+std::string compositorDocTable();
+inline constexpr const char* kCompositorTableBegin =
+    "<!-- The table of compositors is generated from include/tstyles/scene/temporal_compositors.h: "
+    "build/tools/write_doc_tables docs -->";
+inline constexpr const char* kCompositorTableEnd = "<!-- End of the generated table of compositors. -->";
+
 // Names as a sentence lists them, each between `quote`s: "a, b and c", "`a` and `b`".
 std::string listedNames(const std::vector<std::string>& names, std::string_view quote = "");
 
