@@ -223,8 +223,7 @@ Command addAnimateCommand(CLI::App& app) {
         ->add_option("-o,--output", options->output,
                      "out.mp4, out.webm, out.gif, or a folder (ending in /) for frame-0000.png, ...")
         ->required();
-    command->add_option("--width", options->width, "Frame width (overrides the scene)")->check(CLI::Range(1, 16384));
-    command->add_option("--height", options->height, "Frame height (overrides the scene)")->check(CLI::Range(1, 16384));
+    addImageSizeOptions(*command, "Frame", options->width, options->height);
     addAnimationOptions(*command, options->animation);
     addAnnotationOptions(*command, options->annotations);
     addSceneOverrides(*command, options->overrides);

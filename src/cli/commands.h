@@ -30,6 +30,11 @@ struct GlOptions {
     std::optional<std::filesystem::path> shaderDirectory;
 };
 void addGlOptions(CLI::App& command, GlOptions& options);
+// --shader-dir alone, for a command with a window (view).
+void addShaderDirectoryOption(CLI::App& command, std::optional<std::filesystem::path>& directory);
+// --width and --height, overriding the scene's, of an image (`what` "Image") or a movie's frames.
+void addImageSizeOptions(CLI::App& command, const std::string& what, std::optional<int>& width,
+                         std::optional<int>& height);
 GlBackend parseBackend(const std::string& name);
 
 // What a dataset argument may be, for the commands' help (docs/readers.md has the formats).

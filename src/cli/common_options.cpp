@@ -14,9 +14,19 @@ namespace tstyles::cli {
 void addGlOptions(CLI::App& command, GlOptions& options) {
     command.add_option("--backend", options.backend, "Headless OpenGL: auto (EGL, then OSMesa), egl, osmesa")
         ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
-    command.add_option("--shader-dir", options.shaderDirectory,
+    addShaderDirectoryOption(command, options.shaderDirectory);
+}
+
+void addShaderDirectoryOption(CLI::App& command, std::optional<std::filesystem::path>& directory) {
+    command.add_option("--shader-dir", directory,
                        "Load shaders from this folder instead of the embedded copy (also: TSTYLES_SHADER_DIR)")
         ->check(CLI::ExistingDirectory);
+}
+
+void addImageSizeOptions(CLI::App& command, const std::string& what, std::optional<int>& width,
+                         std::optional<int>& height) {
+    command.add_option("--width", width, what + " width (overrides the scene)")->check(CLI::Range(1, 16384));
+    command.add_option("--height", height, what + " height (overrides the scene)")->check(CLI::Range(1, 16384));
 }
 
 GlBackend parseBackend(const std::string& name) {

@@ -193,9 +193,7 @@ Command addRenderCommand(CLI::App& app) {
         ->required();
     command->add_option("-o,--output", options->output, "Image file to write; the format follows the extension")
         ->required();
-    command->add_option("--width", options->width, "Image width (overrides the scene)")->check(CLI::Range(1, 16384));
-    command->add_option("--height", options->height, "Image height (overrides the scene)")
-        ->check(CLI::Range(1, 16384));
+    addImageSizeOptions(*command, "Image", options->width, options->height);
     addSceneOverrides(*command, options->overrides);
     command->add_option("--style", options->styleOverrides,
                         "NAME=FILE: use this image (any format OpenImageIO reads) wherever the scene uses style NAME");

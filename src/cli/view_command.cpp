@@ -57,9 +57,7 @@ Command addViewCommand(CLI::App& app) {
     command->add_option("--size", options->size, "Window size in screen pixels, WIDTHxHEIGHT")
         ->capture_default_str();
     command->add_flag("--no-vsync", options->noVsync, "Do not wait for the display's refresh between frames");
-    command->add_option("--shader-dir", options->shaderDirectory,
-                        "Load shaders from this folder instead of the embedded copy (also: TSTYLES_SHADER_DIR)")
-        ->check(CLI::ExistingDirectory);
+    addShaderDirectoryOption(*command, options->shaderDirectory);
     addDatasetOptions(*command, options->dataset);
     addGpuMemoryOption(*command, options->gpuMemory);
     return {command, [options] { return runView(*options); }};

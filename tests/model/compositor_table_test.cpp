@@ -133,18 +133,5 @@ TEST(CompositorTable, TheThresholdCrossingIsReadWrittenAndAnimatedFromItsLine) {
     EXPECT_FALSE(numericSceneKey("compositor.threshold")->set(mip, 0.2));
 }
 
-TEST(CompositorTable, TheDocumentedTableIsTheCompositorTable) {
-    std::ifstream in(std::filesystem::path(TSTYLES_SOURCE_DIR) / "docs" / "compositors.md");
-    const std::string doc{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    const std::size_t begin = doc.find(kCompositorTableBegin);
-    const std::size_t end = doc.find(kCompositorTableEnd);
-    ASSERT_NE(begin, std::string::npos);
-    ASSERT_NE(end, std::string::npos);
-    const std::size_t tableStart = begin + std::string(kCompositorTableBegin).size() + 1;
-    EXPECT_EQ(doc.substr(tableStart, end - tableStart), compositorDocTable())
-        << "docs/compositors.md's table of compositors differs from temporal_compositors.h: run "
-           "build/tools/write_doc_tables docs";
-}
-
 }  // namespace
 }  // namespace tstyles

@@ -1,6 +1,7 @@
 // The table of scene keys (scene_keys.h) against the reader, the animation and the documentation:
 // every numeric key is read at both ends of its range and refused one step past each, naming the
-// key; its accessors read and write what the reader reads; docs/scene-format.md holds the table.
+// key; its accessors read and write what the reader reads, and the writer writes it back;
+// docs/scene-format.md holds the table.
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -13,6 +14,7 @@
 
 #include "tstyles/core/errors.h"
 #include "tstyles/scene/animation.h"
+#include "tstyles/scene/doc_tables.h"
 #include "tstyles/scene/scene_file.h"
 #include "tstyles/scene/scene_keys.h"
 
@@ -94,6 +96,9 @@ TEST(SceneKeys, EveryNumericKeyIsReadWithinItsRangeAndRefusedPastIt) {
         numeric.set(scene, inside);
         const Scene read = parseScene(withNumber(sceneWithEveryNumber(), key.path, inside).dump(), "scene.json");
         EXPECT_EQ(scene, read);
+        // The writer writes it: the scene's own file reads back with the number.
+        const std::filesystem::path folder = std::filesystem::current_path();
+        EXPECT_EQ(numeric.get(parseScene(sceneToJson(scene, folder), folder / "scene.json")), inside);
     }
     EXPECT_EQ(numericKeys, 18);
 }
@@ -129,17 +134,16 @@ TEST(SceneKeys, TheTableNamesEveryKeyOnce) {
     EXPECT_THROW(sceneKey("raycast.steps"), std::logic_error);
 }
 
-TEST(SceneKeys, TheDocumentedTableIsTheKeyTable) {
-    std::ifstream in(std::filesystem::path(TSTYLES_SOURCE_DIR) / "docs" / "scene-format.md");
-    const std::string doc{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    const std::size_t begin = doc.find(kSceneKeyTableBegin);
-    const std::size_t end = doc.find(kSceneKeyTableEnd);
-    ASSERT_NE(begin, std::string::npos);
-    ASSERT_NE(end, std::string::npos);
-    const std::size_t tableStart = begin + std::string(kSceneKeyTableBegin).size() + 1;
-    EXPECT_EQ(doc.substr(tableStart, end - tableStart), sceneKeyTable())
-        << "docs/scene-format.md's table of keys differs from src/scene/scene_keys.cpp: run "
-           "build/tools/write_doc_tables docs";
+TEST(DocTables, TheDocsHoldTheGeneratedTables) {
+    for (const GeneratedDocTable& table : generatedDocTables()) {
+        std::ifstream in(std::filesystem::path(TSTYLES_SOURCE_DIR) / "docs" / table.document);
+        const std::string doc{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+        const std::optional<std::string> documented = documentedTable(doc, table);
+        ASSERT_TRUE(documented) << table.document << " lacks the markers of its generated table";
+        EXPECT_EQ(*documented, table.table())
+            << "docs/" << table.document << "'s generated table differs from the code's: run "
+            << "build/tools/write_doc_tables docs";
+    }
 }
 
 }  // namespace

@@ -169,7 +169,7 @@ def test_the_compositor_names_are_the_scene_readers():
     with pytest.raises(ValueError) as error:
         tstyles.Scene({"compositor": "temporal-median"})
     allowed = str(error.value).split("; allowed values: ", 1)[1].split(", ")
-    assert len(allowed) == 11
+    assert len(allowed) == 12
     # The attribute's docstring is the key table's line for "compositor", which names them all.
     assert allowed_in_key_table("compositor") in tstyles.Scene.compositor.__doc__
     for name in allowed:
