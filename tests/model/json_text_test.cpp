@@ -37,6 +37,21 @@ TEST(JsonText, CommentsAreReadOnlyWhereAllowed) {
     EXPECT_FALSE(probeJsonText(commented, JsonComments::Allowed).is_discarded());
 }
 
+TEST(JsonText, AKeyGivenTwiceInOneObjectIsRefusedByItsPath) {
+    const std::string twice = "given twice; a key may appear once in an object";
+    EXPECT_EQ(parseError(R"({"a": 1, "a": 2})", JsonComments::Refused), "suite.json: a: " + twice);
+    EXPECT_EQ(parseError(R"({"compositor": {"name": "x", "direction": "falling", "direction": "rising"}})",
+                         JsonComments::Refused),
+              "suite.json: compositor.direction: " + twice);
+    EXPECT_EQ(parseError(R"({"stf": {"opacity": [{"at": 0}, [1, {"b": 2}], {"at": 0, "at": 1}]}})",
+                         JsonComments::Refused),
+              "suite.json: stf.opacity[2].at: " + twice);
+    // One key in several objects is one in each.
+    const nlohmann::json document = parseJsonText(R"({"a": {"at": 1}, "b": [{"at": 2}, {"at": 3}], "at": 4})", "",
+                                                  JsonComments::Refused);
+    EXPECT_EQ(document["b"][1]["at"], 3);
+}
+
 TEST(JsonField, AMissingKeyFailsWithWhatTheCallerSays) {
     const nlohmann::json document = nlohmann::json::parse(R"({"cases": [{"name": "a"}]})");
     const std::filesystem::path file = "suite.json";

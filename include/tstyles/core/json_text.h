@@ -16,7 +16,8 @@ namespace tstyles {
 enum class JsonComments { Refused, Allowed };
 
 // Throws InputError naming `origin` (a file, or empty for text from elsewhere) for text that is not
-// JSON, or that holds a number too large for a double (JSON has no infinity).
+// JSON, that holds a number too large for a double (JSON has no infinity), or that gives a key twice
+// in one object (naming its path: the parser would keep the last silently).
 nlohmann::json parseJsonText(const std::string& text, const std::filesystem::path& origin, JsonComments comments);
 
 // Whether `text` is JSON, for telling kinds of files apart: the document, or a discarded value
