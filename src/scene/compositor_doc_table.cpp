@@ -53,7 +53,8 @@ std::string compositorDocTable() {
             continue;
         }
         std::string options;
-        for (const CompositorOption& option : info.options) options += (options.empty() ? "" : ", ") + optionText(option);
+        for (const CompositorOption& option : info.options)
+            options += (options.empty() ? "" : ", ") + optionText(option);
         const std::string range = info.reads == CompositorReads::GradientTstf ? rangeText(info.range) : "";
         table += "| `" + std::string(info.name) + "` | " + info.summary + " | " + readsText(info.reads) + " | " +
                  options + " | " + range + " |\n";

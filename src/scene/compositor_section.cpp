@@ -108,9 +108,10 @@ CompositorOptionValue readOption(const CompositorOption& option, const JsonField
                 if (pair[i] != std::floor(pair[i])) field.element(i).fail("must be a whole time-step index");
             return TimeStepPair{int(pair[0]), int(pair[1])};
         }
-        case CompositorOptionKind::Choice:
-            return option.choices[field.name<std::size_t>([&](const std::string& name) { return option.choiceNamed(name); },
-                                                         option.choiceNames())];
+        case CompositorOptionKind::Choice: {
+            const auto choiceOf = [&](const std::string& name) { return option.choiceNamed(name); };
+            return option.choices[field.name<std::size_t>(choiceOf, option.choiceNames())];
+        }
     }
     field.fail("an option of an unknown kind");
 }

@@ -67,7 +67,8 @@ void drawGradientRange(GradientTstf& tstf, CompositorReads reads) {
 
 void drawCompositorChoice(Scene& scene, const Series& series) {
     const std::vector<std::string> names = compositorChoices(scene);
-    const std::string now = scene.compositor == kCustomCompositor ? kCustomCompositorChoice : toString(scene.compositor);
+    const std::string now =
+        scene.compositor == kCustomCompositor ? kCustomCompositorChoice : toString(scene.compositor);
     if (auto chosen = nameCombo("compositor", names, now)) {
         scene.compositor = names[*chosen] == kCustomCompositorChoice ? kCustomCompositor
                                                                      : *temporalCompositorFromString(names[*chosen]);
@@ -135,7 +136,8 @@ void drawCompositorOption(const CompositorOption& option, CompositorOptions& opt
             int chosen[2] = {std::clamp(steps.from, 0, last), std::clamp(steps.to.value_or(last), 0, last)};
             const std::string label = std::string(option.key) + " (from, to)";
             if (ImGui::SliderInt2(label.c_str(), chosen, 0, last))
-                options.values[option.key] = TimeStepPair{std::clamp(chosen[0], 0, last), std::clamp(chosen[1], 0, last)};
+                options.values[option.key] =
+                    TimeStepPair{std::clamp(chosen[0], 0, last), std::clamp(chosen[1], 0, last)};
             break;
         }
         case CompositorOptionKind::Choice: {

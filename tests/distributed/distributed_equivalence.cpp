@@ -67,10 +67,9 @@ struct SceneCases {
 };
 
 std::vector<TemporalCompositor> everyBuiltInCompositor() {
-    return {compositorNamed("temporal-mip"), compositorNamed("temporal-average"), compositorNamed("temporal-max-change"),
-            compositorNamed("temporal-min"), compositorNamed("temporal-std-dev"), compositorNamed("time-of-max"),
-            compositorNamed("first-arrival"), compositorNamed("last-above"), compositorNamed("linear-trend"),
-            compositorNamed("chronovolume"), compositorNamed("difference")};
+    std::vector<TemporalCompositor> compositors;
+    for (const std::string& name : temporalCompositorNames()) compositors.push_back(*temporalCompositorFromString(name));
+    return compositors;
 }
 
 GlBackend backendFromEnvironment() {
@@ -162,7 +161,8 @@ int run(const std::filesystem::path& sourceDir, const std::filesystem::path& out
     const std::vector<SceneCases> cases = {
         {"figure4-temporal-mip.json", everyBuiltInCompositor()},   // partial overlap
         {"figure5-focus-step5.json", everyBuiltInCompositor()},    // the hurricane
-        {"figure4-styled-temporal-average.json", {compositorNamed("temporal-average"), compositorNamed("temporal-mip")}},
+        {"figure4-styled-temporal-average.json",
+         {compositorNamed("temporal-average"), compositorNamed("temporal-mip")}},
         {"figure1-styled-focus-step3.json", {compositorNamed("temporal-mip")}},
         // The sonar: each ping cut to the beams and range bins of the block.
         {"figure6-centre-index-tstf.json", {compositorNamed("temporal-mip"), compositorNamed("temporal-average")}},

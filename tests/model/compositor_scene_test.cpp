@@ -90,7 +90,8 @@ TEST(CompositorScene, ThresholdAndStepsAreReadAndWrittenBack) {
     EXPECT_EQ(whole.compositorOptions.timeStepsOn(steps, 7), glm::ivec2(0, 6));
     EXPECT_EQ(sceneToJson(whole, kOrigin.parent_path()).find("steps"), std::string::npos);
     // A name in an object without options is a name.
-    EXPECT_EQ(parseScene(sceneWith(R"({"name": "temporal-min"})"), kOrigin).compositor, compositorNamed("temporal-min"));
+    EXPECT_EQ(parseScene(sceneWith(R"({"name": "temporal-min"})"), kOrigin).compositor,
+              compositorNamed("temporal-min"));
 }
 
 TEST(CompositorScene, UnchangedPlacesAreReadAndWrittenBack) {
@@ -240,9 +241,10 @@ TEST(CompositorScene, WhatReadsEachCompositor) {
     EXPECT_EQ(compositorInfo(compositorNamed("difference")).reads, CompositorReads::GradientTstf);
     EXPECT_EQ(compositorInfo(compositorNamed("temporal-average")).reads, CompositorReads::Composited);
     EXPECT_EQ(compositorInfo(compositorNamed("chronovolume")).reads, CompositorReads::Composited);
-    for (std::size_t line = 0; line < temporalCompositors().size(); ++line)
-        EXPECT_EQ(TemporalCompositor(line) == kCustomCompositor, std::string(temporalCompositors()[line].shaderModule).empty())
-            << temporalCompositors()[line].name;
+    for (std::size_t line = 0; line < temporalCompositors().size(); ++line) {
+        const TemporalCompositorInfo& info = temporalCompositors()[line];
+        EXPECT_EQ(TemporalCompositor(line) == kCustomCompositor, std::string(info.shaderModule).empty()) << info.name;
+    }
 }
 
 }  // namespace

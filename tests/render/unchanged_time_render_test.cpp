@@ -94,10 +94,9 @@ TEST(UnchangedTimeRender, TiesNeverChooseAColour) {
         expectStackPixel(renderSeries(peakOnce, pickingScene(compositor, 0.0, 0.06)), kStackCentre, kWhite, name);
     }
     const Series lowOnce = stackedBoxes({0.35f, 0.8f, 0.3f});
-    expectStackPixel(renderSeries(lowOnce, pickingScene(compositorNamed("temporal-min"), 0.0, 0.04)), kStackCentre, kBlue,
-                "temporal-min");
-    expectStackPixel(renderSeries(lowOnce, pickingScene(compositorNamed("temporal-min"), 0.0, 0.06)), kStackCentre, kWhite,
-                "temporal-min");
+    const TemporalCompositor minimum = compositorNamed("temporal-min");
+    expectStackPixel(renderSeries(lowOnce, pickingScene(minimum, 0.0, 0.04)), kStackCentre, kBlue, "temporal-min");
+    expectStackPixel(renderSeries(lowOnce, pickingScene(minimum, 0.0, 0.06)), kStackCentre, kWhite, "temporal-min");
     // A tie shows as an unchanged place does: transparent where they are.
     Scene tiedTransparent = pickingScene(compositorNamed("time-of-max"), 0.0);
     tiedTransparent.compositorOptions.unchanged->opacity = 0.0;
