@@ -53,8 +53,8 @@ DisplaySettings displayFromOptions(const std::string& key, const std::string& op
 // One line per compositor: its name and what it shows.
 std::string compositorHelp() {
     std::string help = "Temporal compositor (docs/compositors.md):";
-    for (const std::string& name : temporalCompositorNames())
-        help += "\n  " + name + ": " + compositorInfo(*temporalCompositorFromString(name)).summary;
+    for (const TemporalCompositor compositor : builtInCompositors())
+        help += std::string("\n  ") + compositorInfo(compositor).name + ": " + compositorInfo(compositor).summary;
     return help;
 }
 

@@ -161,10 +161,7 @@ UnchangedFit automaticUnchangedFit(const Scene& scene, const Series& series) {
 }
 
 std::pair<double, double> gradientRangeForChange(const Scene& scene, const Series& series, double change) {
-    const AutomaticRange range = scene.compositor == kCustomCompositor
-                                     ? AutomaticRange::Change
-                                     : compositorInfo(scene.compositor).range;
-    switch (range) {
+    switch (compositorInfo(scene.compositor).range) {
         case AutomaticRange::Change: return {0.0, change};
         case AutomaticRange::HalfChange: return {0.0, 0.5 * change};
         case AutomaticRange::SignedChange: return {-change, change};

@@ -28,7 +28,6 @@ std::optional<FinalMode> finalModeFromString(const std::string& name) {
 
 std::vector<std::string> finalModeNames() { return allNames(finalModeNameTable); }
 
-
 bool CompositorOptions::operator==(const CompositorOptions& other) const {
     if (custom != other.custom || unchanged != other.unchanged) return false;
     for (const CompositorOption* option : compositorOptionsOfAll()) {
@@ -48,20 +47,17 @@ bool CompositorOptions::operator==(const CompositorOptions& other) const {
 }
 
 double CompositorOptions::number(const CompositorOption& option) const {
-    const auto found = values.find(std::string_view(option.key));
-    const double* given = found == values.end() ? nullptr : std::get_if<double>(&found->second);
+    const double* given = givenValue<double>(option);
     return given ? *given : option.defaultNumber;
 }
 
 std::size_t CompositorOptions::choice(const CompositorOption& option) const {
-    const auto found = values.find(std::string_view(option.key));
-    const std::string* given = found == values.end() ? nullptr : std::get_if<std::string>(&found->second);
+    const std::string* given = givenValue<std::string>(option);
     return given ? option.choiceNamed(*given).value_or(0) : 0;
 }
 
 TimeStepPair CompositorOptions::timeSteps(const CompositorOption& option) const {
-    const auto found = values.find(std::string_view(option.key));
-    const TimeStepPair* given = found == values.end() ? nullptr : std::get_if<TimeStepPair>(&found->second);
+    const TimeStepPair* given = givenValue<TimeStepPair>(option);
     return given ? *given : TimeStepPair{};
 }
 

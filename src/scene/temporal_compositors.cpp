@@ -31,16 +31,22 @@ const TemporalCompositorInfo& compositorInfo(TemporalCompositor compositor) {
 std::string toString(TemporalCompositor compositor) { return compositorInfo(compositor).name; }
 
 std::optional<TemporalCompositor> temporalCompositorFromString(const std::string& name) {
-    for (std::size_t line = 0; line < kTemporalCompositors.size(); ++line)
-        if (name == kTemporalCompositors[line].name && TemporalCompositor(line) != kCustomCompositor)
-            return TemporalCompositor(line);
+    for (const TemporalCompositor compositor : builtInCompositors())
+        if (name == compositorInfo(compositor).name) return compositor;
     return std::nullopt;
+}
+
+std::vector<TemporalCompositor> builtInCompositors() {
+    std::vector<TemporalCompositor> compositors;
+    for (std::size_t line = 0; line < kTemporalCompositors.size(); ++line)
+        if (TemporalCompositor(line) != kCustomCompositor) compositors.emplace_back(line);
+    return compositors;
 }
 
 std::vector<std::string> temporalCompositorNames() {
     std::vector<std::string> names;
-    for (std::size_t line = 0; line < kTemporalCompositors.size(); ++line)
-        if (TemporalCompositor(line) != kCustomCompositor) names.emplace_back(kTemporalCompositors[line].name);
+    for (const TemporalCompositor compositor : builtInCompositors())
+        names.emplace_back(compositorInfo(compositor).name);
     return names;
 }
 

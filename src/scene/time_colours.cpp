@@ -20,9 +20,8 @@ void applyTimeColours(Scene& scene, std::size_t stepCount) {
 }
 
 std::string applyAutomaticGradientColours(Scene& scene) {
-    const bool signedValues = scene.compositor != kCustomCompositor &&
-                              (compositorInfo(scene.compositor).range == AutomaticRange::SignedChange ||
-                               compositorInfo(scene.compositor).range == AutomaticRange::SignedPerTime);
+    const AutomaticRange range = compositorInfo(scene.compositor).range;
+    const bool signedValues = range == AutomaticRange::SignedChange || range == AutomaticRange::SignedPerTime;
     if (signedValues) {
         // Falls blue, rises red; no change, in the middle of the range, as faint as no change is
         // for the unsigned compositors.

@@ -127,7 +127,7 @@ void drawCompositorOption(const CompositorOption& option, CompositorOptions& opt
         case CompositorOptionKind::Number: {
             double value = options.number(option);
             if (drawKeySlider({option.key, keyPath, "%.3f"}, value)) options.values[option.key] = value;
-            return;
+            return;  // drawKeySlider's tooltip is the key's line, which holds the option's help
         }
         case CompositorOptionKind::TimeStepPair: {
             if (series.size() == 0) return;

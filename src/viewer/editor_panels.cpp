@@ -24,8 +24,8 @@ void placeWindow(const ScreenRect& rect) {
 // composited ones too.
 std::string readersOf(bool gradientTstf) {
     std::string names;
-    for (const std::string& name : temporalCompositorNames()) {
-        const TemporalCompositorInfo& info = compositorInfo(*temporalCompositorFromString(name));
+    for (const TemporalCompositor compositor : builtInCompositors()) {
+        const TemporalCompositorInfo& info = compositorInfo(compositor);
         const bool gradient = info.reads == CompositorReads::GradientTstf;
         if (gradient != gradientTstf) continue;
         names += (names.empty() ? "" : ", ") + std::string(info.name);

@@ -66,12 +66,6 @@ struct SceneCases {
     std::vector<TemporalCompositor> compositors;
 };
 
-std::vector<TemporalCompositor> everyBuiltInCompositor() {
-    std::vector<TemporalCompositor> compositors;
-    for (const std::string& name : temporalCompositorNames()) compositors.push_back(*temporalCompositorFromString(name));
-    return compositors;
-}
-
 GlBackend backendFromEnvironment() {
     const char* name = std::getenv("TSTYLES_TEST_BACKEND");
     return glBackendFromString(name ? name : "auto").value_or(GlBackend::Auto);
@@ -159,8 +153,8 @@ int compareAutomaticScene(const MpiSession& mpi, const std::filesystem::path& da
 int run(const std::filesystem::path& sourceDir, const std::filesystem::path& outputDir) {
     const MpiSession mpi;
     const std::vector<SceneCases> cases = {
-        {"figure4-temporal-mip.json", everyBuiltInCompositor()},   // partial overlap
-        {"figure5-focus-step5.json", everyBuiltInCompositor()},    // the hurricane
+        {"figure4-temporal-mip.json", builtInCompositors()},   // partial overlap
+        {"figure5-focus-step5.json", builtInCompositors()},    // the hurricane
         {"figure4-styled-temporal-average.json",
          {compositorNamed("temporal-average"), compositorNamed("temporal-mip")}},
         {"figure1-styled-focus-step3.json", {compositorNamed("temporal-mip")}},

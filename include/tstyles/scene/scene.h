@@ -86,6 +86,14 @@ struct CompositorOptions {
     // "compositor.KEY[i]" of `sceneFile` where they do not fit it.
     glm::ivec2 timeStepsOn(const CompositorOption& option, std::size_t stepCount,
                            const std::filesystem::path& sceneFile = {}) const;
+
+private:
+    // The value given for `option` (of its kind's type T), or null for its default.
+    template <class T>
+    const T* givenValue(const CompositorOption& option) const {
+        const auto found = values.find(std::string_view(option.key));
+        return found == values.end() ? nullptr : std::get_if<T>(&found->second);
+    }
 };
 
 // What the compositor returns: STF alone, TSTF alone, or the STF modulated by the TSTF.

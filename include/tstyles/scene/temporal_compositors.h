@@ -92,7 +92,8 @@ struct TemporalCompositorInfo {
     const char* name = "";          // in scene files, --tc and the viewer
     const char* shaderModule = "";  // in shaders/; empty for the scene's own (the "custom" line)
     CompositorReads reads = CompositorReads::IndexTstf;
-    AutomaticRange range = AutomaticRange::Change;  // GradientTstf: what "auto" fits
+    // GradientTstf (and the scene's own code, whichever TSTF reads it): what "auto" fits.
+    AutomaticRange range = AutomaticRange::Change;
     const char* valueName = "value";                // GradientTstf: what the legend calls the value
     bool takesUnchanged = false;  // picks a time-step: CompositorOptions::unchanged applies
     CompositorOptionList options = {};
@@ -192,8 +193,10 @@ std::span<const TemporalCompositorInfo> temporalCompositors();
 const TemporalCompositorInfo& compositorInfo(TemporalCompositor compositor);
 std::string toString(TemporalCompositor compositor);
 std::optional<TemporalCompositor> temporalCompositorFromString(const std::string& name);
-// Every name a scene file, --tc and the window take, in the table's order; the custom compositor,
-// which needs its code, is not among them.
+// Every compositor a scene file, --tc and the window name, in the table's order: all but the
+// custom compositor, which needs its code.
+std::vector<TemporalCompositor> builtInCompositors();
+// Their names.
 std::vector<std::string> temporalCompositorNames();
 // What reads the scene's compositor: the table's line, or the custom compositor's own choice.
 CompositorReads compositorReads(const Scene& scene);
