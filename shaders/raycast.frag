@@ -1,15 +1,19 @@
 #version 450 core
-// Ray iteration and compositing (paper 5.2): march the ray depth in fixed world-space steps, ask
-// the temporal compositor for a temporal style at each sample, composite front to back with
-// opacity correction for the step length, and stop early once the ray is nearly opaque.
+// Ray iteration (paper 5.2): march the ray depth in fixed world-space steps, ask the temporal
+// compositor for a temporal characteristic at each sample, and hand the samples, front to back, to
+// the ray mode, which makes the pixel of them (composite: front to back with opacity correction for
+// the step length, stopping early once the ray is nearly opaque; or a maximum, an average, an
+// iso-surface, ...: ray_sample.glsl).
 // This is the template of every raycasting program: RaycastVariant (src/render/raycast_variant.cpp)
-// picks the modules that "compositor.glsl" and "time_step_walk.glsl" stand for and the switches.
+// picks the modules that "compositor.glsl", "time_step_walk.glsl" and "ray_mode.glsl" stand for and
+// the switches.
 #include "contract.glsl"
 #include "variant_switches.glsl"
 #include "raycast_uniforms.glsl"
 #include "ray.glsl"
 #include "overlap_extraction.glsl"
 #include "temporal_compositor.glsl"
+#include "ray_mode.glsl"
 
 
 // The first lattice point after t; a segment shorter than 1 % of a step joins the next one (float
@@ -61,13 +65,13 @@ void main() {
         return;
     }
 
-    vec4 accumulated = vec4(0.0);  // premultiplied colour, opacity
+    RayState rayState = rayInit(ray);
     int samples = 0;
     int fetches = 0;
     float anchor = max(rayBoxInterval(ray, seriesLower, seriesUpper).x, 0.0);
     // In a block, start at the segment that holds the clip's entry.
     float t = clip.x > rayDepth.x ? max(rayDepth.x, latticePointAtOrBefore(clip.x, anchor)) : rayDepth.x;
-    while (t < rayDepth.y && accumulated.a < terminationOpacity) {
+    while (t < rayDepth.y && !rayDone(rayState)) {
         // Each sample stands for the segment [t, segmentEnd], from t to the next lattice point; the
         // first (at the ray's entry, or after a jump) and the last (at the exit) are shorter, so a
         // slab of thickness D gets exactly D worth of opacity.
@@ -82,33 +86,34 @@ void main() {
             break;
         }
         advanceWalk(middle);
-        TemporalSample styled = compositeTemporal(ray.origin + ray.direction * middle, middle);
+        vec3 position = ray.origin + ray.direction * middle;
+        TemporalSample sampled = compositeTemporal(position, middle);
         samples += 1;
-        fetches += styled.fetches;
-        if (WALK_SKIPS_EMPTY_SPACE && styled.contributing == 0) {
+        fetches += sampled.fetches;
+        if (WALK_SKIPS_EMPTY_SPACE && sampled.contributing == 0) {
             // Between time-steps: jump to where the next one begins.
             t = nextEntryAfter(middle, rayDepth.y);
+            rayPassGap(rayState);
             continue;
         }
-        if (WALK_SKIPS_EMPTY_SPACE && styled.emptyUntil > 0.0) {
+        if (WALK_SKIPS_EMPTY_SPACE && sampled.emptyUntil > 0.0) {
             // Every time-step here is transparent: jump to the end of the empty bricks, but not past
             // the entry of a time-step the ray has not reached yet.
-            t = max(segmentEnd, min(styled.emptyUntil, nextEntryAfter(middle, rayDepth.y)));
+            float next = max(segmentEnd, min(sampled.emptyUntil, nextEntryAfter(middle, rayDepth.y)));
+            rayPassEmpty(rayState, next - t);
+            t = next;
             continue;
         }
-        float opacity = clamp(styled.colorOpacity.a, 0.0, 1.0);
-        if (opacity > 0.0) {
-            float corrected = 1.0 - pow(1.0 - opacity, (segmentEnd - t) / referenceLength);
-            accumulated += (1.0 - accumulated.a) * vec4(styled.colorOpacity.rgb * corrected, corrected);
-        }
+        rayAccumulate(rayState, RaySample(sampled.characteristic, position, middle, segmentEnd - t), fetches);
         t = segmentEnd;
     }
 
-    // The loop ends only at the exit or at the termination opacity. A ray that stopped before both
+    // The loop ends only at the exit or where the ray mode is done. A ray that stopped before both
     // was cut short by the driver: llvmpipe ends every loop of an invocation once 65535 loop passes
     // have run in it (docs/architecture.md, "Limits: samples per ray on llvmpipe"). Counted, so
     // that the front end can say that the image is incomplete.
-    if (t < rayDepth.y && accumulated.a < terminationOpacity) atomicAdd(statistics.cutShortRays, 1u);
+    if (t < rayDepth.y && !rayDone(rayState)) atomicAdd(statistics.cutShortRays, 1u);
+    vec4 accumulated = rayFinish(rayState, fetches);
 
 #if COLLECT_STATISTICS
     if (rayDepth.x < rayDepth.y) {

@@ -1,16 +1,16 @@
 // The temporal compositor at one sample (paper 5.3): every time-step whose interval contains the
 // sample contributes its density, its mask and its STF classification; the program's compositor
 // module (compositor.glsl: one of the tc_*.glsl files) turns those n values into a temporal
-// characteristic, and the transfer function it names gives the sample's temporal style. The
+// characteristic, which the ray mode (ray_sample.glsl) styles through the transfer function it
+// names (characteristic_style.glsl) where and when it needs the sample's temporal style. The
 // program's walk (time_step_walk.glsl: walk_ray_list, walk_packed_groups or walk_naive) decides
 // which time-steps are at the sample and how their densities are read.
 #include "temporal_sample.glsl"
 #include "compositor.glsl"
 #include "time_step_walk.glsl"
-#include "characteristic_style.glsl"
 
 TemporalSample compositeTemporal(vec3 position, float t) {
-    TemporalSample result = TemporalSample(vec4(0.0), 0, 0, -1.0);
+    TemporalSample result = TemporalSample(transparentCharacteristic(), 0, 0, -1.0);
     SamplePoint point = samplePointAt(position, t);
     // Skip transparent regions of all time-steps at once. The max density change needs every
     // density once any time-step is visible, so the test comes before the real work.
@@ -31,7 +31,6 @@ TemporalSample compositeTemporal(vec3 position, float t) {
     }
     CompositorState state = compositorInit();
     accumulateTimeSteps(state, point, result);
-    TemporalCharacteristic characteristic = compositorFinish(state, position, result.fetches);
-    result.colorOpacity = styledCharacteristic(characteristic, position, result.fetches);
+    result.characteristic = compositorFinish(state, position, result.fetches);
     return result;
 }

@@ -8,7 +8,7 @@
 #include "compositor.glsl"
 
 struct TemporalSample {
-    vec4 colorOpacity;  // colour and opacity per reference length
+    TemporalCharacteristic characteristic;  // the compositor's, for the ray mode to style
     int contributing;   // how many time-steps contain the sample
     int fetches;        // volume texture fetches spent
     // > 0 when every time-step at the sample is in an empty brick: the ray may skip to here.

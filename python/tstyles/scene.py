@@ -98,6 +98,8 @@ class Scene:
     # The keys most scripts change, as attributes: each reads and writes the key at its path, and
     # its docstring is the key's line of the scene reader's table (_key_doc).
     compositor = property(lambda self: self["compositor"], lambda self, v: self.__setitem__("compositor", v))
+    # "composite" where the file leaves the ray out; a name, or a dict with the mode and its options.
+    ray = property(lambda self: self.to_dict().get("ray", "composite"), lambda self, v: self.__setitem__("ray", v))
     final_mode = property(lambda self: self["final"], lambda self, v: self.__setitem__("final", v))
     camera = property(lambda self: self["camera"], lambda self, v: self.__setitem__("camera", v))
     stf = property(lambda self: self["stf"], lambda self, v: self.__setitem__("stf", v))
@@ -116,8 +118,8 @@ class Scene:
 
 
 # The key path each attribute stands for; its docstring comes from the key table: that key's line,
-# or for a section (a path ending in ".") the lines of every key in it.
-_ATTRIBUTE_KEYS = {"compositor": "compositor", "final_mode": "final", "camera": "camera.", "stf": "stf.",
+# or for a section (a path ending in ".") the lines of the section's own key and every key in it.
+_ATTRIBUTE_KEYS = {"compositor": "compositor", "ray": "ray.", "final_mode": "final", "camera": "camera.", "stf": "stf.",
                    "index_tstf": "tstf.index.", "gradient_tstf": "tstf.gradient.", "width": "image.width",
                    "height": "image.height", "background": "image.background"}
 
@@ -131,7 +133,8 @@ def _key_doc(key):
 def _document_attributes():
     keys = _native.scene_keys()
     for attribute, path in _ATTRIBUTE_KEYS.items():
-        lines = [key for key in keys if key["path"] == path or (path.endswith(".") and key["path"].startswith(path))]
+        lines = [key for key in keys
+                 if key["path"] == path or (path.endswith(".") and (key["path"].startswith(path) or key["path"] == path[:-1]))]
         getter = getattr(Scene, attribute)
         setattr(Scene, attribute, property(getter.fget, getter.fset, doc="\n".join(_key_doc(key) for key in lines)))
 

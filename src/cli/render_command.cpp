@@ -119,7 +119,9 @@ int runRender(const RenderOptions& options) {
     writeImage(image, options.output);
     warnAboutCutShortRays(options, renderer, *context);
     std::cout << "wrote " << options.output.string() << " (" << fitted.scene.width << "x" << fitted.scene.height
-              << ", " << toString(fitted.scene.compositor) << ", " << series.size() << " time-steps, " << milliseconds
+              << ", " << toString(fitted.scene.compositor)
+              << (fitted.scene.rayMode == kCompositeRay ? "" : ", " + toString(fitted.scene.rayMode) + " ray") << ", "
+              << series.size() << " time-steps, " << milliseconds
               << " ms incl. shader compilation; " << context->description() << ")\n";
     return kExitSuccess;
 }

@@ -2,6 +2,7 @@
 #include "scene_source.h"
 
 
+#include <algorithm>
 #include <cstdlib>
 
 #include <nlohmann/json.hpp>
@@ -96,6 +97,55 @@ std::optional<UnchangedTime> unchangedFromOptions(const Scene& scene, const Scen
     }
 }
 
+// One line per ray mode: its name and what it shows.
+std::string rayModeHelp() {
+    std::string help = "How the samples along a ray become the pixel (docs/ray-modes.md):";
+    for (const RayModeInfo& info : rayModes()) help += std::string("\n  ") + info.name + ": " + info.summary;
+    return help;
+}
+
+// The scene's ray mode with --ray and --ray-KEY applied, read by the scene reader as the same keys
+// in a file are, and checked beside the scene's compositor.
+void readRayOverrides(Scene& scene, const SceneOverrides& overrides) {
+    const std::string mode = overrides.rayMode.value_or(toString(scene.rayMode));
+    nlohmann::json ray = {{"mode", mode}};
+    std::vector<std::string> given;
+    for (const auto& [key, text] : overrides.rayOptions)
+        if (text) {
+            ray[key] = valueFromText(*text);
+            // A single number for a list.
+            const RayModeOption* option = rayModeInfo(*rayModeFromString(mode)).options.find(key);
+            if (option && option->kind == RayModeOptionKind::NumberList && !ray[key].is_array())
+                ray[key] = nlohmann::json::array({ray[key]});
+            given.push_back(key);
+        }
+    // The scene's own options of that mode stay, but a list that follows another's length goes where
+    // that one was given anew.
+    if (const RayModeInfo* info = overrides.rayMode ? nullptr : &rayModeInfo(scene.rayMode))
+        for (const RayModeOption& option : info->options) {
+            if (ray.contains(option.key)) continue;
+            if (option.countOf && ray.contains(option.countOf)) continue;
+            ray[option.key] = option.kind == RayModeOptionKind::Number
+                                  ? nlohmann::json(scene.rayOptions.number(option))
+                                  : nlohmann::json(scene.rayOptions.numbers(option));
+        }
+    const nlohmann::json snippet = {{"dataset", "-"}, {"ray", ray}};
+    Scene read;
+    try {
+        read = parseScene(snippet.dump(), "");
+    } catch (const InputError& error) {
+        std::string message = error.what();
+        std::string field = "--ray";
+        for (const std::string& key : given)
+            if (message.rfind("ray." + key, 0) == 0) field = "--ray-" + key;
+        if (const std::size_t colon = message.find(": "); message.rfind("ray", 0) == 0 && colon != std::string::npos)
+            message.erase(0, colon + 2);
+        throwInputError("", field, message);
+    }
+    scene.rayMode = read.rayMode;
+    scene.rayOptions = read.rayOptions;
+}
+
 std::string unchangedText(const std::optional<UnchangedTime>& unchanged) {
     std::string text = "unchanged places (--unchanged, --unchanged-opacity): ";
     if (!unchanged) return text + "time colours everywhere";
@@ -107,8 +157,22 @@ std::string unchangedText(const std::optional<UnchangedTime>& unchanged) {
 
 }  // namespace
 
+void addRayOverrides(CLI::App& command, SceneOverrides& overrides) {
+    command.add_option("--ray", overrides.rayMode, rayModeHelp())->check(CLI::IsMember(rayModeNames()));
+    for (const RayModeOption* option : rayModeOptionsOfAll()) {
+        std::optional<std::string>& value = overrides.rayOptions[option->key];
+        const std::string takers = listedNames(rayModesTaking(option->key));
+        command.add_option(std::string("--ray-") + option->key, value,
+                           std::string("Ray mode ") + takers + ": " + option->help +
+                               (option->kind == RayModeOptionKind::NumberList
+                                    ? " (1 to " + std::to_string(option->maxCount) + " numbers, comma-separated)"
+                                    : std::string(" (") + option->range.describe() + ")"));
+    }
+}
+
 void addSceneOverrides(CLI::App& command, SceneOverrides& overrides) {
     command.add_option("--tc", overrides.compositor, compositorHelp())->check(CLI::IsMember(temporalCompositorNames()));
+    addRayOverrides(command, overrides);
     command.add_option("--orientation", overrides.orientation,
                        "Which data axes show as right, up and toward the viewer: auto (from the file's axis meaning), "
                        "data (as stored), or three signed axes such as +x,+z,-y");
@@ -125,6 +189,26 @@ void addSceneOverrides(CLI::App& command, SceneOverrides& overrides) {
                        "it, 0 transparent");
 }
 
+std::optional<std::string> applyRayOverrides(Scene& scene, const Series& series, bool automaticScene,
+                                             const SceneOverrides& overrides) {
+    const bool rayGiven = overrides.rayMode || std::any_of(overrides.rayOptions.begin(), overrides.rayOptions.end(),
+                                                           [](const auto& option) { return option.second.has_value(); });
+    std::optional<std::string> explanation;
+    if (rayGiven) {
+        readRayOverrides(scene, overrides);
+        if (automaticScene) {
+            // The automatic STF follows the mode, as the automatic scene would have made it.
+            applyAutomaticRay(scene, automaticOpacityWindow(series), scene.rayMode);
+            explanation = "ray " + toString(scene.rayMode) + " (--ray): " + rayModeInfo(scene.rayMode).summary;
+        }
+    }
+    if (overrides.compositor || rayGiven)
+        if (const auto problem = rayModeProblem(scene))
+            throwInputError("", overrides.rayMode || !overrides.compositor ? "--ray" : "--tc",
+                            problem->key + ": " + problem->problem);
+    return explanation;
+}
+
 void applySceneOverrides(SceneAndSeries& opened, const SceneOverrides& overrides) {
     Scene& scene = opened.scene;
     if (overrides.compositor) {
@@ -136,6 +220,9 @@ void applySceneOverrides(SceneAndSeries& opened, const SceneOverrides& overrides
                                          (info.reads == CompositorReads::GradientTstf ? "; " + colours : ""));
         }
     }
+    const std::optional<std::string> rayLine =
+        applyRayOverrides(scene, opened.series, !opened.explanation.empty(), overrides);
+    if (rayLine) opened.explanation.push_back(*rayLine);
     if (overrides.unchanged || overrides.unchangedOpacity) {
         scene.compositorOptions.unchanged = unchangedFromOptions(scene, overrides);
         if (!opened.explanation.empty()) opened.explanation.push_back(unchangedText(scene.compositorOptions.unchanged));

@@ -6,6 +6,7 @@
 #include "commands.h"
 #include "image_size_text.h"
 #include "gpu_memory_option.h"
+#include "scene_source.h"
 #include "tstyles/core/errors.h"
 #include "viewer/viewer.h"
 
@@ -20,6 +21,7 @@ struct ViewOptions {
     std::string size = "1280x800";
     bool noVsync = false;
     std::optional<std::filesystem::path> shaderDirectory;
+    SceneOverrides overrides;  // --ray and --ray-KEY only
 };
 
 glm::ivec2 parseWindowSize(const std::string& text) {
@@ -40,6 +42,10 @@ int runView(const ViewOptions& options) {
     viewerOptions.windowSize = parseWindowSize(options.size);
     viewerOptions.shaderDirectory = options.shaderDirectory;
     viewerOptions.vsync = !options.noVsync;
+    viewerOptions.adjustFirstScene = [overrides = options.overrides](Scene& scene, const Series& series,
+                                                                     bool automaticScene) {
+        applyRayOverrides(scene, series, automaticScene, overrides);
+    };
     return viewer::runViewer(viewerOptions);
 }
 
@@ -58,6 +64,7 @@ Command addViewCommand(CLI::App& app) {
         ->capture_default_str();
     command->add_flag("--no-vsync", options->noVsync, "Do not wait for the display's refresh between frames");
     addShaderDirectoryOption(*command, options->shaderDirectory);
+    addRayOverrides(*command, options->overrides);
     addDatasetOptions(*command, options->dataset);
     addGpuMemoryOption(*command, options->gpuMemory);
     return {command, [options] { return runView(*options); }};

@@ -76,6 +76,12 @@ private:
     std::optional<std::string> duplicate_;
 };
 
+// Arrays and objects nested deeper than any document of ours needs (a scene is 6 deep) are refused
+// as they are met: the paths kept for naming a key (DuplicateKeyFinder) grow with the depth, and
+// 25 000 nested arrays took more than 8 GiB.
+constexpr int kMostJsonNesting = 100;
+struct NestedTooDeep {};
+
 }  // namespace
 
 nlohmann::json parseJsonText(const std::string& text, const std::filesystem::path& origin, JsonComments comments) {
@@ -83,13 +89,18 @@ nlohmann::json parseJsonText(const std::string& text, const std::filesystem::pat
         DuplicateKeyFinder finder;
         nlohmann::json document = nlohmann::json::parse(
             text,
-            [&finder](int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+            [&finder](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+                if (depth >= kMostJsonNesting) throw NestedTooDeep{};
                 return finder.onEvent(event, parsed);
             },
             true, comments == JsonComments::Allowed);
         if (finder.duplicate())
             throwInputError(origin, *finder.duplicate(), "given twice; a key may appear once in an object");
         return document;
+    } catch (const NestedTooDeep&) {
+        throwInputError(origin, "",
+                        "arrays and objects nested more than " + std::to_string(kMostJsonNesting) +
+                            " deep; no document read here needs so many");
     } catch (const nlohmann::json::parse_error& error) {
         throwInputError(origin, "", "not valid JSON: " + withoutExceptionId(error));
     } catch (const nlohmann::json::out_of_range& error) {

@@ -103,14 +103,23 @@ std::uint64_t dataSegmentBytes() {
 }
 #endif
 
-// The child's process settings: it dies with its parent, leaves no core file, keeps the parent's
-// stdout clean, leaves Ctrl-C to the parent, and allocates within its limit.
+// The child's process settings: it dies with its parent, leaves no core file, keeps the user's
+// terminal clean (what the libraries print, an assertion inside one, goes nowhere: the parent says
+// what went wrong), leaves Ctrl-C to the parent, and allocates within its limit.
 void prepareReaderChild(const IsolationLimits& limits, pid_t parent) {
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (::getppid() != parent) ::_exit(1);
     const rlimit noCore{0, 0};
     ::setrlimit(RLIMIT_CORE, &noCore);
-    ::dup2(STDERR_FILENO, STDOUT_FILENO);
+#ifndef TSTYLES_ADDRESS_SANITIZER
+    if (const int nowhere = ::open("/dev/null", O_WRONLY | O_CLOEXEC); nowhere >= 0) {
+        ::dup2(nowhere, STDOUT_FILENO);
+        ::dup2(nowhere, STDERR_FILENO);
+        ::close(nowhere);
+    }
+#else
+    ::dup2(STDERR_FILENO, STDOUT_FILENO);  // a sanitizer's report in the child still reaches the log
+#endif
     std::signal(SIGINT, SIG_IGN);
     std::signal(SIGPIPE, SIG_IGN);
 #ifndef TSTYLES_ADDRESS_SANITIZER

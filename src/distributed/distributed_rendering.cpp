@@ -4,9 +4,11 @@
 #include <chrono>
 #include <optional>
 
+#include "tstyles/core/errors.h"
 #include "tstyles/data/series_crop.h"
 #include "tstyles/distributed/fitting_over_blocks.h"
 #include "tstyles/distributed/sort_last_compositing.h"
+#include "tstyles/scene/ray_modes.h"
 
 namespace tstyles {
 namespace {
@@ -80,6 +82,12 @@ void DistributedRendering::keepBlock(const Series& block, Series outline, const 
 }
 
 Image DistributedRendering::render(const Scene& scene) {
+    const RayModeInfo& ray = rayModeInfo(scene.rayMode);
+    if (ray.merge != RayMerge::Over)
+        throw InputError("ray.mode \"" + std::string(ray.name) +
+                         "\": distributed rendering merges the processes' frames front to back (the over "
+                         "operator), which holds for the composite ray mode only; render this scene without "
+                         "--distributed");
     const View view = resolveView(scene.camera, framed_, wholeBounds_, scene.width, scene.height);
     const glm::dmat4 inverseViewProjection = glm::inverse(view.projectionMatrix * view.viewMatrix);
     Image local;

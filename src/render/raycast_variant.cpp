@@ -5,6 +5,7 @@
 #include <string>
 
 #include "tstyles/render/shader_contract.h"
+#include "tstyles/scene/ray_modes.h"
 #include "tstyles/scene/temporal_compositors.h"
 
 namespace tstyles {
@@ -112,6 +113,7 @@ RaycastVariant partOf(const RaycastVariant& whole, RaycastPart part) {
     variant.part = part;
     if (part == RaycastPart::Whole) return variant;
     variant.compositor = compositorNamed("temporal-mip");
+    variant.rayMode = kCompositeRay;
     variant.customCode.clear();
     variant.customCodeName.clear();
     variant.customReads = CompositorReads::IndexTstf;
@@ -149,7 +151,8 @@ ShaderDefines RaycastVariant::defines() const {
 }
 
 ShaderModules RaycastVariant::modules() const {
-    ShaderModules modules{{"time_step_walk.glsl", walkModule(walk), std::nullopt}};
+    ShaderModules modules{{"time_step_walk.glsl", walkModule(walk), std::nullopt},
+                          {"ray_mode.glsl", rayModeInfo(rayMode).shaderModule, std::nullopt}};
     if (compositor == kCustomCompositor) {
         modules.push_back({"compositor.glsl", "tc_custom.glsl", std::nullopt});
         modules.push_back({"custom_compositor_body.glsl", customCodeName, customCode});
@@ -160,7 +163,7 @@ ShaderModules RaycastVariant::modules() const {
 }
 
 std::string RaycastVariant::describe() const {
-    std::string text = toString(compositor) + ", " + walkName(walk);
+    std::string text = toString(compositor) + ", " + toString(rayMode) + ", " + walkName(walk);
     for (const auto& [name, value] : defines()) text += ", " + name + "=" + value;
     return text;
 }
@@ -225,6 +228,29 @@ std::vector<RaycastVariant> requestableRaycastVariants() {
                     }
                 }
             }
+        }
+    }
+    // The other ray modes: each with every compositor it takes, on each walk, styled and not (on even
+    // rectilinear grids); and with temporal-mip (and the average, which composites) on every walk x
+    // grid kind, masks and missing values on and off (the composite lines above cover the rest of the
+    // switches, which the modes do not touch).
+    const std::size_t compositeVariants = variants.size();
+    for (std::size_t line = 0; line < rayModes().size(); ++line) {
+        const RayMode mode(line);
+        if (mode == kCompositeRay) continue;
+        for (std::size_t i = 0; i < compositeVariants; ++i) {
+            RaycastVariant variant = variants[i];
+            const CompositorReads reads = variant.compositor == kCustomCompositor
+                                              ? variant.customReads
+                                              : compositorInfo(variant.compositor).reads;
+            if (rayModeInfo(mode).needsValue && reads == CompositorReads::Composited) continue;
+            const bool everyCompositor = variant.allAffine && !variant.masks && !variant.precomputedGradients &&
+                                         variant.packedValidity != PackedValidity::Shared;
+            const bool everyGrid = variant.compositor == compositorNamed("temporal-mip") ||
+                                   (variant.compositor == compositorNamed("temporal-average") && !rayModeInfo(mode).needsValue);
+            if (!everyCompositor && !everyGrid) continue;
+            variant.rayMode = mode;
+            variants.push_back(variant);
         }
     }
     // The parts `bench --stages` times, once each: they leave the compositor and styles out.

@@ -68,8 +68,9 @@ void Raycaster::draw(const RaycastVariant& variant, const RaycastParameters& par
     program.set(u::finalMode, finalModeCode(parameters.finalMode));
     program.set(u::changeRange, parameters.changeRange);
     program.set(u::stfVisibleRange, parameters.stfVisibleRange);
-    for (const CompositorOptionUniform& option : parameters.compositorOptions)
-        std::visit([&](const auto& value) { program.set(option.name, value); }, option.value);
+    for (const auto* options : {&parameters.compositorOptions, &parameters.rayOptions})
+        for (const ModuleOptionUniform& option : *options)
+            std::visit([&](const auto& value) { program.set(option.name, value); }, option.value);
     if (variant.unchangedTime) {
         program.set(u::unchangedBelow, parameters.unchangedBelow);
         program.set(u::unchangedTie, parameters.unchangedTie);

@@ -29,9 +29,9 @@ double styleFootprint(const View& view, int imageHeight, double finestSpacing) {
 
 // The uniforms of the options that `compositor` (the variant's) takes, with the scene's values: a
 // time-step pair checked against the series, a choice as its place.
-std::vector<CompositorOptionUniform> compositorOptionUniforms(TemporalCompositor compositor, const Scene& scene,
+std::vector<ModuleOptionUniform> compositorOptionUniforms(TemporalCompositor compositor, const Scene& scene,
                                                               std::size_t timeStepCount) {
-    std::vector<CompositorOptionUniform> uniforms;
+    std::vector<ModuleOptionUniform> uniforms;
     for (const CompositorOption& option : compositorInfo(compositor).options) {
         switch (option.kind) {
             case CompositorOptionKind::Number:
@@ -44,6 +44,32 @@ std::vector<CompositorOptionUniform> compositorOptionUniforms(TemporalCompositor
                 uniforms.push_back({option.uniform, int(scene.compositorOptions.choice(option))});
                 break;
         }
+    }
+    return uniforms;
+}
+
+// A list option's uniform is a vec4.
+constexpr bool rayModeListsFitVec4() {
+    for (const RayModeInfo& info : kRayModes)
+        for (const RayModeOption& option : info.options)
+            if (option.kind == RayModeOptionKind::NumberList && option.maxCount > 4) return false;
+    return true;
+}
+static_assert(rayModeListsFitVec4(), "a ray mode's list option holds more numbers than its vec4 uniform");
+
+// The uniforms of the options that `mode` (the variant's) takes, with the scene's values: a list of
+// numbers as a vec4, padded with the option's padding.
+std::vector<ModuleOptionUniform> rayOptionUniforms(RayMode mode, const Scene& scene) {
+    std::vector<ModuleOptionUniform> uniforms;
+    for (const RayModeOption& option : rayModeInfo(mode).options) {
+        if (option.kind == RayModeOptionKind::Number) {
+            uniforms.push_back({option.uniform, float(scene.rayOptions.number(option))});
+            continue;
+        }
+        glm::vec4 packed(float(option.padding));
+        const std::vector<double> numbers = scene.rayOptions.numbers(option);
+        for (std::size_t i = 0; i < numbers.size() && i < 4; ++i) packed[int(i)] = float(numbers[i]);
+        uniforms.push_back({option.uniform, packed});
     }
     return uniforms;
 }
@@ -137,6 +163,7 @@ void Renderer::draw(const Scene& scene, const View& view, const FrameOptions& op
 RaycastVariant Renderer::variantFor(const Scene& scene, const FrameOptions& options) {
     RaycastVariant variant;
     variant.compositor = scene.compositor;
+    variant.rayMode = scene.rayMode;
     if (const auto& custom = scene.compositorOptions.custom; scene.compositor == kCustomCompositor && custom) {
         variant.customCode = custom->glsl;
         variant.customCodeName = custom->ownFile ? custom->origin.string() : custom->origin.string() + ": compositor.glsl";
@@ -189,6 +216,7 @@ RaycastParameters Renderer::parametersFor(const Scene& scene, const View& view, 
     parameters.finalMode = scene.finalMode;
     parameters.changeRange = glm::vec2(float(scene.gradientTstf.rangeLow), float(scene.gradientTstf.rangeHigh));
     parameters.compositorOptions = compositorOptionUniforms(variant.compositor, scene, gpuSeries_->timeStepCount());
+    parameters.rayOptions = rayOptionUniforms(variant.rayMode, scene);
     parameters.stfVisibleRange = transferTables_.stfVisibleRange();
     if (variant.unchangedTime) {
         const auto& unchanged = *scene.compositorOptions.unchanged;
@@ -200,8 +228,12 @@ RaycastParameters Renderer::parametersFor(const Scene& scene, const View& view, 
             parameters.unchangedTie[at] =
                 float(unchanged.tieByDensity.size() > at ? unchanged.tieByDensity[at] : unchanged.tie);
         }
-        parameters.changedGain = float(unchanged.gain);
-        parameters.unchangedBoundary = float(unchanged.boundary);
+        // Where one sample makes the pixel (a projection) the gain, which thickens the changing part
+        // of a composited ray, and the fading of regions, which lets compositing see through them,
+        // have nothing to act on: the unchanged places show at their share of the STF's opacity.
+        const bool projection = rayModeInfo(variant.rayMode).pixelTakesStfOpacity;
+        parameters.changedGain = projection ? 1.0f : float(unchanged.gain);
+        parameters.unchangedBoundary = projection ? 0.0f : float(unchanged.boundary);
         parameters.unchangedOpacity = float(unchanged.opacity);
     }
     parameters.exposedSteps = options.soloTimeStep ? glm::ivec2(*options.soloTimeStep)

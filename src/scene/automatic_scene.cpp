@@ -41,6 +41,12 @@ double rawValue(const Series& series, double density) {
     return series.valueRange[0] + density * (series.valueRange[1] - series.valueRange[0]);
 }
 
+double maxOpacityOf(const std::vector<OpacityNode>& nodes) {
+    double peak = 0.0;
+    for (const OpacityNode& node : nodes) peak = std::max(peak, node.opacity);
+    return peak;
+}
+
 std::string windowText(const Series& series, const OpacityWindow& window) {
     std::string text = "opacity: 0 at " + number(rawValue(series, window.low)) + " (5th percentile) rising to " +
                        number(window.peak) + " at " + number(rawValue(series, window.high)) + " (99th percentile)";
@@ -75,7 +81,47 @@ std::string kindText(DataKind kind) {
     return "";
 }
 
+// Lengths of a microscope's scale: micrometres or nanometres, as the readers spell them.
+bool hasMicroscopeAxes(const Series& series) {
+    return std::any_of(series.axes.begin(), series.axes.end(),
+                       [](const SpatialAxis& axis) { return axis.unit == "um" || axis.unit == "nm"; });
+}
+
 }  // namespace
+
+std::pair<RayMode, std::string> automaticRayMode(const Series& series) {
+    const DataKind kind = dataKindOf(series);
+    const bool imagingAxes = kind == DataKind::Anatomical || hasMicroscopeAxes(series);
+    if (imagingAxes && series.valueRange[0] >= 0.0)
+        return {rayModeNamed("maximum"),
+                "ray: maximum (the brightest place along each ray): intensities that are never negative on " +
+                    std::string(kind == DataKind::Anatomical ? "anatomical" : "a microscope's") +
+                    " axes (MR, fMRI, PET, microscopy) have no surface for compositing to find"};
+    const std::string why = imagingAxes ? "values below 0 (CT's Hounsfield units: tissues with boundaries)"
+                                        : "no imaging axes (a simulation, a map)";
+    return {kCompositeRay, "ray: composite (front to back): " + why};
+}
+
+namespace {
+
+// A projection shows one sample per pixel: the unchanged places keep the STF's whole opacity (the
+// anatomy in grey, time in colour where it changes, as an fMRI overlay shows it); a composited ray
+// sees through their faint share to what changes.
+double automaticUnchangedOpacity(RayMode mode) {
+    return rayModeInfo(mode).pixelTakesStfOpacity ? 1.0 : kUnchangedOpacity;
+}
+
+}  // namespace
+
+void applyAutomaticRay(Scene& scene, const OpacityWindow& window, RayMode mode) {
+    const bool projection = rayModeInfo(mode).pixelTakesStfOpacity;
+    if (auto& unchanged = scene.compositorOptions.unchanged) unchanged->opacity = automaticUnchangedOpacity(mode);
+    OpacityWindow shown = window;
+    if (projection) shown.peak = 1.0;
+    scene.rayMode = mode;
+    scene.stf.curve.opacity = opacityNodes(shown);
+    scene.stf.curve.color = {ColorNode{0.0, glm::dvec3(1.0), projection ? "" : kNeutralStyle}};
+}
 
 DataKind dataKindOf(const Series& series) {
     bool geographic = false;
@@ -114,10 +160,15 @@ AutomaticScene automaticScene(const Series& series, const std::filesystem::path&
     if (kind == DataKind::Geographic)
         result.explanation.push_back("coast: a line where the surface's missing values (land) meet its data");
 
-    scene.stf.curve.opacity = opacityNodes(window);
-    scene.stf.curve.color = {ColorNode{0.0, glm::dvec3(1.0), kNeutralStyle}};
-    result.explanation.push_back(windowText(series, window));
-    result.explanation.push_back(std::string("shading: the lit-sphere style ") + kNeutralStyle + " on the STF");
+    const auto [rayMode, rayReason] = automaticRayMode(series);
+    applyAutomaticRay(scene, window, rayMode);
+    result.explanation.push_back(rayReason);
+    OpacityWindow shown = window;
+    shown.peak = maxOpacityOf(scene.stf.curve.opacity);
+    result.explanation.push_back(windowText(series, shown));
+    result.explanation.push_back(scene.stf.curve.color.front().style.empty()
+                                     ? std::string("shading: none (a projection has no surface to shade)")
+                                     : std::string("shading: the lit-sphere style ") + kNeutralStyle + " on the STF");
 
     scene.compositor = compositorNamed("temporal-mip");
     scene.finalMode = FinalMode::Modulate;
@@ -127,13 +178,17 @@ AutomaticScene automaticScene(const Series& series, const std::filesystem::path&
     result.explanation.push_back("time: " + timeColoursText(series.size()) +
                                  "; compositor temporal-mip (each place shows the time-step where it is most opaque)");
     scene.compositorOptions.unchanged = UnchangedTime{};
-    scene.compositorOptions.unchanged->opacity = kUnchangedOpacity;
-    result.explanation.push_back(
-        "unchanged places: no time colour and " + number(kUnchangedOpacity) +
-        " of the opacity on boundaries (a quarter of that inside regions of one value) where a place's values "
-        "change by no more than a threshold fitted to the data (a tenth of the typical largest change, or above the "
-        "noise); no time colour where two time-steps tie; what changes as opaque as the STF makes a ray through all "
-        "the data");
+    const std::string threshold =
+        " where a place's values change by no more than a threshold fitted to the data (a tenth of the typical "
+        "largest change, or above the noise); no time colour where two time-steps tie";
+    scene.compositorOptions.unchanged->opacity = automaticUnchangedOpacity(scene.rayMode);
+    if (rayModeInfo(scene.rayMode).pixelTakesStfOpacity) {
+        result.explanation.push_back("unchanged places: no time colour, the STF's grey" + threshold);
+    } else {
+        result.explanation.push_back("unchanged places: no time colour and " + number(kUnchangedOpacity) +
+                                     " of the opacity on boundaries (a quarter of that inside regions of one value)" +
+                                     threshold + "; what changes as opaque as the STF makes a ray through all the data");
+    }
     return result;
 }
 

@@ -2,6 +2,7 @@
 #include "tstyles/scene/doc_tables.h"
 
 #include "tstyles/core/errors.h"
+#include "tstyles/scene/ray_modes.h"
 #include "tstyles/scene/scene_keys.h"
 #include "tstyles/scene/temporal_compositors.h"
 
@@ -11,6 +12,7 @@ namespace {
 constexpr GeneratedDocTable kDocTables[] = {
     {"scene-format.md", kSceneKeyTableBegin, kSceneKeyTableEnd, sceneKeyTable},
     {"compositors.md", kCompositorTableBegin, kCompositorTableEnd, compositorDocTable},
+    {"ray-modes.md", kRayModeTableBegin, kRayModeTableEnd, rayModeDocTable},
 };
 
 // Where the table's text starts (after the begin marker's line) and ends (at the end marker).

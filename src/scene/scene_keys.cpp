@@ -86,6 +86,41 @@ std::vector<SceneKey> compositorOptionKeys() {
     return keys;
 }
 
+// The lines of "ray" and its modes' options, from the table of ray modes: "ray.attenuation", ...
+std::vector<SceneKey> rayModeKeys() {
+    std::vector<SceneKey> keys = {
+        {"ray", "string or object", "`\"composite\"`",
+         "how the samples along a ray become the pixel: a name, " + listedNames(quotedNames(rayModeNames()), "`") +
+             " (docs/ray-modes.md); or an object, below",
+         std::nullopt},
+        {"ray.mode", "string", "", "one of the names; with the options it takes", std::nullopt},
+    };
+    for (const RayModeOption* option : rayModeOptionsOfAll()) {
+        const std::string key = option->key;
+        const std::string takers = listedNames(rayModesTaking(key), "`") + " only: " + option->help;
+        if (option->kind == RayModeOptionKind::NumberList) {
+            keys.push_back({"ray." + key, "1 to " + std::to_string(option->maxCount) + " numbers",
+                            option->countOf ? "`" + formatNumber(option->defaultNumber) + "` for each of `" +
+                                                  option->countOf + "`"
+                                            : "`[" + formatNumber(option->defaultNumber) + "]`",
+                            "each " + option->range.describe() + "; " + takers, std::nullopt});
+            continue;
+        }
+        keys.push_back({"ray." + key, "number", "`" + formatNumber(option->defaultNumber) + "`", takers,
+                        NumericKey{false, option->range,
+                                   [option](const Scene& s) -> std::optional<double> {
+                                       if (!rayModeInfo(s.rayMode).options.find(option->key)) return std::nullopt;
+                                       return s.rayOptions.number(*option);
+                                   },
+                                   [option](Scene& s, double v) {
+                                       if (!rayModeInfo(s.rayMode).options.find(option->key)) return false;
+                                       s.rayOptions.values[option->key] = v;
+                                       return true;
+                                   }}});
+    }
+    return keys;
+}
+
 const std::vector<SceneKey>& keyTable() {
     static const std::vector<SceneKey> keys = [] {
         std::vector<SceneKey> table = {
@@ -313,6 +348,11 @@ const std::vector<SceneKey>& keyTable() {
         }) + 1;
         const std::vector<SceneKey> options = compositorOptionKeys();
         table.insert(afterName, options.begin(), options.end());
+        const auto afterCompositor = std::find_if(table.begin(), table.end(), [](const SceneKey& key) {
+            return key.path == "compositor.reads";
+        }) + 1;
+        const std::vector<SceneKey> ray = rayModeKeys();
+        table.insert(afterCompositor, ray.begin(), ray.end());
         return table;
     }();
     return keys;

@@ -260,7 +260,7 @@ Scene parseScene(const std::string& text, const std::filesystem::path& origin) {
     // Comments are allowed so that hand-written scenes can explain themselves.
     const json document = parseJsonText(text, origin, JsonComments::Allowed);
     const JsonField root(origin, document, "");
-    root.allowOnlyKeys({"dataset", "image", "camera", "raycast", "stf", "compositor", "tstf", "final", "orientation",
+    root.allowOnlyKeys({"dataset", "image", "camera", "raycast", "stf", "compositor", "ray", "tstf", "final", "orientation",
                         "aspect", "vertical_exaggeration", "exposure", "annotations", "animation"});
 
     Scene scene;
@@ -271,6 +271,8 @@ Scene parseScene(const std::string& text, const std::filesystem::path& origin) {
     if (const auto raycast = root.optionalMember("raycast")) readRaycast(*raycast, scene);
     if (const auto stf = root.optionalMember("stf")) readStf(*stf, scene);
     if (const auto compositor = root.optionalMember("compositor")) readCompositor(*compositor, origin, scene);
+    if (const auto ray = root.optionalMember("ray")) readRay(*ray, scene);
+    if (const auto problem = rayModeProblem(scene)) throwInputError(origin, problem->key, problem->problem);
     if (const auto tstf = root.optionalMember("tstf")) readTstf(*tstf, scene);
     if (const auto exposure = root.optionalMember("exposure")) readExposure(*exposure, scene.exposure);
     if (const auto finalMode = root.optionalMember("final"))

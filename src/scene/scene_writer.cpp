@@ -161,6 +161,7 @@ std::string sceneToJson(const Scene& scene, const std::filesystem::path& sceneFo
 
     root["stf"] = curveJson(scene.stf.curve, sceneFolder);
     root["compositor"] = compositorJson(scene, sceneFolder);
+    if (const auto ray = rayJson(scene)) root["ray"] = *ray;
 
     ordered_json& tstf = root["tstf"];
     tstf["index"] = curveJson(scene.indexTstf.curve, sceneFolder);

@@ -1,4 +1,5 @@
-// The compositor and camera sections: how samples are combined, and from where the data is seen.
+// The compositor and camera sections: how samples are combined (the ray mode's part is
+// ray_mode_section.cpp), and from where the data is seen.
 #include <algorithm>
 #include <optional>
 #include <string>
@@ -178,6 +179,7 @@ void drawCompositorSection(SidePanelState& state) {
     Scene& scene = state.scene;
     drawCompositorChoice(scene, state.series);
     drawCompositorOptions(scene, state.series);
+    drawRayModeSection(scene);
     if (auto chosen = nameCombo("final mode", finalModeNames(), toString(scene.finalMode)))
         scene.finalMode = *finalModeFromString(finalModeNames()[*chosen]);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("stf: STF alone; tstf: TSTF alone; modulate: STF times TSTF");

@@ -1,5 +1,5 @@
 // The panel on the left: the dataset (time-steps, grids, placement, value range, memory) with the
-// time slider and play button; the compositor settings (TC, step, termination, final mode,
+// time slider and play button; the compositor settings (TC, ray mode, step, termination, final mode,
 // gradient-TSTF range, background); the camera; and the temporal profile of the last pick.
 #pragma once
 
@@ -51,6 +51,8 @@ std::vector<std::string> compositorChoices(const Scene& scene);
 void drawDatasetSection(SidePanelState& state, UiAnchors& anchors);
 void drawTimeSection(SidePanelState& state, ViewerCommands& commands, UiAnchors& anchors);
 void drawCompositorSection(SidePanelState& state);
+// Inside the compositor section: the ray mode and its options (ray_mode_section.cpp).
+void drawRayModeSection(Scene& scene);
 void drawCameraSection(SidePanelState& state, ViewerCommands& commands);
 void drawProfileSection(SidePanelState& state);
 void drawAnnotationsSection(SidePanelState& state, UiAnchors& anchors);

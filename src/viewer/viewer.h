@@ -3,12 +3,15 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "tstyles/data/read_options.h"
+#include "tstyles/data/series.h"
+#include "tstyles/scene/scene.h"
 
 namespace tstyles::viewer {
 
@@ -26,6 +29,9 @@ struct ViewerOptions {
     glm::ivec2 windowSize{1280, 800};
     std::optional<std::filesystem::path> shaderDirectory;
     bool vsync = true;
+    // Applied to the first scene once it is fitted to its series (`view --ray`); `automaticScene`
+    // where the inputs were a dataset. May throw InputError.
+    std::function<void(Scene& scene, const Series& series, bool automaticScene)> adjustFirstScene;
 };
 
 // Opens the window and runs until it is closed or a script quits. Returns the exit code (0).

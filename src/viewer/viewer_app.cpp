@@ -20,8 +20,11 @@ namespace tstyles::viewer {
 namespace {
 
 ViewerDocument openInitialDocument(const ViewerOptions& options) {
-    if (options.inputs.empty()) return openDocument(defaultViewerInput(options.dataDirectory), nullptr);
-    return openDocument(options.inputs, nullptr, options.readOptions);
+    ViewerDocument document = options.inputs.empty()
+                                  ? openDocument(defaultViewerInput(options.dataDirectory), nullptr)
+                                  : openDocument(options.inputs, nullptr, options.readOptions);
+    if (options.adjustFirstScene) options.adjustFirstScene(document.scene, *document.series, !document.sceneFile);
+    return document;
 }
 
 std::optional<ScriptPlayer> loadScript(const ViewerOptions& options) {

@@ -184,6 +184,20 @@ case_truncated_file() {
     expect_error_line "$file" "" "is truncated or damaged at byte 192 of 200: a file meta element claims more bytes"
 }
 
+# Issue 54: a file whose RescaleSlope is 0 is refused by name in the header walk, before GDCM (which
+# asserts on it) sees it, and nothing the reader process' libraries print reaches the terminal.
+case_zero_rescale_slope() {
+    samples ct
+    "$PYTHON" -c "
+import sys, pydicom
+ds = pydicom.dcmread(sys.argv[1])
+ds.RescaleSlope = '0'
+ds.save_as(sys.argv[1])" "$S/ct/ct2.dcm" || fail "could not rewrite ct2.dcm"
+    run_tstyles -- info "$S/ct"
+    expect_exit 2
+    expect_error_line "$S/ct/ct2.dcm" "(0028,1053) RescaleSlope" "is 0: every pixel would read as the intercept"
+}
+
 case_different_size() {
     samples ct
     "$PYTHON" -c "

@@ -29,6 +29,17 @@ TEST(JsonText, ABadDocumentNamesTheFileAndTheLine) {
     EXPECT_NE(huge.find("1e999"), std::string::npos) << huge;
 }
 
+// Issue 54: 25 000 nested arrays took more than 8 GiB of address space. The depth is refused as it
+// is met; 100 levels (a scene needs 6) still read.
+TEST(JsonText, NestingBeyondAHundredLevelsIsRefused) {
+    auto nested = [](int depth) { return std::string(depth, '[') + std::string(depth, ']'); };
+    EXPECT_NO_THROW(parseJsonText(nested(100), "scene.json", JsonComments::Allowed));
+    EXPECT_EQ(parseError(nested(101), JsonComments::Allowed),
+              "suite.json: arrays and objects nested more than 100 deep; no document read here needs so many");
+    const std::string deep = "{\"stf\": " + nested(25000) + "}";
+    EXPECT_NE(parseError(deep, JsonComments::Allowed).find("nested more than 100 deep"), std::string::npos);
+}
+
 TEST(JsonText, CommentsAreReadOnlyWhereAllowed) {
     const std::string commented = "// a hand-written file\n{\"a\": /* one */ 1}";
     EXPECT_EQ(parseJsonText(commented, "scene.json", JsonComments::Allowed)["a"], 1);

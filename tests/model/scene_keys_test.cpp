@@ -22,7 +22,8 @@ namespace tstyles {
 namespace {
 
 // A scene whose every numeric key has a number: an orbit with a distance, a compositor that takes
-// a threshold and has fitted-by-hand unchanged places, a step, an exaggeration and a last step.
+// a threshold and has fitted-by-hand unchanged places, a ray mode with an attenuation, a step, an
+// exaggeration and a last step.
 nlohmann::json sceneWithEveryNumber() {
     return nlohmann::json::parse(R"({
         "dataset": "series.json",
@@ -31,6 +32,7 @@ nlohmann::json sceneWithEveryNumber() {
         "vertical_exaggeration": 2,
         "compositor": {"name": "first-arrival", "threshold": 0.5,
                        "unchanged": {"below": 0.1, "tie": 0.05, "gain": 2, "boundary": 1, "opacity": 0.3}},
+        "ray": {"mode": "attenuated-maximum", "attenuation": 2},
         "exposure": {"first": 1, "last": 3},
         "annotations": {"font_size": 20}
     })");
@@ -100,7 +102,7 @@ TEST(SceneKeys, EveryNumericKeyIsReadWithinItsRangeAndRefusedPastIt) {
         const std::filesystem::path folder = std::filesystem::current_path();
         EXPECT_EQ(numeric.get(parseScene(sceneToJson(scene, folder), folder / "scene.json")), inside);
     }
-    EXPECT_EQ(numericKeys, 18);
+    EXPECT_EQ(numericKeys, 19);
 }
 
 // A frame of a value track on a key of the table is set in the scene directly; it must be the scene

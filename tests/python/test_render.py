@@ -191,3 +191,27 @@ def test_the_attributes_are_documented_from_the_key_table():
     assert keys["image.width"]["allowed"] == "in [1, 16384]" and keys["image.width"]["whole"]
     assert tstyles.Scene.width.__doc__ == "image.width (integer, default 512): in [1, 16384]"
     assert "rays stop at this accumulated opacity" in keys["raycast.termination"]["allowed"]
+
+
+def test_the_ray_mode_is_an_attribute_that_renders(backend):
+    # Issue 50: scene.ray reads "composite" where the file leaves it out, takes a name or an object
+    # with the mode's options, refuses what the reader refuses, and renders another picture.
+    series = series_of(moving_blob_steps())
+    scene = tstyles.Scene(dict(SCENE, compositor="temporal-mip"))
+    assert scene.ray == "composite"
+    assert "ray.values" in tstyles.Scene.ray.__doc__ and "isosurface" in tstyles.Scene.ray.__doc__
+    with tstyles.Renderer(backend) as renderer:
+        composite = renderer.render(series, scene, dtype="float32")
+        scene.ray = "maximum"
+        assert scene.ray == "maximum"
+        maximum = renderer.render(series, scene, dtype="float32")
+        scene.ray = {"mode": "isosurface", "values": [0.3, 0.6]}
+        assert scene.ray == {"mode": "isosurface", "values": [0.3, 0.6], "opacities": [1.0, 1.0]}
+        isosurface = renderer.render(series, scene, dtype="float32")
+    assert not np.array_equal(composite, maximum) and not np.array_equal(maximum, isosurface)
+    with pytest.raises(ValueError) as error:
+        scene.ray = {"mode": "maximum", "values": [0.5]}
+    assert "maximum takes no values" in str(error.value)
+    with pytest.raises(ValueError) as error:
+        tstyles.Scene(dict(SCENE, compositor="temporal-average", ray="maximum"))
+    assert "ray.mode: maximum compares a value along the ray" in str(error.value)

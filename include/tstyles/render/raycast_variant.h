@@ -1,5 +1,5 @@
 // Which raycasting program a frame needs: its temporal compositor module, its walk over the
-// time-steps and its compile-time switches. The one place where those choices become #defines and
+// time-steps, its ray mode module and its compile-time switches. The one place where those choices become #defines and
 // modules, where each switch has its default, and the program cache's key.
 #pragma once
 
@@ -32,6 +32,7 @@ enum class RaycastPart {
 
 struct RaycastVariant {
     TemporalCompositor compositor = compositorNamed("temporal-mip");
+    RayMode rayMode = kCompositeRay;
     // kCustomCompositor: the scene's code, its name in compiler messages, what reads it.
     std::string customCode;
     std::string customCodeName;
@@ -77,7 +78,7 @@ struct RaycastVariant {
 
     // Every switch of shaders/variant_switches.glsl.
     ShaderDefines defines() const;
-    // What "compositor.glsl" and "time_step_walk.glsl" stand for.
+    // What "compositor.glsl", "time_step_walk.glsl" and "ray_mode.glsl" stand for.
     ShaderModules modules() const;
     // "temporal-average, ray list, styled, masks, ..." for messages.
     std::string describe() const;
@@ -100,8 +101,9 @@ RaycastVariant partOf(const RaycastVariant& whole, RaycastPart part);
 // Every variant a frame can ask for, up to the array capacity (which changes array sizes only):
 // every compositor x walk x grid kind x styled, with masks and statistics on and off (the custom
 // compositor with an example body that reads each input, for both of its readers), and the parts
-// of each (partOf). The build
-// validates each of them (tools/validate_raycast_variants.cpp).
+// of each (partOf); every other ray mode with every compositor it takes (on each walk, styled and
+// not), and on every walk x grid kind (with masks, missing values and the group masks on and off).
+// The build validates each of them (tools/validate_raycast_variants.cpp).
 std::vector<RaycastVariant> requestableRaycastVariants();
 
 }  // namespace tstyles

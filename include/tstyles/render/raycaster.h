@@ -19,11 +19,11 @@
 
 namespace tstyles {
 
-// A compositor option's uniform (CompositorOption::uniform, declared by the compositor's module) and
-// its value, of the GLSL type of the option's kind.
-struct CompositorOptionUniform {
+// A compositor's or a ray mode's option's uniform (CompositorOption::uniform, RayModeOption::uniform,
+// declared by the module) and its value, of the GLSL type of the option's kind.
+struct ModuleOptionUniform {
     const char* name;
-    std::variant<float, int, glm::ivec2> value;
+    std::variant<float, int, glm::ivec2, glm::vec4> value;
 };
 
 // The uniforms of a raycasting pass; which program it needs is its RaycastVariant.
@@ -39,7 +39,9 @@ struct RaycastParameters {
     FinalMode finalMode = FinalMode::Modulate;
     glm::vec2 changeRange{0.0f, 1.0f};
     // The options of the variant's compositor (those its table line takes), by their uniforms.
-    std::vector<CompositorOptionUniform> compositorOptions;
+    std::vector<ModuleOptionUniform> compositorOptions;
+    // The options of the variant's ray mode, by their uniforms.
+    std::vector<ModuleOptionUniform> rayOptions;
     // visibleDensityRange of the STF's table: time-steps outside it are transparent.
     glm::vec2 stfVisibleRange{0.0f, 1.0f};
     // CompositorOptions::unchanged (RaycastVariant::unchangedTime): the change up to which a place

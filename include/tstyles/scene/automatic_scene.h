@@ -33,6 +33,16 @@ AutomaticScene automaticScene(const Series& series, const std::filesystem::path&
 // each process of a distributed render reads only its block and the window is taken from them all.
 AutomaticScene automaticScene(const Series& series, const std::filesystem::path& dataset, const OpacityWindow& window);
 
+// The ray mode of the automatic scene: maximum for intensity images (values never negative on
+// anatomical axes or a microscope's: MR, fMRI, PET, fluorescence microscopy), where compositing the
+// whole volume gives a fog with no boundary in it; composite for everything else (CT, whose
+// Hounsfield units go negative, simulations, maps). With the reason in words.
+std::pair<RayMode, std::string> automaticRayMode(const Series& series);
+// The automatic STF for a ray mode, with the mode: the window's ramp, rising to its peak where the
+// pixel composites a ray through all the data, to 1 and without the shading style where it takes
+// one sample's opacity (maximum, minimum, average: a projection has no surface to shade).
+void applyAutomaticRay(Scene& scene, const OpacityWindow& window, RayMode mode);
+
 // A scene fitted to a series: the series turned and scaled into the display frame the scene asks
 // for, the automatic gradient range filled in, and the bounds an automatic camera frames.
 struct SceneOnSeries {

@@ -14,6 +14,7 @@
 #include "tstyles/scene/animation.h"
 #include "tstyles/scene/annotations.h"
 #include "tstyles/scene/camera.h"
+#include "tstyles/scene/ray_modes.h"
 #include "tstyles/scene/temporal_compositors.h"
 #include "tstyles/scene/transfer_function.h"
 
@@ -96,6 +97,20 @@ private:
     }
 };
 
+// The settings of the scene's ray mode: the table's options (ray_modes.h) by key, a value of the
+// option's kind (a number, a list of numbers), or none for its default. They stay when the mode
+// changes, as the compositor's do.
+using RayModeOptionValue = std::variant<double, std::vector<double>>;
+struct RayModeOptions {
+    std::map<std::string, RayModeOptionValue, std::less<>> values;
+    // Equal when every option of the table has the same value, given or by default.
+    bool operator==(const RayModeOptions& other) const;
+    // A Number option's value; a NumberList option's entries (its defaults: one defaultNumber, or
+    // as many as the list of `countOf` has).
+    double number(const RayModeOption& option) const;
+    std::vector<double> numbers(const RayModeOption& option) const;
+};
+
 // What the compositor returns: STF alone, TSTF alone, or the STF modulated by the TSTF.
 enum class FinalMode { Stf, Tstf, Modulate };
 
@@ -143,6 +158,8 @@ struct Scene {
     Exposure exposure;
     TemporalCompositor compositor;  // the table's first, temporal-mip
     CompositorOptions compositorOptions;
+    RayMode rayMode;  // the table's first, composite
+    RayModeOptions rayOptions;
     IndexTstf indexTstf = defaultIndexTstf();
     GradientTstf gradientTstf = defaultGradientTstf();
     FinalMode finalMode = FinalMode::Modulate;
@@ -150,6 +167,15 @@ struct Scene {
     Animation animation;
     bool operator==(const Scene&) const = default;
 };
+
+// What is wrong with the scene's ray mode beside its compositor, as "KEY: problem" (a maximum of a
+// compositor that has no value, an iso-value below 0 for one that shows densities); none where
+// they go together.
+struct RayModeProblem {
+    std::string key;  // "ray.mode", "ray.values[1]"
+    std::string problem;
+};
+std::optional<RayModeProblem> rayModeProblem(const Scene& scene);
 
 // Fails, with an InputError naming the key of `sceneFile`, where a setting of the scene names a
 // time-step that a series of `stepCount` lacks: the exposure, a time-step option of its compositor.

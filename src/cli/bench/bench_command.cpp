@@ -46,6 +46,7 @@ struct BenchOptions {
     // The scaling run instead of the matrix: super-ellipsoid series of these lengths.
     std::vector<int> scalingSteps;
     bool styled = false;
+    std::vector<std::string> rayModes{"composite"};  // --ray: each compositor with each mode
     bool distributed = false;  // sort-last over the MPI processes (bench_distributed.h)
     bool stages = false;       // also time the passes and the raycasting pass' parts (PassClock)
     GpuMemoryOption gpuMemory;
@@ -56,8 +57,16 @@ struct BenchCase {
     std::string dataset;
     std::string scene;  // the bundled scene that supplies camera and transfer functions
     TemporalCompositor compositor;
+    RayMode rayMode;
     glm::ivec2 size;
 };
+
+// The compositor, and the ray mode where it is not the default: "temporal-mip", "temporal-mip+maximum".
+std::string methodName(const BenchCase& benchCase) {
+    std::string name = toString(benchCase.compositor);
+    if (benchCase.rayMode != kCompositeRay) name += "+" + toString(benchCase.rayMode);
+    return name;
+}
 
 // Where a case's device time goes (--stages): medians of the pass clocks (render/pass_clock.h) over
 // the timed frames.
@@ -114,6 +123,7 @@ BenchResult runCase(Renderer& renderer, const Series& series, const BenchCase& b
                     const BenchOptions& options) {
     Scene scene = loadScene(bundledDataDirectory() / "scenes" / (benchCase.scene + ".json"));
     scene.compositor = benchCase.compositor;
+    scene.rayMode = benchCase.rayMode;
     FrameOptions frame;
     frame.size = benchCase.size;
     // Every frame turns the camera a little, as a user orbiting would, so no frame repeats.
@@ -177,6 +187,13 @@ BenchResult runCase(Renderer& renderer, const Series& series, const BenchCase& b
     return result;
 }
 
+// The width of the table's compositor column: its longest entry and two spaces.
+int methodColumnWidth(const std::vector<BenchResult>& results) {
+    std::size_t width = std::string("compositor").size();
+    for (const BenchResult& result : results) width = std::max(width, methodName(result.benchCase).size());
+    return int(width) + 2;
+}
+
 std::string mebibytes(std::size_t bytes) {
     std::ostringstream text;
     text << std::fixed << std::setprecision(1) << double(bytes) / (1024.0 * 1024.0);
@@ -187,15 +204,16 @@ void printTable(const std::vector<BenchResult>& results, const std::string& devi
     std::cout << "device: " << device << "\n";
     const bool styled = results.front().benchCase.scene.find("styled") != std::string::npos;
     std::cout << "scenes: data/scenes/<dataset's prefix>" << (styled ? "styled-" : "") << "*.json\n";
-    std::cout << std::left << std::setw(28) << "dataset" << std::setw(21) << "compositor" << std::right
+    const int method = methodColumnWidth(results);
+    std::cout << std::left << std::setw(28) << "dataset" << std::setw(method) << "compositor" << std::right
               << std::setw(6) << "n" << std::setw(11) << "size" << std::setw(11) << "median ms" << std::setw(9)
               << "max ms" << std::setw(9) << "cpu ms" << std::setw(10) << "rays" << std::setw(13) << "samples" << std::setw(13)
               << "fetches" << std::setw(11) << "tex MiB";
     if (results.front().naiveMedianMs) std::cout << std::setw(11) << "naive ms" << std::setw(10) << "speed-up";
     std::cout << "\n";
     for (const auto& r : results) {
-        std::cout << std::left << std::setw(28) << r.benchCase.dataset << std::setw(21)
-                  << toString(r.benchCase.compositor) << std::right << std::setw(6) << r.timeSteps << std::setw(11)
+        std::cout << std::left << std::setw(28) << r.benchCase.dataset << std::setw(method)
+                  << methodName(r.benchCase) << std::right << std::setw(6) << r.timeSteps << std::setw(11)
                   << widthByHeightText(r.benchCase.size) << std::setw(11) << std::fixed << std::setprecision(1) << r.medianMs
                   << std::setw(9) << r.maxMs << std::setw(9) << r.medianCpuMs << std::setw(10) << r.statistics.rays << std::setw(13)
                   << r.statistics.samples << std::setw(13) << r.statistics.fetches << std::setw(11)
@@ -211,14 +229,15 @@ void printTable(const std::vector<BenchResult>& results, const std::string& devi
 void printStages(const std::vector<BenchResult>& results) {
     std::cout << "\nms per pass and part (medians; timer queries on a GPU, glFinish and the wall clock on a CPU "
                  "rasterizer):\n";
-    std::cout << std::left << std::setw(28) << "dataset" << std::setw(21) << "compositor" << std::right << std::setw(11)
+    const int method = methodColumnWidth(results);
+    std::cout << std::left << std::setw(28) << "dataset" << std::setw(method) << "compositor" << std::right << std::setw(11)
               << "size" << std::setw(12) << "entry/exit" << std::setw(11) << "raycast" << std::setw(11) << "ray setup"
               << std::setw(9) << "march" << std::setw(11) << "sampling" << std::setw(12) << "march alone"
               << std::setw(15) << "march samples" << "\n";
     for (const auto& r : results) {
         const StageTimes& stages = *r.stages;
-        std::cout << std::left << std::setw(28) << r.benchCase.dataset << std::setw(21)
-                  << toString(r.benchCase.compositor) << std::right << std::setw(11)
+        std::cout << std::left << std::setw(28) << r.benchCase.dataset << std::setw(method)
+                  << methodName(r.benchCase) << std::right << std::setw(11)
                   << widthByHeightText(r.benchCase.size)
                   << std::fixed << std::setprecision(1) << std::setw(12) << stages.entryExitMs << std::setw(11)
                   << stages.raycastMs << std::setw(11) << stages.raySetupMs << std::setw(9)
@@ -234,7 +253,8 @@ nlohmann::json toJson(const std::vector<BenchResult>& results, const std::string
     nlohmann::json cases = nlohmann::json::array();
     for (const auto& r : results)
         cases.push_back({{"dataset", r.benchCase.dataset}, {"scene", r.benchCase.scene},
-                         {"compositor", toString(r.benchCase.compositor)}, {"time_steps", r.timeSteps},
+                         {"compositor", toString(r.benchCase.compositor)},
+                         {"ray", toString(r.benchCase.rayMode)}, {"time_steps", r.timeSteps},
                          {"width", r.benchCase.size.x}, {"height", r.benchCase.size.y},
                          {"median_ms", r.medianMs}, {"max_ms", r.maxMs}, {"median_cpu_ms", r.medianCpuMs}, {"rays", r.statistics.rays},
                          {"samples", r.statistics.samples}, {"fetches", r.statistics.fetches},
@@ -256,19 +276,34 @@ nlohmann::json toJson(const std::vector<BenchResult>& results, const std::string
     return {{"device", device}, {"cases", cases}};
 }
 
-// Every compositor at every size on one series.
+// Whether the compositor goes with the ray mode (rayModeProblem); a pair that does not is left
+// out of the matrix with a note.
+bool goTogether(TemporalCompositor compositor, RayMode mode) {
+    Scene scene;
+    scene.compositor = compositor;
+    scene.rayMode = mode;
+    const auto problem = rayModeProblem(scene);
+    if (problem) std::cerr << "note: skipping " << toString(compositor) << " with ray " << toString(mode) << ": " << problem->problem << "\n";
+    return !problem;
+}
+
+// Every compositor with every ray mode at every size on one series.
 void runSeries(Renderer& renderer, const Series& series, const BenchDataset& dataset, const BenchOptions& options,
                std::vector<BenchResult>& results) {
     const std::vector<std::string> storageChanges =
         residencyChanges(series, uploadWithinGpuMemory(renderer, series, options.gpuMemory, DatasetOptions{}));
     for (auto compositor : kBenchCompositors)
-        for (glm::ivec2 size : options.sizes) {
-            results.push_back(runCase(renderer, series,
-                                      {dataset.folder, benchSceneFor(dataset, compositor, options.styled),
-                                       compositor, size},
-                                      options));
-            results.back().gpuStorageChanges = storageChanges;
-            std::cerr << "." << std::flush;
+        for (const std::string& modeName : options.rayModes) {
+            const RayMode mode = *rayModeFromString(modeName);
+            if (!goTogether(compositor, mode)) continue;
+            for (glm::ivec2 size : options.sizes) {
+                results.push_back(runCase(renderer, series,
+                                          {dataset.folder, benchSceneFor(dataset, compositor, options.styled),
+                                           compositor, mode, size},
+                                          options));
+                results.back().gpuStorageChanges = storageChanges;
+                std::cerr << "." << std::flush;
+            }
         }
 }
 
@@ -297,6 +332,10 @@ int runBench(const BenchOptions& options) {
         if (options.baseline || options.styled || options.stages || !options.scalingSteps.empty())
             throwInputError("", "--distributed",
                             "measures the flat matrix; it takes neither --baseline, --styled, --stages nor --scaling");
+        if (options.rayModes != std::vector<std::string>{"composite"})
+            throwInputError("", "--distributed",
+                            "merges the processes' frames front to back, which holds for the composite ray mode only; "
+                            "measure other ray modes without --distributed");
         return runDistributedBench(
             {options.datasets, options.sizes, options.frames, options.warmup, options.json, options.gpuMemory, options.gl});
     }
@@ -340,6 +379,10 @@ Command addBenchCommand(CLI::App& app) {
                         "numbers of time-steps, partial and full overlap (e.g. --scaling 10 20 40 80 160)")
         ->check(CLI::Range(2, 1000));
     command->add_flag("--styled", options->styled, "Measure the Figure 4 scenes with lit-sphere styles");
+    command->add_option("--ray", options->rayModes,
+                        "Ray modes to measure each compositor with (docs/ray-modes.md; default: composite); pairs "
+                        "that do not go together are left out with a note")
+        ->check(CLI::IsMember(rayModeNames()));
     command->add_flag("--stages", options->stages,
                       "Also time each frame's passes (entry/exit, raycasting; timer queries on a GPU, glFinish and the "
                       "wall clock on llvmpipe) and the raycasting pass' parts (ray setup, march, sampling) and print "

@@ -111,8 +111,12 @@ DicomFrame readFrame(const FrameSources& sources, std::size_t index) {
     if (auto spacing = frameNumbers(sources, gdcm::Tag(0x0028, 0x9110), gdcm::Tag(0x0028, 0x0030), "PixelSpacing", 2))
         frame.pixelSpacing = std::array<double, 2>{(*spacing)[0], (*spacing)[1]};
     const gdcm::Tag transformation(0x0028, 0x9145);
-    frame.rescaleSlope = firstOf(frameNumbers(sources, transformation, gdcm::Tag(0x0028, 0x1053), "RescaleSlope", 1))
-                             .value_or(1.0);
+    const gdcm::Tag slopeTag(0x0028, 0x1053);
+    frame.rescaleSlope = firstOf(frameNumbers(sources, transformation, slopeTag, "RescaleSlope", 1)).value_or(1.0);
+    // A slope of 0 would read every pixel as the intercept (and trips an assertion inside GDCM).
+    if (frame.rescaleSlope == 0.0)
+        throwInputError(sources.context.file, dicomTagName(slopeTag, "RescaleSlope"),
+                        "is 0: every pixel would read as the intercept; the stored values need a slope other than 0");
     frame.rescaleIntercept =
         firstOf(frameNumbers(sources, transformation, gdcm::Tag(0x0028, 0x1052), "RescaleIntercept", 1)).value_or(0.0);
     frame.temporalPosition = frameBinary(sources, gdcm::Tag(0x0020, 0x9111), gdcm::Tag(0x0020, 0x9128),
