@@ -184,8 +184,9 @@ case_truncated_file() {
     expect_error_line "$file" "" "is truncated or damaged at byte 192 of 200: a file meta element claims more bytes"
 }
 
-# Issue 54: a file whose RescaleSlope is 0 is refused by name in the header walk, before GDCM (which
-# asserts on it) sees it, and nothing the reader process' libraries print reaches the terminal.
+# Issue 54: a file whose RescaleSlope is 0, or missing beside a RescaleIntercept, is refused by name in
+# the header walk, before GDCM (which asserts on it) decodes it; expect_error_line's one line on
+# stderr shows that nothing the reader process' libraries print reaches the terminal.
 case_zero_rescale_slope() {
     samples ct
     "$PYTHON" -c "
@@ -196,6 +197,15 @@ ds.save_as(sys.argv[1])" "$S/ct/ct2.dcm" || fail "could not rewrite ct2.dcm"
     run_tstyles -- info "$S/ct"
     expect_exit 2
     expect_error_line "$S/ct/ct2.dcm" "(0028,1053) RescaleSlope" "is 0: every pixel would read as the intercept"
+    # The reproducer's shape: an intercept without its slope (GDCM asserts on it while decoding).
+    "$PYTHON" -c "
+import sys, pydicom
+ds = pydicom.dcmread(sys.argv[1])
+del ds.RescaleSlope
+ds.save_as(sys.argv[1])" "$S/ct/ct2.dcm" || fail "could not rewrite ct2.dcm"
+    run_tstyles -- info "$S/ct"
+    expect_exit 2
+    expect_error_line "$S/ct/ct2.dcm" "(0028,1053) RescaleSlope" "is missing, though RescaleIntercept"
 }
 
 case_different_size() {

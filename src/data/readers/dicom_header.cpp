@@ -112,13 +112,20 @@ DicomFrame readFrame(const FrameSources& sources, std::size_t index) {
         frame.pixelSpacing = std::array<double, 2>{(*spacing)[0], (*spacing)[1]};
     const gdcm::Tag transformation(0x0028, 0x9145);
     const gdcm::Tag slopeTag(0x0028, 0x1053);
-    frame.rescaleSlope = firstOf(frameNumbers(sources, transformation, slopeTag, "RescaleSlope", 1)).value_or(1.0);
-    // A slope of 0 would read every pixel as the intercept (and trips an assertion inside GDCM).
-    if (frame.rescaleSlope == 0.0)
+    const gdcm::Tag interceptTag(0x0028, 0x1052);
+    const std::optional<double> slope = firstOf(frameNumbers(sources, transformation, slopeTag, "RescaleSlope", 1));
+    const std::optional<double> intercept =
+        firstOf(frameNumbers(sources, transformation, interceptTag, "RescaleIntercept", 1));
+    // The two come together (type 1C); GDCM asserts on an intercept without a slope, and a slope of 0
+    // would read every pixel as the intercept.
+    if (intercept && !slope)
+        throwInputError(sources.context.file, dicomTagName(slopeTag, "RescaleSlope"),
+                        "is missing, though RescaleIntercept (0028,1052) is given: the two come together");
+    if (slope && *slope == 0.0)
         throwInputError(sources.context.file, dicomTagName(slopeTag, "RescaleSlope"),
                         "is 0: every pixel would read as the intercept; the stored values need a slope other than 0");
-    frame.rescaleIntercept =
-        firstOf(frameNumbers(sources, transformation, gdcm::Tag(0x0028, 0x1052), "RescaleIntercept", 1)).value_or(0.0);
+    frame.rescaleSlope = slope.value_or(1.0);
+    frame.rescaleIntercept = intercept.value_or(0.0);
     frame.temporalPosition = frameBinary(sources, gdcm::Tag(0x0020, 0x9111), gdcm::Tag(0x0020, 0x9128),
                                          "TemporalPositionIndex", dicomUnsignedLong);
     if (!frame.temporalPosition)
