@@ -22,7 +22,9 @@ constexpr glm::vec4 kLineText{1.0f, 1.0f, 1.0f, 1.0f};  // a title or caption
 constexpr glm::vec4 kCoastInk{0.85f, 0.85f, 0.8f, 0.9f};
 
 std::string captionText(const Scene& scene, glm::ivec2 steps, const std::vector<std::string>& labels) {
+    // "temporal-mip · maximum · 40 time-steps": the ray mode where it is not the paper's compositing.
     std::string text = toString(scene.compositor) + " \u00b7 ";
+    if (scene.rayMode != kCompositeRay) text += toString(scene.rayMode) + " \u00b7 ";
     const int count = steps.y - steps.x + 1;
     text += count == 1 ? "time-step " + std::to_string(steps.x) : std::to_string(count) + " time-steps";
     if (labels[std::size_t(steps.x)].rfind("time-step ", 0) != 0)

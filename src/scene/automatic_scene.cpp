@@ -21,6 +21,8 @@ constexpr const char* kNeutralStyle = "matte-white";
 // Unchanged places keep this share of the STF's opacity on their boundaries (a quarter of it inside
 // regions of one value): a faint ghost of the data's structure around what changes.
 constexpr double kUnchangedOpacity = 0.35;
+// How far below zero an intensity image's values may reach, as a share of its largest: noise.
+constexpr double kIntensityNoiseBelowZero = 0.02;
 
 std::string number(double value) {
     std::ostringstream text;
@@ -41,15 +43,10 @@ double rawValue(const Series& series, double density) {
     return series.valueRange[0] + density * (series.valueRange[1] - series.valueRange[0]);
 }
 
-double maxOpacityOf(const std::vector<OpacityNode>& nodes) {
-    double peak = 0.0;
-    for (const OpacityNode& node : nodes) peak = std::max(peak, node.opacity);
-    return peak;
-}
-
 std::string windowText(const Series& series, const OpacityWindow& window) {
     std::string text = "opacity: 0 at " + number(rawValue(series, window.low)) + " (5th percentile) rising to " +
-                       number(window.peak) + " at " + number(rawValue(series, window.high)) + " (99th percentile)";
+                       number(window.peak) + " at " + number(rawValue(series, window.high)) +
+                       (window.high == 1.0 ? " (the largest value)" : " (99th percentile)");
     if (window.background)
         text += "; background " + number(rawValue(series, (*window.background)[0])) + " .. " +
                 number(rawValue(series, (*window.background)[1])) + " (" +
@@ -92,12 +89,15 @@ bool hasMicroscopeAxes(const Series& series) {
 std::pair<RayMode, std::string> automaticRayMode(const Series& series) {
     const DataKind kind = dataKindOf(series);
     const bool imagingAxes = kind == DataKind::Anatomical || hasMicroscopeAxes(series);
-    if (imagingAxes && series.valueRange[0] >= 0.0)
+    // Intensities are not below zero; noise around a zero background (or its interpolation) may dip
+    // a little under it, while CT's Hounsfield units reach -1000 against a few thousand.
+    const bool intensities = series.valueRange[0] >= -kIntensityNoiseBelowZero * std::abs(series.valueRange[1]);
+    if (imagingAxes && intensities)
         return {rayModeNamed("maximum"),
-                "ray: maximum (the brightest place along each ray): intensities that are never negative on " +
+                "ray: maximum (the brightest place along each ray): intensities that are not below zero on " +
                     std::string(kind == DataKind::Anatomical ? "anatomical" : "a microscope's") +
                     " axes (MR, fMRI, PET, microscopy) have no surface for compositing to find"};
-    const std::string why = imagingAxes ? "values below 0 (CT's Hounsfield units: tissues with boundaries)"
+    const std::string why = imagingAxes ? "values well below 0 (CT's Hounsfield units: tissues with boundaries)"
                                         : "no imaging axes (a simulation, a map)";
     return {kCompositeRay, "ray: composite (front to back): " + why};
 }
@@ -111,13 +111,24 @@ double automaticUnchangedOpacity(RayMode mode) {
     return rayModeInfo(mode).pixelTakesStfOpacity ? 1.0 : kUnchangedOpacity;
 }
 
+// The window a mode's STF ramps over: where one sample makes the pixel (a projection), up to an
+// opacity of 1, and up to the largest value instead of the 99th percentile: the largest values
+// along the rays lie near the top of the data's range, and would all be white.
+OpacityWindow automaticRayWindow(const OpacityWindow& window, RayMode mode) {
+    OpacityWindow shown = window;
+    if (rayModeInfo(mode).pixelTakesStfOpacity) {
+        shown.peak = 1.0;
+        shown.high = 1.0;
+    }
+    return shown;
+}
+
 }  // namespace
 
 void applyAutomaticRay(Scene& scene, const OpacityWindow& window, RayMode mode) {
     const bool projection = rayModeInfo(mode).pixelTakesStfOpacity;
     if (auto& unchanged = scene.compositorOptions.unchanged) unchanged->opacity = automaticUnchangedOpacity(mode);
-    OpacityWindow shown = window;
-    if (projection) shown.peak = 1.0;
+    const OpacityWindow shown = automaticRayWindow(window, mode);
     scene.rayMode = mode;
     scene.stf.curve.opacity = opacityNodes(shown);
     scene.stf.curve.color = {ColorNode{0.0, glm::dvec3(1.0), projection ? "" : kNeutralStyle}};
@@ -163,9 +174,7 @@ AutomaticScene automaticScene(const Series& series, const std::filesystem::path&
     const auto [rayMode, rayReason] = automaticRayMode(series);
     applyAutomaticRay(scene, window, rayMode);
     result.explanation.push_back(rayReason);
-    OpacityWindow shown = window;
-    shown.peak = maxOpacityOf(scene.stf.curve.opacity);
-    result.explanation.push_back(windowText(series, shown));
+    result.explanation.push_back(windowText(series, automaticRayWindow(window, rayMode)));
     result.explanation.push_back(scene.stf.curve.color.front().style.empty()
                                      ? std::string("shading: none (a projection has no surface to shade)")
                                      : std::string("shading: the lit-sphere style ") + kNeutralStyle + " on the STF");

@@ -1,6 +1,7 @@
 // The automatic scene's choices on realistic files (tests/data/realistic_datasets.h), read through
 // the readers: the opacity window from the histogram, the camera by data kind, and a scene that
 // survives being written and read back.
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -48,6 +49,46 @@ TEST(AutomaticScene, CtAirIsTransparentAndBoneOpaqueFromTheFront) {
     EXPECT_EQ(orbit.azimuthDeg, 0.0);
     EXPECT_EQ(orbit.elevationDeg, 0.0);
     EXPECT_EQ(automatic.scene.camera.framing, Framing::Visible);
+}
+
+// Issue 50: intensity images (not below zero beyond noise, on anatomical axes) open as a maximum
+// projection, STF up to 1 without a style and unchanged places at the STF's whole opacity; CT,
+// whose air is -1000 HU, and maps composite with the neutral style.
+TEST(AutomaticScene, IntensityImagesAreMaximumProjectionsAndCtAndMapsComposite) {
+    struct Case {
+        const char* name;
+        void (*write)(const std::filesystem::path&);
+        const char* mode;
+    };
+    for (const Case& c : {Case{"fmri.nii", testdata::writeFmriRun, "maximum"},
+                          Case{"follow-up.nii", testdata::writeBrainFollowUp, "maximum"},
+                          Case{"blob.nii", testdata::writeMovingBlobNifti, "maximum"},
+                          Case{"ct.nii", testdata::writeCtPhantom, "composite"},
+                          Case{"perfusion.nii", testdata::writeCtHeadPerfusion, "composite"},
+                          Case{"eddy.nc", testdata::writeOceanEddy, "composite"}}) {
+        SCOPED_TRACE(c.name);
+        const auto file = sampleFolder() / c.name;
+        c.write(file);
+        const Series series = openSeries(file, ReadOptions{});
+        const AutomaticScene automatic = automaticScene(series, file);
+        const Scene& scene = automatic.scene;
+        EXPECT_EQ(toString(automaticRayMode(series).first), c.mode);
+        EXPECT_EQ(toString(scene.rayMode), c.mode);
+        const bool projection = std::string(c.mode) == "maximum";
+        double peak = 0.0;
+        for (const OpacityNode& node : scene.stf.curve.opacity) peak = std::max(peak, node.opacity);
+        if (projection) {
+            EXPECT_EQ(peak, 1.0) << "one sample makes the pixel: the STF rises to 1";
+        }
+        EXPECT_EQ(scene.stf.curve.color.front().style.empty(), projection);
+        EXPECT_EQ(scene.compositorOptions.unchanged->opacity, projection ? 1.0 : 0.35);
+        const bool said = std::any_of(automatic.explanation.begin(), automatic.explanation.end(),
+                                      [&](const std::string& line) { return line.rfind(std::string("ray: ") + c.mode, 0) == 0; });
+        EXPECT_TRUE(said) << "the explanation names the mode";
+    }
+    // The follow-up's noise dips below zero (-3 against 1162): still an intensity image.
+    const Series followUp = openSeries(sampleFolder() / "follow-up.nii", ReadOptions{});
+    EXPECT_LT(followUp.valueRange[0], 0.0);
 }
 
 TEST(AutomaticScene, VisibleBoundsLeaveTheAirOut) {

@@ -33,8 +33,9 @@ AutomaticScene automaticScene(const Series& series, const std::filesystem::path&
 // each process of a distributed render reads only its block and the window is taken from them all.
 AutomaticScene automaticScene(const Series& series, const std::filesystem::path& dataset, const OpacityWindow& window);
 
-// The ray mode of the automatic scene: maximum for intensity images (values never negative on
-// anatomical axes or a microscope's: MR, fMRI, PET, fluorescence microscopy), where compositing the
+// The ray mode of the automatic scene: maximum for intensity images (values not below zero, beyond
+// noise of 2 % of the largest, on anatomical axes or a microscope's: MR, fMRI, PET, fluorescence
+// microscopy), where compositing the
 // whole volume gives a fog with no boundary in it; composite for everything else (CT, whose
 // Hounsfield units go negative, simulations, maps). With the reason in words.
 std::pair<RayMode, std::string> automaticRayMode(const Series& series);
