@@ -224,6 +224,38 @@ TEST(RayModeRender, SeveralIsoValuesCompositeNearestFirstWithTheirOpacities) {
     EXPECT_NEAR(shellOnly.b, 0.0f, kTolerance);
 }
 
+// A front advancing along x over three time-steps (density 1 behind x = 0.3, 0.5, 0.7), seen from
+// above: first-arrival (threshold 0.5) gives each place the time-step the front reached it, and the
+// 0.5 iso-surface, met where the ray comes in through the box's top face, shows that time-step's
+// colour; where the front never came there is no value and no surface. Two samples (0.1) from
+// each front the density is constant around the place, so the headlight there is full (nearer,
+// the face is lit by the front's gradient, which lies across the view).
+TEST(RayModeRender, IsosurfaceOfFirstArrivalShowsWhenTheFrontCame) {
+    auto frontAt = [](double front) {
+        BoxSpec box;
+        box.dims = glm::ivec3(21);
+        box.spacing = glm::dvec3(0.05);
+        box.density = [front](glm::ivec3 sample) { return sample.x * 0.05 <= front + 1e-9 ? 1.0f : 0.0f; };
+        return box;
+    };
+    const Series series = makeSeries({frontAt(0.3), frontAt(0.5), frontAt(0.7)});
+    const glm::dvec2 centre(0.5, 0.5);
+    Scene scene = orthographicSceneLookingDownZ(centre, 1.28, 128);
+    scene.stf.curve = constantFunction({1.0, 1.0, 1.0}, 0.5);
+    scene.indexTstf.curve.opacity = {{0.0, 1.0}};
+    scene.indexTstf.curve.color = {{0.0, {1, 0, 0}}, {1.0, {0, 1, 0}}, {2.0, {0, 0, 1}}};
+    scene.finalMode = FinalMode::Modulate;
+    scene.compositor = compositorNamed("first-arrival");
+    scene.compositorOptions.values["threshold"] = 0.5;
+    scene.rayMode = rayModeNamed("isosurface");
+    scene.rayOptions.values["values"] = std::vector<double>{0.5};
+    const Image image = renderSeries(series, scene);
+    expectPixel(image, pixelOf({0.15, 0.5}, centre, 1.28, 128), {1, 0, 0, 1}, "reached in time-step 0");
+    expectPixel(image, pixelOf({0.4, 0.5}, centre, 1.28, 128), {0, 1, 0, 1}, "reached in time-step 1");
+    expectPixel(image, pixelOf({0.6, 0.5}, centre, 1.28, 128), {0, 0, 1, 1}, "reached in time-step 2");
+    expectPixel(image, pixelOf({0.85, 0.5}, centre, 1.28, 128), glm::vec4(0.0f), "never reached");
+}
+
 TEST(RayModeRender, AModeThatComparesValuesIsRefusedWithACompositorThatHasNone) {
     const std::string text = R"({"dataset": "x/series.json", "compositor": "temporal-average", "ray": "maximum"})";
     try {
