@@ -18,6 +18,7 @@
 #include "commands.h"
 #include "image_size_text.h"
 #include "gpu_memory_option.h"
+#include "scene_source.h"
 #include "tstyles/core/atomic_file.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/core/user_paths.h"
@@ -36,6 +37,10 @@ std::vector<std::string> defaultDatasets() {
 }
 
 struct BenchOptions {
+    // Datasets of the user's (any format `render` reads): their automatic scenes are timed instead of
+    // the bundled matrix.
+    std::vector<std::filesystem::path> files;
+    DatasetOptions dataset;  // how they are read (--var, --steps, ...)
     std::vector<std::string> sizeTexts{"512", "1024"};
     std::vector<glm::ivec2> sizes;  // from sizeTexts
     int frames = 7;
@@ -46,6 +51,7 @@ struct BenchOptions {
     // The scaling run instead of the matrix: super-ellipsoid series of these lengths.
     std::vector<int> scalingSteps;
     bool styled = false;
+    bool automatic = false;  // --automatic: the bundled datasets' automatic scenes too
     std::vector<std::string> rayModes{"composite"};  // --ray: each compositor with each mode
     bool distributed = false;  // sort-last over the MPI processes (bench_distributed.h)
     bool stages = false;       // also time the passes and the raycasting pass' parts (PassClock)
@@ -53,12 +59,19 @@ struct BenchOptions {
     GlOptions gl;
 };
 
+// The automatic scene of a user's file, fitted to its series, and what its camera frames.
+struct AutomaticBenchScene {
+    Scene scene;
+    Bounds framed;
+};
+
 struct BenchCase {
     std::string dataset;
-    std::string scene;  // the bundled scene that supplies camera and transfer functions
+    std::string scene;  // the bundled scene that supplies camera and transfer functions, or "automatic"
     TemporalCompositor compositor;
     RayMode rayMode;
     glm::ivec2 size;
+    std::optional<AutomaticBenchScene> automatic;  // a file's automatic scene, used as it is
 };
 
 // The compositor, and the ray mode where it is not the default: "temporal-mip", "temporal-mip+maximum".
@@ -121,16 +134,21 @@ struct FrameTimes {
 
 BenchResult runCase(Renderer& renderer, const Series& series, const BenchCase& benchCase,
                     const BenchOptions& options) {
-    Scene scene = loadScene(bundledDataDirectory() / "scenes" / (benchCase.scene + ".json"));
+    Scene scene = benchCase.automatic
+                      ? benchCase.automatic->scene
+                      : loadScene(bundledDataDirectory() / "scenes" / (benchCase.scene + ".json"));
     scene.compositor = benchCase.compositor;
     scene.rayMode = benchCase.rayMode;
+    scene.width = benchCase.size.x;
+    scene.height = benchCase.size.y;
+    const Bounds framed = benchCase.automatic ? benchCase.automatic->framed : series.worldBounds();
     FrameOptions frame;
     frame.size = benchCase.size;
     // Every frame turns the camera a little, as a user orbiting would, so no frame repeats.
     auto viewForFrame = [&](int index) {
         Camera camera = scene.camera;
         if (auto* orbit = std::get_if<OrbitCamera>(&camera.pose)) orbit->azimuthDeg += 2.0 * index;
-        return resolveView(camera, series.worldBounds(), benchCase.size.x, benchCase.size.y);
+        return resolveView(camera, framed, series.worldBounds(), benchCase.size.x, benchCase.size.y);
     };
     auto timeFrames = [&](const FrameOptions& timed) {
         for (int i = 0; i < options.warmup; ++i) renderer.draw(scene, viewForFrame(i), timed);
@@ -203,7 +221,10 @@ std::string mebibytes(std::size_t bytes) {
 void printTable(const std::vector<BenchResult>& results, const std::string& device) {
     std::cout << "device: " << device << "\n";
     const bool styled = results.front().benchCase.scene.find("styled") != std::string::npos;
-    std::cout << "scenes: data/scenes/<dataset's prefix>" << (styled ? "styled-" : "") << "*.json\n";
+    if (results.front().benchCase.automatic)
+        std::cout << "scenes: each file's automatic scene, as `tstyles render FILE` draws it\n";
+    else
+        std::cout << "scenes: data/scenes/<dataset's prefix>" << (styled ? "styled-" : "") << "*.json\n";
     const int method = methodColumnWidth(results);
     std::cout << std::left << std::setw(28) << "dataset" << std::setw(method) << "compositor" << std::right
               << std::setw(6) << "n" << std::setw(11) << "size" << std::setw(11) << "median ms" << std::setw(9)
@@ -318,6 +339,36 @@ void runMatrix(Renderer& renderer, const BenchOptions& options, std::vector<Benc
     }
 }
 
+// Each file's automatic scene (docs/automatic-scene.md), as `render FILE` draws it, at every size;
+// --ray replaces its ray mode where given.
+void runAutomaticScenes(Renderer& renderer, const std::vector<std::pair<std::string, std::filesystem::path>>& files,
+                        const BenchOptions& options, bool raysGiven, std::vector<BenchResult>& results) {
+    for (const auto& [name, file] : files) {
+        SceneAndSeries opened = openSceneOrDataset({file}, {}, options.dataset);
+        if (opened.explanation.empty())
+            throwInputError(file, "", "is a scene file; bench FILE times a dataset's automatic scene");
+        SceneOnSeries fitted = fitSceneToSeries(std::move(opened.scene), std::move(opened.series));
+        const std::vector<std::string> storageChanges = residencyChanges(
+            fitted.series, uploadWithinGpuMemory(renderer, fitted.series, options.gpuMemory, options.dataset));
+        const std::vector<RayMode> modes = [&] {
+            if (!raysGiven) return std::vector<RayMode>{fitted.scene.rayMode};
+            std::vector<RayMode> given;
+            for (const std::string& modeName : options.rayModes) given.push_back(*rayModeFromString(modeName));
+            return given;
+        }();
+        for (const RayMode mode : modes) {
+            if (!goTogether(fitted.scene.compositor, mode)) continue;
+            for (glm::ivec2 size : options.sizes) {
+                BenchCase benchCase{name, "automatic", fitted.scene.compositor, mode, size,
+                                    AutomaticBenchScene{fitted.scene, fitted.framed}};
+                results.push_back(runCase(renderer, fitted.series, benchCase, options));
+                results.back().gpuStorageChanges = storageChanges;
+                std::cerr << "." << std::flush;
+            }
+        }
+    }
+}
+
 // Partial and full overlap for each n; the series are generated on the fly (bench_scaling.h).
 void runScaling(Renderer& renderer, const BenchOptions& options, std::vector<BenchResult>& results) {
     for (int steps : options.scalingSteps)
@@ -327,11 +378,16 @@ void runScaling(Renderer& renderer, const BenchOptions& options, std::vector<Ben
         }
 }
 
-int runBench(const BenchOptions& options) {
+int runBench(const BenchOptions& options, bool raysGiven) {
+    if (!options.files.empty() &&
+        (options.styled || !options.scalingSteps.empty() || options.distributed || options.automatic))
+        throwInputError("", "FILE", "times the files' automatic scenes; it takes neither --styled, --scaling, "
+                                    "--distributed nor --automatic");
     if (options.distributed) {
-        if (options.baseline || options.styled || options.stages || !options.scalingSteps.empty())
+        if (options.baseline || options.styled || options.stages || !options.scalingSteps.empty() || options.automatic)
             throwInputError("", "--distributed",
-                            "measures the flat matrix; it takes neither --baseline, --styled, --stages nor --scaling");
+                            "measures the flat matrix; it takes neither --baseline, --styled, --stages, --scaling nor "
+                            "--automatic");
         if (options.rayModes != std::vector<std::string>{"composite"})
             throwInputError("", "--distributed",
                             "merges the processes' frames front to back, which holds for the composite ray mode only; "
@@ -342,10 +398,24 @@ int runBench(const BenchOptions& options) {
     const auto context = createHeadlessContext(parseBackend(options.gl.backend), false);
     Renderer renderer(ShaderLibrary::fromEnvironment(options.gl.shaderDirectory));
     std::vector<BenchResult> results;
-    if (options.scalingSteps.empty())
+    if (!options.files.empty()) {
+        std::vector<std::pair<std::string, std::filesystem::path>> files;
+        for (const auto& file : options.files) files.emplace_back(file.filename().string(), file);
+        runAutomaticScenes(renderer, files, options, raysGiven, results);
+    } else if (options.scalingSteps.empty()) {
         runMatrix(renderer, options, results);
-    else
+        if (options.automatic) {
+            // The bundled datasets as a user's files: their automatic scenes, named "<folder> (automatic)".
+            std::vector<std::pair<std::string, std::filesystem::path>> files;
+            for (const auto& folder : options.datasets)
+                if (const auto manifest = bundledDataDirectory() / folder / "series.json";
+                    userPathKind({"", "--datasets"}, manifest) != PathKind::Missing)
+                    files.emplace_back(folder + " (automatic)", manifest);
+            runAutomaticScenes(renderer, files, options, raysGiven, results);
+        }
+    } else {
         runScaling(renderer, options, results);
+    }
     std::cerr << "\n";
     if (results.empty()) {
         std::cerr << "tstyles bench: none of the datasets is there (generate them with the build)\n";
@@ -362,7 +432,11 @@ int runBench(const BenchOptions& options) {
 Command addBenchCommand(CLI::App& app) {
     auto options = std::make_shared<BenchOptions>();
     CLI::App* command = app.add_subcommand(
-        "bench", "Benchmark the bundled scenes: every temporal compositor on each dataset; medians of several frames");
+        "bench", "Benchmark the bundled scenes (every temporal compositor on each dataset), or the automatic scene of "
+                 "your own files; medians of several frames");
+    command->add_option("files", options->files,
+                        std::string("Datasets whose automatic scenes to time, as `render FILE` draws them, instead of "
+                                    "the bundled matrix: ") + kDatasetKinds);
     command->add_option("--sizes", options->sizeTexts,
                         "Image sizes to render: WIDTHxHEIGHT (e.g. 1920x1080), or one number for a square (default: 512 1024)");
     command->add_option("--frames", options->frames, "Timed frames per case (the median is reported)")
@@ -379,6 +453,8 @@ Command addBenchCommand(CLI::App& app) {
                         "numbers of time-steps, partial and full overlap (e.g. --scaling 10 20 40 80 160)")
         ->check(CLI::Range(2, 1000));
     command->add_flag("--styled", options->styled, "Measure the Figure 4 scenes with lit-sphere styles");
+    command->add_flag("--automatic", options->automatic,
+                      "Also time the bundled datasets' automatic scenes (what `render DATASET` draws), after the matrix");
     command->add_option("--ray", options->rayModes,
                         "Ray modes to measure each compositor with (docs/ray-modes.md; default: composite); pairs "
                         "that do not go together are left out with a note")
@@ -392,12 +468,14 @@ Command addBenchCommand(CLI::App& app) {
                       "slowest block) and compositing, for strong scaling (docs/scaling.md)");
     addGpuMemoryOption(*command, options->gpuMemory);
     addGlOptions(*command, options->gl);
-    return {command, [options] {
+    addDatasetOptions(*command, options->dataset);
+    CLI::Option* ray = command->get_option("--ray");
+    return {command, [options, ray] {
         parseGpuMemoryOption(options->gpuMemory);  // a bad size fails before anything is read
         options->sizes.clear();
         for (const std::string& text : options->sizeTexts)
             options->sizes.push_back(parseImageSizeOption(text, "--sizes", 16, 8192));
-        return runBench(*options);
+        return runBench(*options, ray->count() > 0);
     }};
 }
 
