@@ -37,8 +37,8 @@ bool hasValue(TemporalCharacteristic c) {
 
 // The value a ray mode compares along the ray: the compositor's value where the gradient TSTF reads
 // it (a change, a spread, a trend, a difference: in density units), else the density of the
-// time-step whose colour the sample shows (the picked time-step; the brightest for temporal-mip and
-// time-of-max). Compositors that composite the time-steps (READS_COMPOSITED) have none; the ray
+// time-step whose colour the sample shows (the picked time-step: the most opaque for temporal-mip,
+// the densest for time-of-max). Compositors that composite the time-steps (READS_COMPOSITED) have none; the ray
 // modes that need it refuse them (RayModeInfo::needsValue).
 float characteristicValue(TemporalCharacteristic c) {
     if (c.reads == READS_GRADIENT_TSTF) return c.value;
