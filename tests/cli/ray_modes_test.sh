@@ -91,4 +91,13 @@ case_bench_measures_each_mode() {
     grep -q '"ray": "maximum"' "$SCRATCH/bench.json" || fail "the JSON does not name the ray mode"
 }
 
+# `view --ray`: the window opens the dataset's automatic scene in the mode asked for, and a scene
+# saved from it holds the mode and its options.
+case_view_with_a_mode() {
+    have_xvfb || return 0
+    view_and_screenshot "$DATASET" --size 400x300 --ray isosurface --ray-values 0.4,0.7
+    grep -q '"mode": "isosurface"' "$SCRATCH/saved.json" || fail "the saved scene has no isosurface ray"
+    grep -qE '"values": \[0.4, ?0.7\]' "$SCRATCH/saved.json" || fail "the saved scene lost the iso-values"
+}
+
 run_case
