@@ -1,6 +1,7 @@
 // The ray mode in the compositor section: the table's modes in a list, and the chosen mode's
 // options (ray_modes.h) as sliders, one per number.
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,7 +21,8 @@ std::vector<RayMode> offeredRayModes(const Scene& scene) {
     for (const RayMode mode : allRayModes()) {
         Scene trial = scene;
         trial.rayMode = mode;
-        if (!rayModeProblem(trial) || rayModeProblem(trial)->key != "ray.mode") offered.push_back(mode);
+        const std::optional<RayModeProblem> problem = rayModeProblem(trial);
+        if (!problem || problem->key != "ray.mode") offered.push_back(mode);
     }
     return offered;
 }
