@@ -208,7 +208,7 @@ void placeBox(LayoutSpace& space, const PanelMetrics& m, const Scene& scene, con
         if (auto ticks = ticksOfAxis(space, m, series, frame, view, axis)) axes.push_back(std::move(*ticks));
     const glm::vec4 lineInk = boxInk(scene.background, 0.55f);
     const glm::vec4 textInk = boxInk(scene.background, 0.95f);
-    plan.drawUnderlay = [&view, bounds = series.worldBounds(), axes, lineInk, textInk, m](Canvas& canvas) {
+    plan.drawUnderlay = [view, bounds = series.worldBounds(), axes, lineInk, textInk, m](Canvas& canvas) {
         drawBoxLines(canvas, view, bounds, lineInk);
         for (const AxisTicks& axis : axes)
             for (const glm::dvec2& at : axis.ticks)

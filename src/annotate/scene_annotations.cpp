@@ -12,6 +12,7 @@
 #include "coastline.h"
 #include "layout_space.h"
 #include "legend_panels.h"
+#include "picture_room.h"
 #include "text_box.h"
 #include "tstyles/data/time_axis.h"
 
@@ -72,8 +73,9 @@ double widestOf(const std::vector<PanelDraft>& drafts) {
     return widest;
 }
 
-// The scale bar's width before it is placed, for the caption's room: about a fifth of the image.
-double scaleBarRoom(const Scene& scene, glm::ivec2 size) { return scene.annotations.scaleBar ? 0.4 * size.x : 0.0; }
+// The scale bar's width before it is placed, for the caption's room: its bar is at most a quarter
+// of the image (scaleBarCorner), and its label may stand out a little.
+double scaleBarRoom(const Scene& scene, glm::ivec2 size) { return scene.annotations.scaleBar ? 0.3 * size.x : 0.0; }
 
 }  // namespace
 
@@ -108,57 +110,97 @@ std::vector<std::string> timeStepLabels(const Series& series) {
     return labels;
 }
 
-AnnotationPlan planAnnotations(glm::ivec2 imageSize, const Scene& scene, const Series& series,
-                               const DisplayFrame& frame, const View& view, const Font& font,
-                               const StyleImages& styles) {
-    AnnotationPlan plan;
-    if (!scene.annotations.any() || series.size() == 0 || imageSize.x <= 0 || imageSize.y <= 0) return plan;
-    const PanelMetrics m = panelMetrics(font, annotationPixelSize(scene, imageSize.y));
-    LayoutSpace space(imageSize, m.pad);
-    const glm::ivec2 steps = scene.exposure.stepsOf(series.size());
-    const std::vector<std::string> labels = timeStepLabels(series);
+namespace {
+
+// The least share of its size the picture keeps beside the panels; below it, legends give way.
+constexpr double kSmallestPictureShare = 0.5;
+
+// Title, caption and the first `legendCount` legends, each in its corner.
+void placePanels(LayoutSpace& space, const PanelMetrics& m, const Scene& scene, glm::ivec2 imageSize,
+                 const std::vector<std::string>& labels, glm::ivec2 steps, const std::vector<PanelDraft>& legends,
+                 std::size_t legendCount, AnnotationPlan& plan) {
     const Annotations& wanted = scene.annotations;
     const Corner legendCorner = wanted.legendCorner;
-    const std::vector<PanelDraft> legends =
-        wanted.legend ? legendDrafts({scene, series, steps, labels, styles, m, imageSize, 0.5 * imageSize.x})
-                      : std::vector<PanelDraft>{};
-    // Panels first, in the order they give way: title, caption, legends; then the scale bar, the
-    // axis titles and the tick labels in what is left.
+    const std::vector<PanelDraft> placed(legends.begin(), legends.begin() + std::ptrdiff_t(legendCount));
     if (!wanted.title.empty()) {
-        const double beside = legendCorner == Corner::TopRight ? widestOf(legends) : 0.0;
+        const double beside = legendCorner == Corner::TopRight ? widestOf(placed) : 0.0;
         placePanel(space, Corner::TopLeft,
                    textPanel(AnnotationKind::Title, m, wanted.title, 1.35, widestLine(space, beside)), plan);
     }
     if (wanted.caption) {
         const double beside =
-            std::max(legendCorner == Corner::BottomRight ? widestOf(legends) : 0.0, scaleBarRoom(scene, imageSize));
+            std::max(legendCorner == Corner::BottomRight ? widestOf(placed) : 0.0, scaleBarRoom(scene, imageSize));
         placePanel(
             space, Corner::BottomLeft,
             textPanel(AnnotationKind::Caption, m, captionText(scene, steps, labels), 1.0, widestLine(space, beside)),
             plan);
     }
-    for (const PanelDraft& legend : legends) placePanel(space, legendCorner, legend, plan);
-    if (wanted.scaleBar) placeScaleBar(space, m, series, frame, view, plan);
-    if (wanted.box) placeBox(space, m, scene, series, frame, view, plan);
-    if (wanted.coast) {
-        // Under the box and every element: the coast lies on the picture itself.
-        auto segments = std::make_shared<const std::vector<WorldSegment>>(coastSegments(series));
-        plan.drawUnderlay = [segments, box = std::move(plan.drawUnderlay), &view](Canvas& canvas) {
-            drawCoast(canvas, *segments, view, kCoastInk);
-            if (box) box(canvas);
-        };
+    for (const PanelDraft& legend : placed) placePanel(space, legendCorner, legend, plan);
+}
+
+}  // namespace
+
+AnnotationPlan planAnnotations(glm::ivec2 imageSize, const Scene& scene, const Series& series,
+                               const DisplayFrame& frame, const View& view, const Font& font,
+                               const StyleImages& styles, const std::optional<Bounds>& keepClear) {
+    AnnotationPlan plan;
+    plan.view = view;
+    if (!scene.annotations.any() || series.size() == 0 || imageSize.x <= 0 || imageSize.y <= 0) return plan;
+    const PanelMetrics m = panelMetrics(font, annotationPixelSize(scene, imageSize.y));
+    const glm::ivec2 steps = scene.exposure.stepsOf(series.size());
+    const std::vector<std::string> labels = timeStepLabels(series);
+    const Annotations& wanted = scene.annotations;
+    const std::vector<PanelDraft> legends =
+        wanted.legend ? legendDrafts({scene, series, steps, labels, styles, m, imageSize, 0.5 * imageSize.x})
+                      : std::vector<PanelDraft>{};
+    const std::optional<Rect> footprint = keepClear ? footprintOnImage(view, imageSize, *keepClear) : std::nullopt;
+    // Panels first, in the order they give way: title, caption, legends; the picture moved into the
+    // room they and the scale bar's corner leave; then the scale bar, the axis titles and the tick
+    // labels in what is left.
+    for (std::size_t legendCount = legends.size();; --legendCount) {
+        plan = AnnotationPlan{};
+        plan.view = view;
+        LayoutSpace space(imageSize, m.pad);
+        placePanels(space, m, scene, imageSize, labels, steps, legends, legendCount, plan);
+        if (footprint) {
+            std::vector<Rect> obstacles = plan.layout.panels;
+            if (wanted.scaleBar)
+                if (const auto corner = scaleBarCorner(space, m)) obstacles.push_back(*corner);
+            const PictureMove move = moveClearOf(*footprint, imageSize, obstacles, m.pad);
+            if (shareKept(*footprint, move, imageSize) < kSmallestPictureShare && legendCount > 0) continue;
+            if (move.scale > 0.0) plan.view = movedOnImage(view, imageSize, move);
+            // The scale bar, axis titles and tick labels keep clear of the data too.
+            if (const auto outline = outlineOnImage(plan.view, imageSize, *keepClear)) space.keepClearOf(*outline);
+        }
+        if (wanted.scaleBar) placeScaleBar(space, m, series, frame, plan.view, plan);
+        if (wanted.box) placeBox(space, m, scene, series, frame, plan.view, plan);
+        if (wanted.coast) {
+            // Under the box and every element: the coast lies on the picture itself.
+            auto segments = std::make_shared<const std::vector<WorldSegment>>(coastSegments(series));
+            plan.drawUnderlay = [segments, box = std::move(plan.drawUnderlay), onPicture = plan.view](Canvas& canvas) {
+                drawCoast(canvas, *segments, onPicture, kCoastInk);
+                if (box) box(canvas);
+            };
+        }
+        return plan;
     }
-    return plan;
 }
 
 AnnotationLayout drawAnnotations(Image& image, const Scene& scene, const Series& series, const DisplayFrame& frame,
-                                 const View& view, const Font& font, const StyleImages& styles) {
-    AnnotationPlan plan = planAnnotations({image.width, image.height}, scene, series, frame, view, font, styles);
+                                 const View& view, const Font& font, const StyleImages& styles,
+                                 const std::optional<Bounds>& keepClear) {
+    AnnotationPlan plan =
+        planAnnotations({image.width, image.height}, scene, series, frame, view, font, styles, keepClear);
     Canvas canvas(image);
     // The box and its ticks lie under the panels and labels.
     if (plan.drawUnderlay) plan.drawUnderlay(canvas);
     for (const auto& draw : plan.drawElements) draw(canvas);
     return std::move(plan.layout);
+}
+
+View pictureView(glm::ivec2 imageSize, const Scene& scene, const Series& series, const DisplayFrame& frame,
+                 const View& view, const Font& font, const StyleImages& styles, const Bounds& keepClear) {
+    return planAnnotations(imageSize, scene, series, frame, view, font, styles, keepClear).view;
 }
 
 }  // namespace tstyles

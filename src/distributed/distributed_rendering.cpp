@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <optional>
+#include <vector>
 
 #include "tstyles/core/errors.h"
 #include "tstyles/data/series_crop.h"
@@ -88,7 +89,21 @@ Image DistributedRendering::render(const Scene& scene) {
                          "\": distributed rendering merges the processes' frames front to back (the over "
                          "operator), which holds for the composite ray mode only; render this scene without "
                          "--distributed");
-    const View view = resolveView(scene.camera, framed_, wholeBounds_, scene.width, scene.height);
+    View view = resolveView(scene.camera, framed_, wholeBounds_, scene.width, scene.height);
+    if (scene.annotations.any()) {
+        // Process 0 lays the annotations out and moves the picture beside them (a new projection,
+        // SceneAnnotator::viewOf); every process renders its block with that projection.
+        std::vector<double> projection(16, 0.0);
+        mpi_.together("laying out the annotations", [&] {
+            if (!annotator_) return;
+            const glm::dmat4 moved = annotator_->viewOf(scene).projectionMatrix;
+            for (int column = 0; column < 4; ++column)
+                for (int row = 0; row < 4; ++row) projection[std::size_t(4 * column + row)] = moved[column][row];
+        });
+        projection = mpi_.sum(std::move(projection));
+        for (int column = 0; column < 4; ++column)
+            for (int row = 0; row < 4; ++row) view.projectionMatrix[column][row] = projection[std::size_t(4 * column + row)];
+    }
     const glm::dmat4 inverseViewProjection = glm::inverse(view.projectionMatrix * view.viewMatrix);
     Image local;
     const auto renderStart = std::chrono::steady_clock::now();

@@ -5,15 +5,22 @@
 
 namespace tstyles {
 
-View SceneAnnotator::viewOf(const Scene& scene) const {
-    return resolveView(scene.camera, framed_, series_.worldBounds(), scene.width, scene.height);
+View SceneAnnotator::viewOf(const Scene& scene) {
+    const View camera = resolveView(scene.camera, framed_, series_.worldBounds(), scene.width, scene.height);
+    if (!scene.annotations.any()) return camera;
+    if (!font_) font_ = Font::openDefault();
+    return pictureView({scene.width, scene.height}, scene, series_, frame_, camera, *font_, styleImages(), framed_);
 }
 
 void SceneAnnotator::annotate(Image& image, const Scene& scene) {
     if (!scene.annotations.any()) return;
     if (!font_) font_ = Font::openDefault();
-    drawAnnotations(image, scene, series_, frame_, viewOf(scene), *font_,
-                    [this](const std::string& style) { return &styles_.image(style); });
+    const View camera = resolveView(scene.camera, framed_, series_.worldBounds(), scene.width, scene.height);
+    drawAnnotations(image, scene, series_, frame_, camera, *font_, styleImages(), framed_);
+}
+
+StyleImages SceneAnnotator::styleImages() {
+    return [this](const std::string& style) { return &styles_.image(style); };
 }
 
 Image AnnotatedRendering::render(const Scene& scene, FrameOptions options) {

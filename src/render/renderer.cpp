@@ -21,8 +21,12 @@ namespace {
 // differences give smooth normals on our data. Thin style details then stay free of aliasing
 // without blurring the styles of large bodies.
 double styleFootprint(const View& view, int imageHeight, double finestSpacing) {
+    // The height the image shows at the target, from the projection as drawn (a picture moved and
+    // shrunk beside the annotations shows more).
     const double distance = glm::length(view.target - view.eye);
-    const double pixelFootprint = 2.0 * distance * std::tan(glm::radians(view.fovDeg) / 2.0) / imageHeight;
+    const double shownHeight =
+        2.0 * (view.projection == Projection::Perspective ? distance : 1.0) / view.projectionMatrix[1][1];
+    const double pixelFootprint = shownHeight / imageHeight;
     const double featureRadius = 16.0 * finestSpacing;
     return pixelFootprint / (2.0 * featureRadius);
 }

@@ -41,7 +41,8 @@ void addBundledScenes(std::vector<LayoutCase>& cases) {
         const std::string name = file.stem().string();
         cases.push_back(
             {name, fitSceneToSeries(annotatedFully(scene, "Bundled scene " + name + ", as the paper shows it"),
-                                    found->second)});
+                                    found->second),
+             true});
     }
 }
 
@@ -185,9 +186,11 @@ std::unique_ptr<SizedPlan> planAt(const LayoutCase& layoutCase, glm::ivec2 size,
     sized.scene.width = size.x;
     sized.scene.height = size.y;
     const Series& series = layoutCase.fitted.series;
-    // As SceneAnnotator::viewOf: the framed bounds, the whole series for the clip planes.
+    // As SceneAnnotator: the framed bounds, the whole series for the clip planes, and the picture
+    // moved clear of the panels.
     sized.view = resolveView(sized.scene.camera, layoutCase.fitted.framed, series.worldBounds(), size.x, size.y);
-    sized.plan = planAnnotations(size, sized.scene, series, layoutCase.fitted.frame, sized.view, font);
+    sized.plan =
+        planAnnotations(size, sized.scene, series, layoutCase.fitted.frame, sized.view, font, {}, layoutCase.fitted.framed);
     return owned;
 }
 

@@ -18,6 +18,7 @@ namespace tstyles::testing {
 struct LayoutCase {
     std::string name;
     SceneOnSeries fitted;  // the scene (annotations all on) and the display series
+    bool bundled = false;  // a bundled scene (data/scenes), not a file or series shaped like users' own
 };
 
 // Loaded once per test program.
@@ -30,7 +31,7 @@ const std::vector<glm::ivec2>& layoutImageSizes();
 // heap: the plan's drawings refer to the scene and the view beside it).
 struct SizedPlan {
     Scene scene;
-    View view;
+    View view;  // the camera's; the picture is drawn with plan.view
     AnnotationPlan plan;
 };
 std::unique_ptr<SizedPlan> planAt(const LayoutCase& layoutCase, glm::ivec2 size, const Font& font);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,19 +49,34 @@ using StyleImages = std::function<const Image*(const std::string& style)>;
 // drawings refer to the arguments, which must outlive the plan.
 struct AnnotationPlan {
     AnnotationLayout layout;
+    // The view the picture is drawn with: the one planned for, or where the plan keeps a bounds
+    // clear (planAnnotations' `keepClear`), that view moved and shrunk on the image.
+    View view;
     std::function<void(Canvas&)> drawUnderlay;
     std::vector<std::function<void(Canvas&)>> drawElements;  // one per layout.elements entry
 };
 
 // `series` is the display series (fitSceneToSeries), `frame` the display frame it was turned by:
-// ticks and the scale bar are given in the file's units.
+// ticks and the scale bar are given in the file's units. With `keepClear` (the bounds of the data
+// the picture shows: SceneOnSeries::framed), the panels never cover the data: where the bounds'
+// footprint on the image meets the title, caption, legends or the scale bar's corner, the plan's
+// view moves and shrinks the picture into the room they leave (docs/annotations.md, "Layout");
+// where that room would hold the picture at less than half its size, legends give way from the
+// last. Without it, the plan's view is `view` and the panels may lie over the picture (the window).
 AnnotationPlan planAnnotations(glm::ivec2 imageSize, const Scene& scene, const Series& series,
                                const DisplayFrame& frame, const View& view, const Font& font,
-                               const StyleImages& styles = {});
+                               const StyleImages& styles = {}, const std::optional<Bounds>& keepClear = {});
 
-// The plan drawn: the underlay, then every element.
+// The plan drawn: the underlay, then every element. The image must have been rendered with the
+// plan's view (pictureView below, for the same arguments).
 AnnotationLayout drawAnnotations(Image& image, const Scene& scene, const Series& series, const DisplayFrame& frame,
-                                 const View& view, const Font& font, const StyleImages& styles = {});
+                                 const View& view, const Font& font, const StyleImages& styles = {},
+                                 const std::optional<Bounds>& keepClear = {});
+
+// The view a picture annotated by drawAnnotations with these arguments is rendered with: `view`
+// itself where the scene has no annotations.
+View pictureView(glm::ivec2 imageSize, const Scene& scene, const Series& series, const DisplayFrame& frame,
+                 const View& view, const Font& font, const StyleImages& styles, const Bounds& keepClear);
 
 // The text size for an image: the scene's font size scaled from a 512-pixel-high image.
 int annotationPixelSize(const Scene& scene, int imageHeight);

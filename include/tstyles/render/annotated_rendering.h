@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "tstyles/annotate/font.h"
+#include "tstyles/annotate/scene_annotations.h"
 #include "tstyles/image/image.h"
 #include "tstyles/render/renderer.h"
 #include "tstyles/render/style_library.h"
@@ -22,10 +23,14 @@ public:
     SceneAnnotator(const Series& series, const Bounds& framed, const DisplayFrame& frame)
         : series_(series), framed_(framed), frame_(frame) {}
     void annotate(Image& image, const Scene& scene);
-    // The view of the scene's camera on the series (what its frames are rendered with).
-    View viewOf(const Scene& scene) const;
+    // What the scene's frames are rendered with: the view of its camera on the series, moved and
+    // shrunk on the image beside the panels where it has annotations (pictureView), so that they
+    // never cover the data.
+    View viewOf(const Scene& scene);
 
 private:
+    StyleImages styleImages();
+
     const Series& series_;
     const Bounds& framed_;
     const DisplayFrame& frame_;
