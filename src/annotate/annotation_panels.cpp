@@ -26,6 +26,15 @@ void addElement(AnnotationPlan& plan, AnnotationKind kind, const Rect& rect, std
     plan.drawElements.push_back(std::move(draw));
 }
 
+std::string exaggerationNote(const DisplayFrame& frame) {
+    if (frame.verticalExaggeration == 1.0) return "";
+    const double factor = frame.verticalExaggeration;
+    const bool whole = factor >= 1.0 && factor < 1e9 && factor == std::round(factor);
+    char text[32];
+    std::snprintf(text, sizeof text, whole ? "%.0f" : "%.3g", factor);  // 9900, not 9.9e+03
+    return std::string("vertical \u00d7 ") + text;
+}
+
 double niceStep(double span, int count) {
     if (!(span > 0.0) || count < 1) return 1.0;
     const double raw = span / count;

@@ -25,6 +25,10 @@ struct PanelMetrics {
 
 PanelMetrics panelMetrics(const Font& font, int pixels);
 
+// "vertical x 680" where the display's vertical is exaggerated (DisplayFrame::verticalExaggeration
+// other than 1), for the vertical axis's title and the scale bar; empty otherwise.
+std::string exaggerationNote(const DisplayFrame& frame);
+
 // A panel not placed yet. `draw` paints it all (background included) inside the rectangle it is
 // given; `record` notes what the viewer picks in it (the legend's swatches) and may be empty.
 struct PanelDraft {

@@ -92,6 +92,7 @@ std::optional<AxisTicks> ticksOnEdge(const PanelMetrics& m, glm::ivec2 size, con
     axis.outward = {-along.y, along.x};
     if (glm::dot(axis.outward, 0.5 * (edge.start + edge.end) - *centre) < 0.0) axis.outward = -axis.outward;
     axis.title = axisTitle(series.axes[std::size_t(axisIndex)], axisIndex);
+    if (axisIndex == 1 && !exaggerationNote(frame).empty()) axis.title += ", " + exaggerationNote(frame);
     // About one tick per five text heights, at least two where a 1-2-5 step allows; then fewer
     // while their labels crowd each other.
     const double length = glm::length(edge.end - edge.start);

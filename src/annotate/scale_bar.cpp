@@ -42,7 +42,9 @@ void placeScaleBar(LayoutSpace& space, const PanelMetrics& m, const Series& seri
     const double barPixels = length * pixelsPerDataUnit;
     const std::string unit = series.axes[0].unit;
     const bool degrees = unit.rfind("degree", 0) == 0;
-    const std::string label = tickLabel(length, length) + (degrees ? "\u00b0" : unit.empty() ? "" : " " + unit);
+    const std::string note = exaggerationNote(frame);
+    const std::string label = tickLabel(length, length) + (degrees ? "\u00b0" : unit.empty() ? "" : " " + unit) +
+                              (note.empty() ? "" : " (" + note + ")");
     const Rect labelExtent = textFrom(*m.font, label, m.pixels, {0.0, 0.0}).rect;
     const double labelWidth = std::ceil(2 * m.pad + labelExtent.width);
     const double labelHeight = labelHeightOf(m);

@@ -60,6 +60,23 @@ std::string axisLabel(const Series& series, int axis) {
 
 // The automatic turn: every axis whose direction the file gives goes where displayAxisOf says; the
 // others fill the display axes left over, in order; a left-handed result mirrors display x.
+// The data axis whose extent (in a unit shared by all three: lengths in m and km alike, or voxels)
+// is over kLargestPhysicalRatio times thinner than the widest; none where the units differ in kind.
+std::optional<int> extremelyThinAxis(const Series& series) {
+    const Bounds bounds = series.worldBounds();
+    std::array<AxisUnit, 3> units;
+    for (int axis = 0; axis < 3; ++axis) units[std::size_t(axis)] = parseAxisUnit(series.axes[std::size_t(axis)].unit);
+    if (!units[0].sameKind(units[1]) || !units[1].sameKind(units[2])) return std::nullopt;
+    glm::dvec3 extent;
+    for (int axis = 0; axis < 3; ++axis) extent[axis] = bounds.size()[axis] * units[std::size_t(axis)].toBase;
+    int thin = 0;
+    for (int axis = 1; axis < 3; ++axis)
+        if (extent[axis] < extent[thin]) thin = axis;
+    const double widest = std::max({extent.x, extent.y, extent.z});
+    if (!(extent[thin] > 0.0) || widest <= kLargestPhysicalRatio * extent[thin]) return std::nullopt;
+    return thin;
+}
+
 glm::dmat3 automaticRotation(const Series& series, std::vector<std::string>& explanation) {
     std::array<std::optional<SignedAxis>, 3> rows;
     std::array<bool, 3> placed{};
@@ -69,6 +86,15 @@ glm::dmat3 automaticRotation(const Series& series, std::vector<std::string>& exp
             rows[std::size_t(target->axis)] = SignedAxis{data, target->negated};
             placed[std::size_t(data)] = true;
         }
+    const bool noMeaning = std::none_of(placed.begin(), placed.end(), [](bool p) { return p; });
+    if (const auto thin = noMeaning ? extremelyThinAxis(series) : std::nullopt) {
+        // Nothing says which way is up, and one axis is far thinner than the others: it goes up, so
+        // that the vertical exaggeration thickens it and the camera looks at the large face.
+        rows[1] = SignedAxis{*thin, false};
+        placed[std::size_t(*thin)] = true;
+        explanation.push_back("up: " + axisLabel(series, *thin) + ", the thinnest axis (over " +
+                              number(kLargestPhysicalRatio) + " times thinner than the widest)");
+    }
     for (int display = 0; display < 3; ++display) {
         if (rows[std::size_t(display)]) continue;
         const int data = int(std::find(placed.begin(), placed.end(), false) - placed.begin());

@@ -23,6 +23,13 @@ constexpr const char* kNeutralStyle = "matte-white";
 constexpr double kUnchangedOpacity = 0.35;
 // How far below zero an intensity image's values may reach, as a share of its largest: noise.
 constexpr double kIntensityNoiseBelowZero = 0.02;
+// A slab: an extent this share of the others' or less; it is seen across its thin axis.
+constexpr double kSlabShare = 1.0 / 3.0;
+
+struct AutomaticCamera {
+    OrbitCamera orbit;
+    std::string reason;  // for `info`
+};
 
 std::string number(double value) {
     std::ostringstream text;
@@ -54,28 +61,60 @@ std::string windowText(const Series& series, const OpacityWindow& window) {
     return text;
 }
 
+// The display axis along which the data is a slab (its extent a third of the others' or less, in
+// the aspect's proportions before any vertical exaggeration: an extremely thin axis that the
+// exaggeration thickens to a quarter of the width is still a slab); none for a block.
+std::optional<int> slabAxis(const Series& series, const DisplayFrame& frame) {
+    glm::dvec3 extent = glm::abs(frame.rotation * series.worldBounds().size()) * frame.scale;
+    extent.y /= frame.verticalExaggeration;
+    int thin = 0;
+    for (int axis = 1; axis < 3; ++axis)
+        if (extent[axis] < extent[thin]) thin = axis;
+    const double others = std::min(extent[(thin + 1) % 3], extent[(thin + 2) % 3]);
+    if (!(extent[thin] > 0.0) || extent[thin] > kSlabShare * others) return std::nullopt;
+    return thin;
+}
+
 // Geographic data straight from above, north up, as a map is read (the surface first along the
-// rays; from an oblique angle a deep, exaggerated column's south wall filled the picture);
-// anatomical data from the front, head up; anything else from an oblique three-quarter view.
-OrbitCamera automaticOrbit(DataKind kind) {
-    OrbitCamera orbit;
+// rays; from an oblique angle a deep, exaggerated column's south wall filled the picture). A slab
+// across its thin axis, at its large face: from above (anatomical: an axial view, anterior at the
+// top), from the front, or from the side (display +x). Other anatomical data from the front, head
+// up; anything else from an oblique three-quarter view.
+AutomaticCamera automaticCamera(DataKind kind, const Series& series, const DisplayFrame& frame) {
+    AutomaticCamera camera;
+    OrbitCamera& orbit = camera.orbit;
+    const std::optional<int> slab = slabAxis(series, frame);
     if (kind == DataKind::Geographic) {
         orbit.azimuthDeg = 0.0;
         orbit.elevationDeg = 90.0;
+        camera.reason = "geographic: seen from above, north up";
+    } else if (slab == 1) {
+        // From above, the image's top is display -z at azimuth 0; the anterior (display +z) at 180.
+        orbit.azimuthDeg = kind == DataKind::Anatomical ? 180.0 : 0.0;
+        orbit.elevationDeg = 90.0;
+        camera.reason = kind == DataKind::Anatomical
+                            ? "an anatomical slab, thin from head to foot: seen from above (axial), anterior at the top"
+                            : "a slab, thin along the vertical: seen from above";
+    } else if (slab == 2) {
+        orbit.azimuthDeg = 0.0;
+        orbit.elevationDeg = 0.0;
+        camera.reason = kind == DataKind::Anatomical
+                            ? "an anatomical slab, thin from front to back: seen from the front (coronal), head up"
+                            : "a slab, thin toward the viewer: seen from the front";
+    } else if (slab == 0) {
+        orbit.azimuthDeg = 90.0;
+        orbit.elevationDeg = 0.0;
+        camera.reason = kind == DataKind::Anatomical
+                            ? "an anatomical slab, thin from side to side: seen from the side (sagittal), head up"
+                            : "a slab, thin across: seen from the side";
     } else if (kind == DataKind::Anatomical) {
         orbit.azimuthDeg = 0.0;
         orbit.elevationDeg = 0.0;
+        camera.reason = "anatomical: seen from the front, head up";
+    } else {
+        camera.reason = "no axis meaning in the file: an oblique three-quarter view";
     }
-    return orbit;
-}
-
-std::string kindText(DataKind kind) {
-    switch (kind) {
-        case DataKind::Geographic: return "geographic: seen from above, north up";
-        case DataKind::Anatomical: return "anatomical: seen from the front, head up";
-        case DataKind::Other: return "no axis meaning in the file: an oblique three-quarter view";
-    }
-    return "";
+    return camera;
 }
 
 // Lengths of a microscope's scale: micrometres or nanometres, as the readers spell them.
@@ -163,9 +202,10 @@ AutomaticScene automaticScene(const Series& series, const std::filesystem::path&
     result.explanation = frame.explanation;
 
     const DataKind kind = dataKindOf(series);
-    scene.camera.pose = automaticOrbit(kind);
+    const AutomaticCamera camera = automaticCamera(kind, series, frame);
+    scene.camera.pose = camera.orbit;
     scene.camera.framing = Framing::Visible;
-    result.explanation.push_back("camera: " + kindText(kind) + ", framed on the visible data");
+    result.explanation.push_back("camera: " + camera.reason + ", framed on the visible data");
     // A map's land is the missing values at its surface: the coast drawn where they meet the data.
     scene.annotations.coast = kind == DataKind::Geographic;
     if (kind == DataKind::Geographic)

@@ -21,11 +21,12 @@ run_mpi() {
 
 SCENE="$SOURCE_DIR/data/scenes/figure4-temporal-mip.json"
 
-# expect_same_as_one_process ONE OTHER: the images within the thresholds of
-# tests/distributed/distributed_equivalence.cpp, which says why they are not 0.
+# expect_same_as_one_process ONE OTHER [MEAN]: the images within the thresholds of
+# tests/distributed/distributed_equivalence.cpp, which says why they are not 0 (MEAN: another
+# mean difference limit, where the case says why).
 expect_same_as_one_process() {
     run_tstyles -- compare "$1" "$2" --max-difference 28 --pixel-threshold 3 --max-failing-share 0.02 \
-        --max-mean 0.03 --min-ssim 0.999
+        --max-mean "${3:-0.03}" --min-ssim 0.999
     expect_exit 0
 }
 
@@ -80,8 +81,12 @@ case_automatic_scene_in_blocks() {
     run_mpi 2 animate "$hurricane" --orbit 90 --frames 3 --width 64 --height 64 -o "$SCRATCH/two/" --distributed
     expect_exit 0
     expect_stdout_contains "each process read only its block"
+    # The automatic camera sees the hurricane, a slab, from above (docs/automatic-scene.md): more
+    # rays reach the termination opacity in the upper block, whose last 1 % the lower one then
+    # adds, so the mean difference is larger than the paper scenes' (measured 0.0314/255 at 64x64,
+    # 0.0287 and 0.0289 at 128x128, max 2/255); 0.04 is 1.3 times the largest.
     for frame in 0000 0002; do
-        expect_same_as_one_process "$SCRATCH/one/frame-$frame.png" "$SCRATCH/two/frame-$frame.png"
+        expect_same_as_one_process "$SCRATCH/one/frame-$frame.png" "$SCRATCH/two/frame-$frame.png" 0.04
     done
 }
 

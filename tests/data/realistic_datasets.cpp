@@ -363,6 +363,33 @@ void writeCtHeadPerfusion(const std::filesystem::path& file) {
                              });
 }
 
+void writeMrSlab(const std::filesystem::path& file) {
+    writeNifti<std::int16_t>(file, {128, 128, 24, 3, DT_INT16, {2.0, 2.0, 2.2}, 60.0},
+                             [](int x, int y, int z, int t, std::size_t index) {
+                                 // An axial slab through the ventricles: the head a little longer
+                                 // front to back (y, anterior), narrowing away from the middle slice.
+                                 const double narrowing = std::sqrt(1.0 - std::pow((z - 11.5) / 40.0, 2.0));
+                                 const double hx = (x - 63.5) / (54.0 * narrowing), hy = (y - 63.5) / (62.0 * narrowing);
+                                 const double r = std::sqrt(hx * hx + hy * hy);
+                                 const double noise = gaussian(index);
+                                 if (r > 1.0) return std::int16_t(std::lround(std::abs(6.0 * noise)));
+                                 if (r > 0.93) return std::int16_t(std::lround(900.0 + 30.0 * noise));  // scalp fat
+                                 if (r > 0.88) return std::int16_t(std::lround(60.0 + 10.0 * noise));   // skull
+                                 double signal = r > 0.75 ? 620.0 : 760.0;  // grey matter outside, white inside
+                                 // The lateral ventricles: two crescents either side of the midline, dark.
+                                 for (const double side : {-1.0, 1.0}) {
+                                     const double vx = (x - 63.5 - side * 9.0) / 6.0, vy = (y - 66.0) / 22.0;
+                                     if (vx * vx + vy * vy <= 1.0) signal = 180.0;
+                                 }
+                                 // An enhancing lesion in the right frontal lobe (RAS: +x right, +y anterior).
+                                 const double lx = (x - 84.0) / 7.0, ly = (y - 92.0) / 7.0;
+                                 const double contrast[3] = {0.0, 0.7, 1.0};
+                                 if (lx * lx + ly * ly <= 1.0 && std::abs(z - 12.0) <= 5.0)
+                                     signal = 700.0 + 600.0 * contrast[t];
+                                 return std::int16_t(std::lround(signal * (1.0 + 0.02 * noise)));
+                             });
+}
+
 void writeOceanAnomalies(const std::filesystem::path& file) {
     OceanShape shape{3, 12, 30, 40, {6939.0 + 14.0, 6939.0 + 45.0, 6939.0 + 73.0}, oceanLevels(12),
                      evenly(30.0, 45.0, 30), evenly(-40.0, -20.0, 40)};

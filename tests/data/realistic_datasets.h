@@ -63,4 +63,10 @@ void writeBrainFollowUp(const std::filesystem::path& file);
 // time-step) and the right hemisphere's tissue enhances by 15 HU.
 void writeCtHeadPerfusion(const std::filesystem::path& file);
 
+// A contrast-enhanced MR slab: NIfTI-1 int16, 128 x 128 x 24 voxels of 2 x 2 x 2.2 mm (a 256 mm
+// field, 53 mm thick, axial), 3 time-steps a minute apart. Scalp, skull, grey and white matter,
+// two dark lateral ventricles, noise of 2 %, and a lesion in the right frontal lobe that enhances
+// from 700 to 1120 and 1300.
+void writeMrSlab(const std::filesystem::path& file);
+
 }  // namespace tstyles::testdata

@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
         writeFmriRun(folder / "fmri-run.nii");
         writeBrainFollowUp(folder / "brain-follow-up.nii");
         writeCtHeadPerfusion(folder / "ct-head-perfusion.nii");
+        writeMrSlab(folder / "mr-slab.nii");
     } catch (const std::exception& error) {
         std::cerr << "write_realistic_datasets: " << error.what() << "\n";
         return 2;

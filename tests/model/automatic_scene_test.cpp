@@ -189,3 +189,82 @@ TEST(AutomaticScene, AnOutlineWithTheWindowGivesTheSceneAndReadsNoValue) {
 
 }  // namespace
 }  // namespace tstyles
+
+namespace tstyles {
+namespace {
+
+// Two time-steps of a smooth field on a grid of `dims` nodes `spacing` apart, with the axes given.
+Series slabSeries(glm::ivec3 dims, glm::dvec3 spacing, const std::array<SpatialAxis, 3>& axes) {
+    Series series;
+    series.axes = axes;
+    series.valueRange = {0.0, 1.0};
+    RectilinearGrid grid;
+    grid.dims = dims;
+    grid.spacing = spacing;
+    for (int t = 0; t < 2; ++t) {
+        TimeStep step;
+        step.time = t;
+        step.grid = grid;
+        for (int z = 0; z < dims.z; ++z)
+            for (int y = 0; y < dims.y; ++y)
+                for (int x = 0; x < dims.x; ++x)
+                    step.density.push_back(float(0.5 + 0.4 * std::sin(0.3 * x + 0.2 * y + 0.5 * z + t)));
+        series.steps.push_back(std::move(step));
+    }
+    return series;
+}
+
+View automaticViewOf(const Series& series, std::string* cameraLine = nullptr) {
+    const AutomaticScene automatic = automaticScene(series, "slab.nc");
+    for (const std::string& line : automatic.explanation)
+        if (cameraLine && line.rfind("camera:", 0) == 0) *cameraLine = line;
+    const SceneOnSeries fitted = fitSceneToSeries(automatic.scene, series);
+    return resolveView(fitted.scene.camera, fitted.framed, fitted.series.worldBounds(), 400, 300);
+}
+
+}  // namespace
+
+// The MR slab of 24 slices (53 mm) across a 256 mm field: seen from above (looking down the
+// display's up, the head-foot axis), anterior (display +z) at the image's top.
+TEST(AutomaticScene, AnAxialMrSlabIsSeenFromAboveWithAnteriorAtTheTop) {
+    const auto file = sampleFolder() / "mr-slab.nii";
+    testdata::writeMrSlab(file);
+    const Series series = openSeries(file, ReadOptions{});
+    std::string cameraLine;
+    const View view = automaticViewOf(series, &cameraLine);
+    const glm::dvec3 looking = glm::normalize(view.target - view.eye);
+    EXPECT_NEAR(looking.y, -1.0, 1e-9);
+    EXPECT_NEAR(view.up.z, 1.0, 1e-9);
+    EXPECT_NE(cameraLine.find("seen from above (axial), anterior at the top"), std::string::npos) << cameraLine;
+}
+
+// A slab without axis meaning is seen across its thin axis: thin toward the viewer (data z) from the
+// front, thin across (data x) from the side, at the large face either way.
+TEST(AutomaticScene, ASlabIsSeenAcrossItsThinAxis) {
+    const std::array<SpatialAxis, 3> voxels{};
+    const View front = automaticViewOf(slabSeries({60, 50, 8}, glm::dvec3(1.0), voxels));
+    EXPECT_NEAR(glm::normalize(front.target - front.eye).z, -1.0, 1e-9);
+    const View side = automaticViewOf(slabSeries({8, 50, 60}, glm::dvec3(1.0), voxels));
+    EXPECT_NEAR(glm::normalize(side.target - side.eye).x, -1.0, 1e-9);
+    // Not a slab (the thinnest over a third of the others): the oblique three-quarter view.
+    const View block = automaticViewOf(slabSeries({60, 50, 30}, glm::dvec3(1.0), voxels));
+    const glm::dvec3 looking = glm::normalize(block.target - block.eye);
+    EXPECT_GT(std::abs(looking.x), 0.1);
+    EXPECT_GT(std::abs(looking.y), 0.1);
+}
+
+// The OME-Zarr ocean of the issue: kilometres across (180 x 90 cells of 111 km), metres deep (19
+// levels to 1 km), no names that say which way is up. The thin axis goes up, is exaggerated to a
+// quarter of the width (19 869 km / 4 over 990 m: 5 017, 5 000 to two digits), and is seen from
+// above.
+TEST(AutomaticScene, AnExtremelyThinAxisGoesUpExaggeratedAndIsSeenFromAbove) {
+    const std::array<SpatialAxis, 3> axes{SpatialAxis{"x", "km"}, SpatialAxis{"y", "km"}, SpatialAxis{"z", "m"}};
+    const Series series = slabSeries({180, 90, 19}, {111.0, 111.0, 55.0}, axes);
+    const DisplayFrame frame = chooseDisplayFrame(automaticScene(series, "ocean.zarr").scene.display, series);
+    EXPECT_NE(frame.rotation[2][1], 0.0);  // display up (row 1) is the data's z (column 2)
+    EXPECT_DOUBLE_EQ(frame.verticalExaggeration, 5000.0);
+    const View view = automaticViewOf(series);
+    EXPECT_NEAR(glm::normalize(view.target - view.eye).y, -1.0, 1e-9);
+}
+
+}  // namespace tstyles
