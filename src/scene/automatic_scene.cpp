@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "tstyles/scene/automatic_opacity.h"
+#include "tstyles/scene/automatic_step.h"
 #include "tstyles/scene/boundary_gradient.h"
 #include "tstyles/scene/temporal_change.h"
 #include "tstyles/scene/temporal_compositors.h"
@@ -201,6 +202,11 @@ AutomaticScene automaticScene(const Series& series, const std::filesystem::path&
     const DisplayFrame frame = chooseDisplayFrame(scene.display, series);
     result.explanation = frame.explanation;
 
+    if (const auto step = automaticStep(series, frame)) {
+        scene.raycast.step = *step;
+        result.explanation.push_back("ray step: " + number(*step) +
+                                     " (half the typical cell: the lower quartile of the spacings along each axis)");
+    }
     const DataKind kind = dataKindOf(series);
     const AutomaticCamera camera = automaticCamera(kind, series, frame);
     scene.camera.pose = camera.orbit;

@@ -50,13 +50,15 @@ using namespace tstyles;
 //   mapping can flip the pick, and the pixel takes the other time-step's colour (one pixel of
 //   65 536, 14/255 at N = 2 and 4).
 // Measured on llvmpipe at 256x256, N = 2 and 4: at most 3/255 elsewhere, at most 0.005 % of the
-// pixels beyond 2/255, mean at most 0.022/255 (docs/scaling.md).
+// pixels beyond 2/255, mean at most 0.022/255 on the paper's scenes (docs/scaling.md), and 0.031/255
+// on the hurricane's automatic scene since it is seen from above (6 December 2026: more rays reach
+// the termination opacity in the upper block, which the lower one then tops up).
 ComparisonThresholds distributedThresholds() {
     ComparisonThresholds thresholds;
     thresholds.maxDelta = 28;                 // a near-tie's other colour: 14 measured, twice that
     thresholds.pixelThreshold = 3;            // early termination
     thresholds.maxFailingFraction = 0.0002;   // 13 pixels of 65 536
-    thresholds.maxMeanDelta = 0.03;
+    thresholds.maxMeanDelta = 0.04;  // 0.031 measured (the automatic hurricane from above)
     thresholds.minSsim = 0.999;
     return thresholds;
 }

@@ -15,6 +15,7 @@
 #include "tstyles/data/manifest.h"
 #include "tstyles/data/series_opener.h"
 #include "tstyles/scene/automatic_scene.h"
+#include "tstyles/scene/automatic_step.h"
 #include "tstyles/scene/scene_file.h"
 
 namespace tstyles {
@@ -265,6 +266,41 @@ TEST(AutomaticScene, AnExtremelyThinAxisGoesUpExaggeratedAndIsSeenFromAbove) {
     EXPECT_DOUBLE_EQ(frame.verticalExaggeration, 5000.0);
     const View view = automaticViewOf(series);
     EXPECT_NEAR(glm::normalize(view.target - view.eye).y, -1.0, 1e-9);
+}
+
+}  // namespace tstyles
+
+namespace tstyles {
+
+// The automatic step (automatic_step.h): half the lower quartile of the node distances along each
+// axis, the smallest over the axes. Levels at 0, 1, 3, 6, 10, 15 are 1, 2, 3, 4 and 5 apart: the
+// lower quartile (the second of five) is 2, under the even axes' 5, so the step is 1, where the
+// renderer's default would take half the thinnest level, 0.5. An even grid gets the default.
+TEST(AutomaticStep, HalfTheLowerQuartileOfTheLevelSpacings) {
+    Series series;
+    RectilinearGrid grid;
+    grid.dims = {4, 4, 6};
+    grid.spacing = {5.0, 5.0, 1.0};
+    grid.axisPositions[2] = {0.0, 1.0, 3.0, 6.0, 10.0, 15.0};
+    TimeStep step;
+    step.grid = grid;
+    series.steps.push_back(step);
+    const auto uneven = automaticStep(series, DisplayFrame{});
+    ASSERT_TRUE(uneven.has_value());
+    EXPECT_DOUBLE_EQ(*uneven, 1.0);
+    EXPECT_DOUBLE_EQ(0.5 * series.finestSpacing(), 0.5);
+
+    // Drawn twice as tall (a vertical exaggeration of 2 on display y, the grid's y here): y's
+    // spacing becomes 10, z's quartile 2 is still the least.
+    DisplayFrame tall;
+    tall.scale = {1.0, 2.0, 1.0};
+    EXPECT_DOUBLE_EQ(*automaticStep(series, tall), 1.0);
+    DisplayFrame deep;
+    deep.scale = {1.0, 1.0, 3.0};  // z drawn 3 times longer: its quartile 6, x's 5 is the least
+    EXPECT_DOUBLE_EQ(*automaticStep(series, deep), 2.5);
+
+    series.steps[0].grid = RectilinearGrid{{4, 4, 4}, {0.2, 0.3, 0.4}, {}};
+    EXPECT_DOUBLE_EQ(*automaticStep(series, DisplayFrame{}), 0.5 * series.finestSpacing());
 }
 
 }  // namespace tstyles
