@@ -76,6 +76,22 @@ std::optional<int> slabAxis(const Series& series, const DisplayFrame& frame) {
     return thin;
 }
 
+// How a slab thin along each display axis (x, y, z) is seen: at its large face.
+struct SlabView {
+    double azimuthDeg;
+    double elevationDeg;
+    double anatomicalAzimuthDeg;  // from above, the image's top is display -z at azimuth 0, +z (anterior) at 180
+    const char* reason;
+    const char* anatomicalReason;
+};
+constexpr SlabView kSlabViews[3] = {
+    {90.0, 0.0, 90.0, "a slab, thin across: seen from the side",
+     "an anatomical slab, thin from side to side: seen from the side (sagittal), head up"},
+    {0.0, 90.0, 180.0, "a slab, thin along the vertical: seen from above",
+     "an anatomical slab, thin from head to foot: seen from above (axial), anterior at the top"},
+    {0.0, 0.0, 0.0, "a slab, thin toward the viewer: seen from the front",
+     "an anatomical slab, thin from front to back: seen from the front (coronal), head up"}};
+
 // Geographic data straight from above, north up, as a map is read (the surface first along the
 // rays; from an oblique angle a deep, exaggerated column's south wall filled the picture). A slab
 // across its thin axis, at its large face: from above (anatomical: an axial view, anterior at the
@@ -89,25 +105,12 @@ AutomaticCamera automaticCamera(DataKind kind, const Series& series, const Displ
         orbit.azimuthDeg = 0.0;
         orbit.elevationDeg = 90.0;
         camera.reason = "geographic: seen from above, north up";
-    } else if (slab == 1) {
-        // From above, the image's top is display -z at azimuth 0; the anterior (display +z) at 180.
-        orbit.azimuthDeg = kind == DataKind::Anatomical ? 180.0 : 0.0;
-        orbit.elevationDeg = 90.0;
-        camera.reason = kind == DataKind::Anatomical
-                            ? "an anatomical slab, thin from head to foot: seen from above (axial), anterior at the top"
-                            : "a slab, thin along the vertical: seen from above";
-    } else if (slab == 2) {
-        orbit.azimuthDeg = 0.0;
-        orbit.elevationDeg = 0.0;
-        camera.reason = kind == DataKind::Anatomical
-                            ? "an anatomical slab, thin from front to back: seen from the front (coronal), head up"
-                            : "a slab, thin toward the viewer: seen from the front";
-    } else if (slab == 0) {
-        orbit.azimuthDeg = 90.0;
-        orbit.elevationDeg = 0.0;
-        camera.reason = kind == DataKind::Anatomical
-                            ? "an anatomical slab, thin from side to side: seen from the side (sagittal), head up"
-                            : "a slab, thin across: seen from the side";
+    } else if (slab) {
+        const SlabView& view = kSlabViews[std::size_t(*slab)];
+        const bool anatomical = kind == DataKind::Anatomical;
+        orbit.azimuthDeg = anatomical ? view.anatomicalAzimuthDeg : view.azimuthDeg;
+        orbit.elevationDeg = view.elevationDeg;
+        camera.reason = anatomical ? view.anatomicalReason : view.reason;
     } else if (kind == DataKind::Anatomical) {
         orbit.azimuthDeg = 0.0;
         orbit.elevationDeg = 0.0;
