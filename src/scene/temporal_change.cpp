@@ -2,7 +2,9 @@
 #include "tstyles/scene/temporal_change.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "tstyles/data/density_sampling.h"
@@ -22,10 +24,12 @@ constexpr std::size_t kMostChangedNodes = std::size_t(1) << 20;
 constexpr double kUnchangedShareOfChange = 0.1;
 // The noise-only range that a place exceeds this rarely is not called a change.
 constexpr double kNoiseRangeProbability = 0.01;
-// The median of |N(0, 2)| and of |N(0, 6)|: the median absolute first and second differences of
-// independent Gaussian noise of standard deviation 1 (0.67449 sqrt 2, 0.67449 sqrt 6).
-constexpr double kMedianFirstDifference = 0.953873;
-constexpr double kMedianSecondDifference = 1.652097;
+// The median absolute k-th differences of independent Gaussian noise of standard deviation 1, k = 1
+// to 4: the median of |N(0, C(2k, k))|, 0.67449 times sqrt 2, sqrt 6, sqrt 20 and sqrt 70.
+constexpr std::array<double, 4> kMedianDifference = {0.953873, 1.652097, 3.016418, 5.643163};
+// The third and fourth differences are taken where they leave this many values (monthly series of
+// a year and longer): a season's curvature, which the second differences still see, fades in them.
+constexpr std::size_t kFewestHigherDifferences = 8;
 // The changing places' opacity gain is at most this.
 constexpr double kMostGain = 8.0;
 
@@ -80,13 +84,19 @@ std::vector<glm::dvec3> changeLatticePoints(const Bounds& visible) {
 
 double noiseOfPlace(const std::vector<double>& densities) {
     if (densities.size() < 2) return 0.0;
-    std::vector<double> first, second;
-    for (std::size_t index = 1; index < densities.size(); ++index) {
-        first.push_back(std::abs(densities[index] - densities[index - 1]));
-        if (index >= 2) second.push_back(std::abs(densities[index] - 2.0 * densities[index - 1] + densities[index - 2]));
+    double noise = std::numeric_limits<double>::infinity();
+    std::vector<double> differences = densities;
+    for (std::size_t order = 1; order <= kMedianDifference.size() && differences.size() >= 2; ++order) {
+        for (std::size_t index = 0; index + 1 < differences.size(); ++index)
+            differences[index] = differences[index + 1] - differences[index];
+        differences.pop_back();
+        if (order > 2 && differences.size() < kFewestHigherDifferences) break;
+        std::vector<double> magnitudes(differences.size());
+        std::transform(differences.begin(), differences.end(), magnitudes.begin(),
+                       [](double difference) { return std::abs(difference); });
+        noise = std::min(noise, medianOf(std::move(magnitudes)) / kMedianDifference[order - 1]);
     }
-    const double fromFirst = medianOf(std::move(first)) / kMedianFirstDifference;
-    return second.empty() ? fromFirst : std::min(fromFirst, medianOf(std::move(second)) / kMedianSecondDifference);
+    return noise;
 }
 
 void addChange(const std::vector<double>& densities, const Stf& stf, PlaceChanges& places) {

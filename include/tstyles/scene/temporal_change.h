@@ -48,13 +48,16 @@ inline constexpr std::size_t kFewestPlacesPerBand = 32;
 inline constexpr std::size_t kFewestStepsForBands = 4;
 
 // The standard deviation of independent noise on a place's densities (in time order, with data),
-// told apart from real change by taking the smaller of two robust estimates: the median absolute
-// first difference (0 where the place holds one value most of the time: an event, a passing body)
-// and the median absolute second difference (about 0 where it changes smoothly: a trend, a season;
-// from three values up), each divided by what it is for Gaussian noise of standard deviation 1. Over
-// many places the median of this estimate is 0.87 to 1.0 of the noise's standard deviation (1.0
-// for two values, 0.87 for four, 0.94 for forty), so that the places' median noise is the data's
-// noise wherever fewer than half of the places hold an event or a jump.
+// told apart from real change by taking the smallest of robust estimates: the median absolute
+// first difference (0 where the place holds one value most of the time: an event, a passing body),
+// the median absolute second difference (0 where it changes linearly: a trend; from three values
+// up), and from eleven values up the third and fourth (a season sampled monthly: its k-th
+// differences shrink as (2 sin(pi / 12))^k = 0.52^k of its amplitude, noise's grow as sqrt C(2k, k),
+// so that its second differences alone read a twelfth of its amplitude as noise and made the
+// neighbouring months of its peak tie), each divided by what it is for Gaussian noise of standard
+// deviation 1. Over many places the median of this estimate is 0.8 to 1.0 of the noise's standard
+// deviation (measured in tests/model/unchanged_threshold_test.cpp), so that the places' median
+// noise is the data's noise wherever fewer than half of the places hold an event or a jump.
 double noiseOfPlace(const std::vector<double>& densities);
 
 // A place's densities over time (missing ones included): where the STF shows at least one of them
