@@ -46,6 +46,12 @@ struct TemporalCharacteristic {
     // The time-step whose density, STF, mask and gradient (for styles) the sample shows.
     TimeStepSample representative;
     vec4 colorOpacity;  // READS_COMPOSITED
+    // How much the sample changes over time, which the largest-change ray mode compares: where a
+    // compositor picked a time-step (pickedCharacteristic) with UNCHANGED_TIME, the range of the
+    // densities over the time-steps at the sample (2, above every range, where only one has data:
+    // the place appears or disappears); where the gradient TSTF reads the compositor's value (a
+    // change, a spread, a trend, a difference), its magnitude; 0 elsewhere.
+    float change;
 };
 
 TimeStepSample noTimeStep() {
@@ -76,15 +82,15 @@ TimeStepSample representativeSample(Representative representative) {
 }
 
 TemporalCharacteristic transparentCharacteristic() {
-    return TemporalCharacteristic(READS_NOTHING, 0.0, noTimeStep(), vec4(0.0));
+    return TemporalCharacteristic(READS_NOTHING, 0.0, noTimeStep(), vec4(0.0), 0.0);
 }
 
 TemporalCharacteristic characteristicOf(int reads, float value, TimeStepSample representative) {
-    return TemporalCharacteristic(reads, value, representative, vec4(0.0));
+    return TemporalCharacteristic(reads, value, representative, vec4(0.0), reads == READS_GRADIENT_TSTF ? abs(value) : 0.0);
 }
 
 TemporalCharacteristic compositedCharacteristic(vec4 colorOpacity) {
-    return TemporalCharacteristic(READS_COMPOSITED, 0.0, noTimeStep(), colorOpacity);
+    return TemporalCharacteristic(READS_COMPOSITED, 0.0, noTimeStep(), colorOpacity, 0.0);
 }
 
 // Unchanged places (UNCHANGED_TIME, CompositorOptions::unchanged): their uniforms (unchangedBelow,
@@ -97,9 +103,14 @@ const float UNCHANGED_INTERIOR = 0.25;
 // the compositor has no runner-up): its index, or the STF alone where that means nothing.
 TemporalCharacteristic pickedCharacteristic(TimeStepSample picked, float range, float margin) {
     int band = clamp(int(picked.density * float(UNCHANGED_DENSITY_BANDS)), 0, UNCHANGED_DENSITY_BANDS - 1);
-    if (UNCHANGED_TIME != 0 && (range <= unchangedBelow[band] || margin <= unchangedTie[band]))
-        return unchangedOpacity <= 0.0 ? transparentCharacteristic() : characteristicOf(READS_STF, 0.0, picked);
-    return characteristicOf(READS_INDEX_TSTF, float(picked.step), picked);
+    TemporalCharacteristic picks = characteristicOf(READS_INDEX_TSTF, float(picked.step), picked);
+    if (UNCHANGED_TIME != 0 && (range <= unchangedBelow[band] || margin <= unchangedTie[band])) {
+        if (unchangedOpacity <= 0.0) return transparentCharacteristic();
+        picks.reads = READS_STF;
+        picks.value = 0.0;
+    }
+    if (UNCHANGED_TIME != 0) picks.change = range;
+    return picks;
 }
 
 // Where the time-step's style is read at this sample (6 fetches when styled, 1 with precomputed

@@ -39,8 +39,8 @@ DistributedSource openDistributedSource(const std::vector<std::filesystem::path>
                                         const std::vector<std::filesystem::path>& datasetFiles,
                                         const DatasetOptions& datasetOptions) {
     const auto wholeSeries = [&](std::string reason) {
-        return DistributedSource{openSceneOrDataset(inputs, datasetFiles, datasetOptions), std::nullopt,
-                                 std::move(reason)};
+        return DistributedSource{openSceneOrDataset(inputs, datasetFiles, datasetOptions, RenderedBy::MergedBlocks),
+                                 std::nullopt, std::move(reason)};
     };
     if (inputs.size() != 1 || classifyInput(inputs.front()) != InputKind::Scene) {
         if (!datasetFiles.empty()) return wholeSeries("");  // refused there: --dataset needs a scene file
@@ -51,7 +51,7 @@ DistributedSource openDistributedSource(const std::vector<std::filesystem::path>
         Series outline = outlineFor(inputs.front(), datasetOptions);
         // The opacity window comes from the blocks' histogram (fitting_over_blocks.h).
         AutomaticScene automatic =
-            automaticScene(outline, userAbsolutePath({}, inputs.front()), OpacityWindow{});
+            automaticScene(outline, userAbsolutePath({}, inputs.front()), OpacityWindow{}, RenderedBy::MergedBlocks);
         return {SceneAndSeries{std::move(automatic.scene), std::move(outline), std::move(automatic.explanation)},
                 inputs.front(), "", true};
     }

@@ -202,6 +202,16 @@ std::optional<std::string> applyRayOverrides(Scene& scene, const Series& series,
             explanation = "ray " + toString(scene.rayMode) + " (--ray): " + rayModeInfo(scene.rayMode).summary;
         }
     }
+    // A compositor chosen for a file's automatic scene that its automatic mode does not go with
+    // (the average on a map or an MR): the rays composite, as the viewer does, and the STF follows.
+    if (automaticScene && overrides.compositor && !rayGiven)
+        if (const auto problem = rayModeProblem(scene); problem && problem->key == "ray.mode") {
+            const std::string automaticMode = toString(scene.rayMode);
+            scene.rayMode = kCompositeRay;
+            applyAutomaticRay(scene, automaticOpacityWindow(series), kCompositeRay);
+            explanation = "ray composite: " + toString(scene.compositor) + " (--tc) does not go with " +
+                          automaticMode + ", the file's automatic mode";
+        }
     if (overrides.compositor || rayGiven)
         if (const auto problem = rayModeProblem(scene))
             throwInputError("", overrides.rayMode || !overrides.compositor ? "--ray" : "--tc",
@@ -238,7 +248,7 @@ void applySceneOverrides(SceneAndSeries& opened, const SceneOverrides& overrides
 
 SceneAndSeries openSceneOrDataset(const std::vector<std::filesystem::path>& inputs,
                                   const std::vector<std::filesystem::path>& datasetFiles,
-                                  const DatasetOptions& datasetOptions) {
+                                  const DatasetOptions& datasetOptions, RenderedBy renderedBy) {
     if (inputs.size() == 1 && classifyInput(inputs.front()) == InputKind::Scene) {
         Scene scene = loadScene(inputs.front());
         Series series = openDataset(datasetFiles.empty() ? std::vector<std::filesystem::path>{scene.dataset} : datasetFiles,
@@ -250,7 +260,8 @@ SceneAndSeries openSceneOrDataset(const std::vector<std::filesystem::path>& inpu
     for (const auto& input : inputs)
         if (userPathKind({}, input) == PathKind::Missing) throwInputError(input, "", "no such file or folder");
     Series series = openDataset(inputs, datasetOptions);
-    AutomaticScene automatic = automaticScene(series, userAbsolutePath({}, inputs.front()));
+    AutomaticScene automatic =
+        automaticScene(series, userAbsolutePath({}, inputs.front()), automaticOpacityWindow(series), renderedBy);
     return {std::move(automatic.scene), std::move(series), std::move(automatic.explanation)};
 }
 

@@ -11,6 +11,7 @@
 #include "cli11_forward.h"
 
 #include "commands.h"
+#include "tstyles/scene/automatic_scene.h"
 #include "tstyles/scene/scene.h"
 
 namespace tstyles::cli {
@@ -47,9 +48,11 @@ std::optional<std::string> applyRayOverrides(Scene& scene, const Series& series,
                                              const SceneOverrides& overrides);
 
 // One scene file (its dataset, or `datasetFiles` instead), else the inputs are the files of one
-// dataset and the scene is the automatic one.
+// dataset and the scene is the automatic one (whose rays composite where the processes' frames
+// are merged: RenderedBy::MergedBlocks).
 SceneAndSeries openSceneOrDataset(const std::vector<std::filesystem::path>& inputs,
                                   const std::vector<std::filesystem::path>& datasetFiles,
-                                  const DatasetOptions& datasetOptions);
+                                  const DatasetOptions& datasetOptions,
+                                  RenderedBy renderedBy = RenderedBy::OneProcess);
 
 }  // namespace tstyles::cli

@@ -1,6 +1,7 @@
 // Raycasting program variants: their #defines, their modules and the list the build validates.
 #include "tstyles/render/raycast_variant.h"
 
+#include <algorithm>
 #include <set>
 #include <string>
 
@@ -244,13 +245,20 @@ std::vector<RaycastVariant> requestableRaycastVariants() {
                                               ? variant.customReads
                                               : compositorInfo(variant.compositor).reads;
             if (rayModeInfo(mode).needsValue && reads == CompositorReads::Composited) continue;
+            // A mode that reads the change: the picking compositors measure it with the unchanged-time
+            // switch on (as the renderer builds them); the scene's own index compositor does not.
+            if (rayModeInfo(mode).readsChange && reads == CompositorReads::IndexTstf) {
+                if (!compositorInfo(variant.compositor).takesUnchanged) continue;
+                variant.unchangedTime = true;
+            }
             const bool everyCompositor = variant.allAffine && !variant.masks && !variant.precomputedGradients &&
                                          variant.packedValidity != PackedValidity::Shared;
             const bool everyGrid = variant.compositor == compositorNamed("temporal-mip") ||
                                    (variant.compositor == compositorNamed("temporal-average") && !rayModeInfo(mode).needsValue);
             if (!everyCompositor && !everyGrid) continue;
             variant.rayMode = mode;
-            variants.push_back(variant);
+            if (std::find(variants.begin() + std::ptrdiff_t(compositeVariants), variants.end(), variant) == variants.end())
+                variants.push_back(variant);
         }
     }
     // The parts `bench --stages` times, once each: they leave the compositor and styles out.

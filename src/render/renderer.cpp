@@ -185,8 +185,10 @@ RaycastVariant Renderer::variantFor(const Scene& scene, const FrameOptions& opti
     variant.structuredGrids = gpuSeries_->structuredGrids().layerCount() > 0;
     variant.styledTracks = styleTextures_.styledTrackBits();
     variant.timeStepCapacity = timeStepCapacityFor(int(gpuSeries_->timeStepCount()));
-    variant.unchangedTime =
-        scene.compositorOptions.unchanged.has_value() && compositorInfo(scene.compositor).takesUnchanged;
+    // The largest-change ray mode compares the range that the picking compositors measure for
+    // unchanged places: they measure it for that mode whether or not the scene asks for them.
+    variant.unchangedTime = (scene.compositorOptions.unchanged.has_value() || rayModeInfo(scene.rayMode).readsChange) &&
+                            compositorInfo(scene.compositor).takesUnchanged;
     // The walk: the packed groups where the series has a packed atlas and the frame takes it.
     const PackedAlignedAtlas* packed = gpuSeries_->packedAtlas();
     if (options.naive) {
@@ -223,7 +225,9 @@ RaycastParameters Renderer::parametersFor(const Scene& scene, const View& view, 
     parameters.rayOptions = rayOptionUniforms(variant.rayMode, scene);
     parameters.stfVisibleRange = transferTables_.stfVisibleRange();
     if (variant.unchangedTime) {
-        const auto& unchanged = *scene.compositorOptions.unchanged;
+        // Without the scene's option (the largest-change mode alone): only places whose densities
+        // do not change at all, or tie exactly, show no time colour.
+        const UnchangedTime unchanged = scene.compositorOptions.unchanged.value_or(UnchangedTime{});
         static_assert(kUnchangedDensityBands == contract::UNCHANGED_DENSITY_BANDS);
         for (int band = 0; band < contract::UNCHANGED_DENSITY_BANDS; ++band) {
             const auto at = std::size_t(band);

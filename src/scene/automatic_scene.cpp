@@ -29,6 +29,7 @@ constexpr double kSlabShare = 1.0 / 3.0;
 
 struct AutomaticCamera {
     OrbitCamera orbit;
+    Projection projection = Projection::Perspective;
     std::string reason;  // for `info`
 };
 
@@ -51,10 +52,15 @@ double rawValue(const Series& series, double density) {
     return series.valueRange[0] + density * (series.valueRange[1] - series.valueRange[0]);
 }
 
-std::string windowText(const Series& series, const OpacityWindow& window) {
-    std::string text = "opacity: 0 at " + number(rawValue(series, window.low)) + " (5th percentile) rising to " +
-                       number(window.peak) + " at " + number(rawValue(series, window.high)) +
-                       (window.high == 1.0 ? " (the largest value)" : " (99th percentile)");
+// The window as the mode's STF has it (automaticRayWindow): where its ramp starts and ends.
+std::string windowText(const Series& series, const OpacityWindow& window, AutomaticStf stf) {
+    const bool everyPlace = stf == AutomaticStf::EveryPlace;
+    std::string text = "opacity: 0 at " + number(rawValue(series, window.low)) +
+                       (everyPlace ? "" : " (5th percentile)") + " rising to " + number(window.peak) + " at " +
+                       number(rawValue(series, window.high)) +
+                       (everyPlace               ? " (5th percentile) and above: every place the data holds shows"
+                        : window.high == 1.0 ? " (the largest value)"
+                                             : " (99th percentile)");
     if (window.background)
         text += "; background " + number(rawValue(series, (*window.background)[0])) + " .. " +
                 number(rawValue(series, (*window.background)[1])) + " (" +
@@ -92,8 +98,8 @@ constexpr SlabView kSlabViews[3] = {
     {0.0, 0.0, 0.0, "a slab, thin toward the viewer: seen from the front",
      "an anatomical slab, thin from front to back: seen from the front (coronal), head up"}};
 
-// Geographic data straight from above, north up, as a map is read (the surface first along the
-// rays; from an oblique angle a deep, exaggerated column's south wall filled the picture). A slab
+// Geographic data straight from above, north up, orthographic, as a map is read (the surface first
+// along the rays; from an oblique angle a deep, exaggerated column's south wall filled the picture). A slab
 // across its thin axis, at its large face: from above (anatomical: an axial view, anterior at the
 // top), from the front, or from the side (display +x). Other anatomical data from the front, head
 // up; anything else from an oblique three-quarter view.
@@ -104,7 +110,12 @@ AutomaticCamera automaticCamera(DataKind kind, const Series& series, const Displ
     if (kind == DataKind::Geographic) {
         orbit.azimuthDeg = 0.0;
         orbit.elevationDeg = 90.0;
-        camera.reason = "geographic: seen from above, north up";
+        // Parallel rays, as a map is drawn: a perspective's rays lean out by up to half its field
+        // of view, and through a column exaggerated to a quarter of the map's width they passed
+        // under the coasts and showed the deep water beside them as a grey rim on one side of
+        // every continent.
+        camera.projection = Projection::Orthographic;
+        camera.reason = "geographic: seen from above, north up, orthographic (parallel rays, as a map is drawn)";
     } else if (slab) {
         const SlabView& view = kSlabViews[std::size_t(*slab)];
         const bool anatomical = kind == DataKind::Anatomical;
@@ -131,6 +142,11 @@ bool hasMicroscopeAxes(const Series& series) {
 
 std::pair<RayMode, std::string> automaticRayMode(const Series& series) {
     const DataKind kind = dataKindOf(series);
+    if (kind == DataKind::Geographic)
+        return {rayModeNamed("largest-change"),
+                "ray: largest-change (the sample along each ray whose values change most over time): a map seen from "
+                "above shows each place at the depth where it changes most, in the colour of its time, not a mix of "
+                "every layer"};
     const bool imagingAxes = kind == DataKind::Anatomical || hasMicroscopeAxes(series);
     // Intensities are not below zero; noise around a zero background (or its interpolation) may dip
     // a little under it, while CT's Hounsfield units reach -1000 against a few thousand.
@@ -147,21 +163,38 @@ std::pair<RayMode, std::string> automaticRayMode(const Series& series) {
 
 namespace {
 
-// A projection shows one sample per pixel: the unchanged places keep the STF's whole opacity (the
-// anatomy in grey, time in colour where it changes, as an fMRI overlay shows it); a composited ray
-// sees through their faint share to what changes.
+// A projection of values shows one sample per pixel: the unchanged places keep the STF's whole
+// opacity (the anatomy in grey, time in colour where it changes, as an fMRI overlay shows it); a
+// composited ray sees through their faint share to what changes; where the STF is opaque at every
+// place (the largest change), the faint share tells them from the time colours (June's white).
 double automaticUnchangedOpacity(RayMode mode) {
-    return rayModeInfo(mode).pixelTakesStfOpacity ? 1.0 : kUnchangedOpacity;
+    return rayModeInfo(mode).automaticStf == AutomaticStf::LargestValue ? 1.0 : kUnchangedOpacity;
 }
 
-// The window a mode's STF ramps over: where one sample makes the pixel (a projection), up to an
-// opacity of 1, and up to the largest value instead of the 99th percentile: the largest values
-// along the rays lie near the top of the data's range, and would all be white.
+// The smallest ramp's width, in density: a window whose 5th percentile is the smallest value.
+constexpr double kNarrowestRamp = 1.0 / kOpacityHistogramBins;
+
+// The window a mode's STF ramps over. Where one sample of the largest value makes the pixel, up to
+// an opacity of 1, and up to the largest value instead of the 99th percentile: the largest values
+// along the rays lie near the top of the data's range, and would all be white. Where one sample of
+// any value does (the largest change), opaque from the 5th percentile up, rising from the smallest
+// value (or the background's top): every place the data holds shows.
 OpacityWindow automaticRayWindow(const OpacityWindow& window, RayMode mode) {
     OpacityWindow shown = window;
-    if (rayModeInfo(mode).pixelTakesStfOpacity) {
-        shown.peak = 1.0;
-        shown.high = 1.0;
+    switch (rayModeInfo(mode).automaticStf) {
+        case AutomaticStf::RayThrough: break;
+        case AutomaticStf::LargestValue:
+            shown.peak = 1.0;
+            shown.high = 1.0;
+            break;
+        case AutomaticStf::EveryPlace: {
+            shown.peak = 1.0;
+            shown.high = std::max(window.low, kNarrowestRamp);
+            const double floor = window.background ? (*window.background)[1] : 0.0;
+            shown.low = floor < shown.high ? floor : 0.0;
+            shown.low = std::min(shown.low, shown.high - kNarrowestRamp);
+            break;
+        }
     }
     return shown;
 }
@@ -169,7 +202,7 @@ OpacityWindow automaticRayWindow(const OpacityWindow& window, RayMode mode) {
 }  // namespace
 
 void applyAutomaticRay(Scene& scene, const OpacityWindow& window, RayMode mode) {
-    const bool projection = rayModeInfo(mode).pixelTakesStfOpacity;
+    const bool projection = rayModeInfo(mode).automaticStf != AutomaticStf::RayThrough;
     if (auto& unchanged = scene.compositorOptions.unchanged) unchanged->opacity = automaticUnchangedOpacity(mode);
     const OpacityWindow shown = automaticRayWindow(window, mode);
     scene.rayMode = mode;
@@ -195,7 +228,8 @@ AutomaticScene automaticScene(const Series& series, const std::filesystem::path&
     return automaticScene(series, dataset, automaticOpacityWindow(series));
 }
 
-AutomaticScene automaticScene(const Series& series, const std::filesystem::path& dataset, const OpacityWindow& window) {
+AutomaticScene automaticScene(const Series& series, const std::filesystem::path& dataset, const OpacityWindow& window,
+                              RenderedBy renderedBy) {
     AutomaticScene result;
     Scene& scene = result.scene;
     scene.dataset = dataset;
@@ -213,6 +247,7 @@ AutomaticScene automaticScene(const Series& series, const std::filesystem::path&
     const DataKind kind = dataKindOf(series);
     const AutomaticCamera camera = automaticCamera(kind, series, frame);
     scene.camera.pose = camera.orbit;
+    scene.camera.projection = camera.projection;
     scene.camera.framing = Framing::Visible;
     result.explanation.push_back("camera: " + camera.reason + ", framed on the visible data");
     // A map's land is the missing values at its surface: the coast drawn where they meet the data.
@@ -220,10 +255,15 @@ AutomaticScene automaticScene(const Series& series, const std::filesystem::path&
     if (kind == DataKind::Geographic)
         result.explanation.push_back("coast: a line where the surface's missing values (land) meet its data");
 
-    const auto [rayMode, rayReason] = automaticRayMode(series);
+    auto [rayMode, rayReason] = automaticRayMode(series);
+    if (renderedBy == RenderedBy::MergedBlocks && rayModeInfo(rayMode).merge != RayMerge::Over) {
+        rayReason = "ray: composite (the file would open in " + toString(rayMode) +
+                    ", but --distributed merges the processes' frames front to back, which holds for composite)";
+        rayMode = kCompositeRay;
+    }
     applyAutomaticRay(scene, window, rayMode);
     result.explanation.push_back(rayReason);
-    result.explanation.push_back(windowText(series, automaticRayWindow(window, rayMode)));
+    result.explanation.push_back(windowText(series, automaticRayWindow(window, rayMode), rayModeInfo(rayMode).automaticStf));
     result.explanation.push_back(scene.stf.curve.color.front().style.empty()
                                      ? std::string("shading: none (a projection has no surface to shade)")
                                      : std::string("shading: the lit-sphere style ") + kNeutralStyle + " on the STF");
@@ -240,8 +280,12 @@ AutomaticScene automaticScene(const Series& series, const std::filesystem::path&
         " where a place's values change by no more than a threshold fitted to the data (a tenth of the typical "
         "largest change, or above the noise); no time colour where two time-steps tie";
     scene.compositorOptions.unchanged->opacity = automaticUnchangedOpacity(scene.rayMode);
-    if (rayModeInfo(scene.rayMode).pixelTakesStfOpacity) {
+    const AutomaticStf stf = rayModeInfo(scene.rayMode).automaticStf;
+    if (stf == AutomaticStf::LargestValue) {
         result.explanation.push_back("unchanged places: no time colour, the STF's grey" + threshold);
+    } else if (stf == AutomaticStf::EveryPlace) {
+        result.explanation.push_back("unchanged places: no time colour, a faint grey (" + number(kUnchangedOpacity) +
+                                     " of the opacity)" + threshold);
     } else {
         result.explanation.push_back("unchanged places: no time colour and " + number(kUnchangedOpacity) +
                                      " of the opacity on boundaries (a quarter of that inside regions of one value)" +

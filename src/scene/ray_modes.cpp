@@ -89,6 +89,11 @@ std::optional<RayModeProblem> rayModeProblem(const Scene& scene) {
                                               toString(scene.compositor) +
                                               " composites the time-steps' colours, which have none; use composite, "
                                               "average or additive with it, or a compositor that picks a time-step"};
+    if (mode.readsChange && reads == CompositorReads::IndexTstf && !compositorInfo(scene.compositor).takesUnchanged)
+        return RayModeProblem{"ray.mode", std::string(mode.name) + " compares how much each place changes over time, "
+                                              "which the built-in compositors that pick a time-step measure (" +
+                                              listedNames(compositorsTakingUnchanged()) + "), and " +
+                                              toString(scene.compositor) + " does not"};
     // Compositors that pick a time-step show its density, in [0, 1].
     if (const RayModeOption* values = mode.options.find("values"); values && reads == CompositorReads::IndexTstf) {
         const std::vector<double> isoValues = scene.rayOptions.numbers(*values);

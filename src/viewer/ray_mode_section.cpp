@@ -15,7 +15,8 @@ namespace tstyles::viewer {
 namespace {
 
 // The modes the compositor goes with (rayModeProblem): a mode that needs a value is not offered
-// with a compositor that composites the time-steps.
+// with a compositor that composites the time-steps, nor one that reads the change with a
+// compositor that picks no time-step.
 std::vector<RayMode> offeredRayModes(const Scene& scene) {
     std::vector<RayMode> offered;
     for (const RayMode mode : allRayModes()) {

@@ -100,12 +100,15 @@ TEST(AnnotationLayout, ALongTitleIsShortenedWithAnEllipsisToFitBesideTheLegend) 
 }
 
 TEST(AnnotationLayout, TickLabelsStandOnTheBoxEdgesFacingTheViewer) {
-    // The ocean map seen from the automatic camera (south, above): the longitude labels on the
-    // front (southern) bottom edge, below the middle of the box in the picture.
+    // The ocean map seen from the south and above, in perspective (the automatic camera, straight
+    // above and orthographic, sees no face but the top, whose edges all face it): the longitude
+    // labels on the front (southern) bottom edge, below the middle of the box in the picture.
     const Font font = Font::openDefault();
-    const LayoutCase& ocean = *std::find_if(layoutCases().begin(), layoutCases().end(), [](const LayoutCase& c) {
+    LayoutCase ocean = *std::find_if(layoutCases().begin(), layoutCases().end(), [](const LayoutCase& c) {
         return c.name == "synthetic-sea_water_potential_temperature.nc";
     });
+    ocean.fitted.scene.camera.pose = OrbitCamera{.azimuthDeg = 0.0, .elevationDeg = 50.0};
+    ocean.fitted.scene.camera.projection = Projection::Perspective;
     const auto sized = planAt(ocean, {1920, 1080}, font);
     const AnnotationLayout& layout = sized->plan.layout;
     SCOPED_TRACE(describe(layout));

@@ -15,22 +15,25 @@ case_render_netcdf() {
     run_tstyles -- render "$SCRATCH/data/ocean-anomalies.nc" -o "$SCRATCH/ocean.png" --width 96 --height 80
     expect_exit 0
     expect_image "$SCRATCH/ocean.png" 96 80
-    expect_stdout_contains "(96x80, temporal-mip, 3 time-steps"
+    expect_stdout_contains "(96x80, temporal-mip, largest-change ray, 3 time-steps"
 }
 
-# info ends with what the automatic scene chose: a map of degrees with the surface up.
+# info ends with what the automatic scene chose: a map of degrees with the surface up, seen from
+# above as the largest change along each column.
 case_info_explains() {
     write_samples
     run_tstyles -- info "$SCRATCH/data/ocean-anomalies.nc"
     expect_exit 0
     expect_stdout_contains "orientation: right = +x (lon, east), up = +z (depth, up), toward the viewer = -y (lat, north)"
     expect_stdout_contains "aspect: map (the axes' units differ: degrees_east, m, degrees_north)"
-    expect_stdout_contains "camera: geographic: seen from above, north up"
-    expect_stdout_contains "unchanged places: no time colour and 0.35 of the opacity on boundaries"
+    expect_stdout_contains "camera: geographic: seen from above, north up, orthographic"
+    expect_stdout_contains "ray: largest-change (the sample along each ray whose values change most over time)"
+    expect_stdout_contains "unchanged places: no time colour, a faint grey (0.35 of the opacity)"
     run_tstyles -- info "$SCRATCH/data/ct-phantom.nii"
     expect_exit 0
     expect_stdout_contains "transparent"
     expect_stdout_contains "camera: anatomical: seen from the front, head up"
+    expect_stdout_contains "unchanged places: no time colour and 0.35 of the opacity on boundaries"
 }
 
 # scene writes the automatic parts as "auto", and the scene renders to the same image as the file.
@@ -47,6 +50,23 @@ case_scene_round_trip() {
     expect_exit 0
     "$OIIOTOOL" "$SCRATCH/from-scene.png" "$SCRATCH/from-file.png" --diff >/dev/null 2>&1 ||
         fail "the written scene renders differently from the dataset itself"
+}
+
+# A compositor for a map's automatic scene: the max density change goes with the largest change
+# along each column; the average, which composites the time-steps, turns the rays to composite
+# (said in `scene`'s explanation) instead of failing.
+case_map_compositors() {
+    write_samples
+    run_tstyles -- render "$SCRATCH/data/ocean-anomalies.nc" -o "$SCRATCH/change.png" --width 64 --height 64 \
+        --tc temporal-max-change
+    expect_exit 0
+    expect_stdout_contains "temporal-max-change, largest-change ray"
+    run_tstyles -- scene "$SCRATCH/data/ocean-anomalies.nc" -o "$SCRATCH/average.json" --tc temporal-average
+    expect_exit 0
+    expect_stdout_contains "ray composite: temporal-average (--tc) does not go with largest-change"
+    run_tstyles -- render "$SCRATCH/average.json" -o "$SCRATCH/average.png" --width 64 --height 64
+    expect_exit 0
+    expect_image "$SCRATCH/average.png" 64 64
 }
 
 # A written scene meets another dataset: its automatic camera and range are fitted to that one.

@@ -90,6 +90,24 @@ case_automatic_scene_in_blocks() {
     done
 }
 
+# A map's automatic scene draws the largest change along each column, which one process reduces
+# on its own: under --distributed the automatic rays composite instead (the over operator merges
+# the processes' frames), and the picture is one process's composited one (without the coast,
+# which the drawing process cannot take from values it does not hold: docs/annotations.md).
+case_automatic_map_composites() {
+    "$WRITE_REALISTIC_DATASETS" "$SCRATCH/data" >/dev/null || fail "write_realistic_datasets failed"
+    local ocean="$SCRATCH/data/ocean-anomalies.nc"
+    run_tstyles -- scene "$ocean" -o "$SCRATCH/composite.json" --ray composite
+    expect_exit 0
+    sed -i 's/"coast": true/"coast": false/' "$SCRATCH/composite.json"
+    grep -q '"coast": false' "$SCRATCH/composite.json" || fail "the scene has no coast to turn off"
+    run_tstyles -- render "$SCRATCH/composite.json" -o "$SCRATCH/one.png" --width 96 --height 96
+    expect_exit 0
+    run_mpi 2 render "$ocean" -o "$SCRATCH/two.png" --width 96 --height 96 --distributed
+    expect_exit 0
+    expect_same_as_one_process "$SCRATCH/one.png" "$SCRATCH/two.png"
+}
+
 # The hurricane takes 23.4 MB under the memory check (4 bytes a voxel in memory, 2 on the GPU), so
 # --max-memory 16M refuses it whole; four processes each hold a block (about 7.9 MB with the
 # largest time-step while it is read) and render it.

@@ -274,9 +274,12 @@ void writeOceanClimatology(const std::filesystem::path& file) {
         const double coslat = std::cos(lat * M_PI / 180.0);
         const double surface = -1.0 + 29.0 * coslat * coslat;
         const double deep = 2.0 + 2.0 * coslat * coslat;
-        // The north is warmest in August (month 7.5 of 12), the south in February.
+        // The north's surface is warmest in August (month 7.5 of 12), the south's in February; the
+        // season reaches down through the mixed layer late and weak: a month later for every 40 m,
+        // its amplitude e-folding over 80 m.
+        const double peakMonth = 7.5 + depth / 40.0;
         const double season = 3.0 * std::sin(std::abs(lat) * M_PI / 180.0) * (lat >= 0.0 ? 1.0 : -1.0) *
-                               std::cos(2.0 * M_PI * (double(t) + 0.5 - 7.5) / 12.0) * std::exp(-depth / 80.0);
+                               std::cos(2.0 * M_PI * (double(t) + 0.5 - peakMonth) / 12.0) * std::exp(-depth / 80.0);
         return float(deep + (surface - deep) * std::exp(-depth / 300.0) + season + 0.01 * jitter(index));
     });
 }

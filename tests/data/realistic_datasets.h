@@ -36,8 +36,8 @@ void writeCtPhantom(const std::filesystem::path& file);
 // lat 45, lon 90), degrees_celsius, 4-degree cells, the 19 standard levels 0 .. 1000 m (uneven),
 // time "months since 0000-01-01 00:00:00" at mid-month (0.5 .. 11.5) with a `climatology`
 // attribute and its bounds; continents (and shelves widening with depth) as _FillValue. The surface
-// follows the seasons (the north warmest in August, the south in February); the deep water does
-// not change.
+// follows the seasons (the north warmest in August, the south in February); the layers below lag
+// (a month per 40 m) and shrink (e-folding over 80 m); the deep water does not change.
 void writeOceanClimatology(const std::filesystem::path& file);
 
 // A regional forecast as ECMWF's grids come: clwc(time 7, level 10, latitude 81, longitude 121),

@@ -54,8 +54,9 @@ TEST(AutomaticScene, CtAirIsTransparentAndBoneOpaqueFromTheFront) {
 
 // Issue 50: intensity images (not below zero beyond noise, on anatomical axes) open as a maximum
 // projection, STF up to 1 without a style and unchanged places at the STF's whole opacity; CT,
-// whose air is -1000 HU, and maps composite with the neutral style.
-TEST(AutomaticScene, IntensityImagesAreMaximumProjectionsAndCtAndMapsComposite) {
+// whose air is -1000 HU, composites with the neutral style. Issue 51: maps show the largest
+// change along each column, unshaded, every place opaque, unchanged ones a faint grey.
+TEST(AutomaticScene, IntensityImagesAreMaximumProjectionsCtCompositesAndMapsShowTheLargestChange) {
     struct Case {
         const char* name;
         void (*write)(const std::filesystem::path&);
@@ -66,7 +67,9 @@ TEST(AutomaticScene, IntensityImagesAreMaximumProjectionsAndCtAndMapsComposite) 
                           Case{"blob.nii", testdata::writeMovingBlobNifti, "maximum"},
                           Case{"ct.nii", testdata::writeCtPhantom, "composite"},
                           Case{"perfusion.nii", testdata::writeCtHeadPerfusion, "composite"},
-                          Case{"eddy.nc", testdata::writeOceanEddy, "composite"}}) {
+                          Case{"eddy.nc", testdata::writeOceanEddy, "largest-change"},
+                          Case{"climatology.nc", testdata::writeOceanClimatology, "largest-change"},
+                          Case{"forecast.nc", testdata::writeRegionalForecast, "largest-change"}}) {
         SCOPED_TRACE(c.name);
         const auto file = sampleFolder() / c.name;
         c.write(file);
@@ -75,14 +78,25 @@ TEST(AutomaticScene, IntensityImagesAreMaximumProjectionsAndCtAndMapsComposite) 
         const Scene& scene = automatic.scene;
         EXPECT_EQ(toString(automaticRayMode(series).first), c.mode);
         EXPECT_EQ(toString(scene.rayMode), c.mode);
-        const bool projection = std::string(c.mode) == "maximum";
+        const bool maximum = std::string(c.mode) == "maximum";
+        const bool largestChange = std::string(c.mode) == "largest-change";
         double peak = 0.0;
         for (const OpacityNode& node : scene.stf.curve.opacity) peak = std::max(peak, node.opacity);
-        if (projection) {
+        if (maximum || largestChange) {
             EXPECT_EQ(peak, 1.0) << "one sample makes the pixel: the STF rises to 1";
         }
-        EXPECT_EQ(scene.stf.curve.color.front().style.empty(), projection);
-        EXPECT_EQ(scene.compositorOptions.unchanged->opacity, projection ? 1.0 : 0.35);
+        EXPECT_EQ(scene.stf.curve.color.front().style.empty(), maximum || largestChange);
+        EXPECT_EQ(scene.compositorOptions.unchanged->opacity, maximum ? 1.0 : 0.35);
+        if (largestChange) {
+            // Opaque from the 5th percentile up: the median of the values above the smallest (the
+            // forecast's clear air is 0) shows whole.
+            std::vector<float> values;
+            for (const TimeStep& step : series.steps)
+                for (std::size_t i = 0; i < step.density.size(); i += 97)
+                    if (step.density[i] > 0.0f) values.push_back(step.density[i]);
+            std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(values.size() / 2), values.end());
+            EXPECT_EQ(scene.stf.curve.evaluate(values[values.size() / 2]).opacity, 1.0) << "the median value";
+        }
         const bool said = std::any_of(automatic.explanation.begin(), automatic.explanation.end(),
                                       [&](const std::string& line) { return line.rfind(std::string("ray: ") + c.mode, 0) == 0; });
         EXPECT_TRUE(said) << "the explanation names the mode";

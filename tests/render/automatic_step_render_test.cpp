@@ -1,6 +1,7 @@
 // The automatic scene's ray step (tstyles/scene/automatic_step.h) against the exact one, half the
 // finest spacing, on data with uneven levels: the bundled hurricane (25 uneven levels) and the
-// realistic ocean eddy (12 depth levels, a few metres thin at the surface), at 256 x 256 through
+// realistic ocean eddy (12 depth levels, a few metres thin at the surface; a map, drawn as the
+// largest change along each column), at 256 x 256 through
 // the readers. The faster step is asserted taken (the scene's step is set, and coarser than the
 // default); the pictures agree within what was measured.
 #include <filesystem>
@@ -44,7 +45,7 @@ StepPair renderBothSteps(const std::filesystem::path& file) {
     pair.difference = compareImages(exactImage, faster, 1);
     std::cout << file.filename().string() << ": step " << pair.step << " against " << pair.exactStep << ": max "
               << pair.difference.maxDelta << "/255, mean " << pair.difference.meanDelta << "/255, SSIM "
-              << pair.difference.ssim << "\n";
+              << pair.difference.ssim << ", " << pair.difference.failingFraction << " of the pixels differ\n";
     return pair;
 }
 
@@ -59,8 +60,11 @@ TEST(AutomaticStep, TheHurricanesLevelsGiveACoarserStepAndTheSamePicture) {
     EXPECT_GE(pair.difference.ssim, 0.999);
 }
 
-// Measured: step 0.0764 against 0.00855 (8.9 times); max 46/255 (the eddies' rims, where the thin
-// surface levels meet), mean 0.096/255, SSIM 0.99867.
+// Measured: step 0.0764 against 0.00855 (8.9 times). The map is the largest change along each
+// column: 0.24 % of the pixels differ, all on the eddies' rims, where the kept sample turns from
+// a changing place (a time colour) to an unchanged one (grey) between the two steps (max 155/255
+// there); mean 0.166/255, SSIM 0.9914. (Composited, before the map became the largest change: max
+// 46/255, mean 0.096/255, SSIM 0.99867.)
 TEST(AutomaticStep, TheOceansThinSurfaceLevelsNoLongerSetTheStep) {
     const auto folder = std::filesystem::temp_directory_path() / ("tstyles_step_" + std::to_string(::getpid()));
     std::filesystem::create_directories(folder);
@@ -68,9 +72,9 @@ TEST(AutomaticStep, TheOceansThinSurfaceLevelsNoLongerSetTheStep) {
     const StepPair pair = renderBothSteps(folder / "ocean-eddy.nc");
     std::filesystem::remove_all(folder);
     EXPECT_GT(pair.step, 4.0 * pair.exactStep);
-    EXPECT_LE(pair.difference.maxDelta, 64);
-    EXPECT_LE(pair.difference.meanDelta, 0.2);
-    EXPECT_GE(pair.difference.ssim, 0.998);
+    EXPECT_LE(pair.difference.failingFraction, 0.004);
+    EXPECT_LE(pair.difference.meanDelta, 0.25);
+    EXPECT_GE(pair.difference.ssim, 0.99);
 }
 
 }  // namespace

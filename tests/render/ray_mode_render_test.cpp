@@ -1,5 +1,6 @@
 // The ray modes (ray_modes.h) rendered and compared with closed-form expectations: the maximum
-// and minimum projections keep one sample in its time colour, the average of a constant is the
+// and minimum projections keep one sample in its time colour, the largest change the sample that
+// changes most, the average of a constant is the
 // constant, additive sums opacity over the length, an iso-surface lies where the value crosses and
 // is lit by its normal.
 #include <cmath>
@@ -119,6 +120,92 @@ TEST(RayModeRender, MaximumWithTimeOfMaxColoursTheTimeStepOfThePeak) {
     expectPixel(image, boxPixel({0.45, 0.45}), {0.0f, 0.0f, 0.8f, 0.8f}, "the peak of time-step 2");
     expectPixel(image, boxPixel({0.15, 0.15}), {0.6f, 0.0f, 0.0f, 0.6f}, "the peak of time-step 0");
     expectPixel(image, boxPixel({0.65, 0.05}), {0.1f, 0.0f, 0.0f, 0.1f}, "no peak: all tie, the first time-step");
+}
+
+// Three time-steps of 0.5 everywhere but two layers across the view (z samples 2-3 and 5-6; each
+// is flat between its two samples). The bright layer is 0.95 in time-step 0 and 0.85 after: it
+// changes by 0.1. The changing layer is 0.5, 0.5, then 0.9: it changes by 0.4, in time-step 2.
+// Which of them lies in front does not matter to the largest change.
+Series brightLayerAndChangingLayer() {
+    auto layers = [](float bright, float changing) {
+        BoxSpec box = constantBox({0.0, 0.0, 0.0}, 0.5f);
+        box.density = [bright, changing](glm::ivec3 sample) {
+            if (sample.z == 2 || sample.z == 3) return changing;
+            if (sample.z == 5 || sample.z == 6) return bright;
+            return 0.5f;
+        };
+        return box;
+    };
+    return makeSeries({layers(0.95f, 0.5f), layers(0.85f, 0.5f), layers(0.85f, 0.9f)});
+}
+
+Scene redGreenBlueScene() {
+    Scene scene = redGreenScene();
+    scene.indexTstf.curve.color = {{0.0, {1, 0, 0}}, {1.0, {0, 1, 0}}, {2.0, {0, 0, 1}}};
+    return scene;
+}
+
+TEST(RayModeRender, LargestChangeShowsTheTimeOfTheLayerThatChangesMost) {
+    const Series series = brightLayerAndChangingLayer();
+    Scene scene = redGreenBlueScene();
+    scene.rayMode = rayModeNamed("largest-change");
+    // The changing layer's peak, time-step 2 (blue), as opaque as the STF makes 0.9; the scene asks
+    // for no unchanged places, so the compositor measures the change for the mode alone.
+    ASSERT_FALSE(scene.compositorOptions.unchanged);
+    expectPixel(renderSeries(series, scene), boxPixel(kBoxCentre), {0.0f, 0.0f, 0.9f, 0.9f},
+                "the layer that changes by 0.4, at its peak");
+    // The maximum shows the brighter layer instead, in its time-step 0 (red).
+    scene.rayMode = rayModeNamed("maximum");
+    expectPixel(renderSeries(series, scene), boxPixel(kBoxCentre), {0.95f, 0.0f, 0.0f, 0.95f},
+                "the brightest sample: the layer that changes by 0.1");
+
+    // With unchanged places up to a change of 0.2 the bright layer has no time; the changing layer
+    // still makes the pixel. Where nothing changes more than 0.2 (a scene whose changing layer
+    // stays 0.5), the pixel is the grey of the sample that changes most, at the unchanged share.
+    scene.rayMode = rayModeNamed("largest-change");
+    UnchangedTime unchanged;
+    unchanged.automatic = false;
+    unchanged.below = 0.2;
+    unchanged.opacity = 0.5;
+    scene.compositorOptions.unchanged = unchanged;
+    expectPixel(renderSeries(series, scene), boxPixel(kBoxCentre), {0.0f, 0.0f, 0.9f, 0.9f},
+                "the changing layer, unchanged places around it");
+    auto still = [](float bright) {
+        BoxSpec box = constantBox({0.0, 0.0, 0.0}, 0.5f);
+        box.density = [bright](glm::ivec3 sample) { return sample.z == 5 || sample.z == 6 ? bright : 0.5f; };
+        return box;
+    };
+    const Series quiet = makeSeries({still(0.95f), still(0.85f), still(0.85f)});
+    // The bright layer's grey: the STF's white at 0.5 of its opacity, 0.95 (time-step 0 ranks first).
+    expectPixel(renderSeries(quiet, scene), boxPixel(kBoxCentre), {0.475f, 0.475f, 0.475f, 0.475f},
+                "no time colour: the grey of the place that changes most");
+}
+
+// With the max density change the compositor's value is the change itself: the largest change
+// along the ray is the maximum of that value, pixel for pixel.
+TEST(RayModeRender, LargestChangeOfTheMaxDensityChangeIsItsMaximum) {
+    const Series series = brightLayerAndChangingLayer();
+    Scene scene = redGreenBlueScene();
+    scene.compositor = compositorNamed("temporal-max-change");
+    scene.gradientTstf.rangeLow = 0.0;
+    scene.gradientTstf.rangeHigh = 0.4;
+    scene.rayMode = rayModeNamed("maximum");
+    const Image maximum = renderSeries(series, scene);
+    scene.rayMode = rayModeNamed("largest-change");
+    const Image largest = renderSeries(series, scene);
+    EXPECT_EQ(largest.rgba, maximum.rgba);
+    EXPECT_GT(maximum.at(boxPixel(kBoxCentre).x, boxPixel(kBoxCentre).y).a, 0.0f) << "the picture is not empty";
+}
+
+TEST(RayModeRender, LargestChangeIsRefusedWithACompositorThatCompositesTheTimeSteps) {
+    try {
+        parseScene(R"({"dataset": "x/series.json", "compositor": "temporal-average", "ray": "largest-change"})",
+                   "scene.json");
+        FAIL() << "temporal-average with the largest change was read";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("ray.mode"), std::string::npos) << error.what();
+        EXPECT_NE(std::string(error.what()).find("temporal-average"), std::string::npos) << error.what();
+    }
 }
 
 TEST(RayModeRender, AverageOfAConstantIsTheConstantHoweverThick) {

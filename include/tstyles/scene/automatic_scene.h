@@ -31,9 +31,14 @@ struct AutomaticScene {
 AutomaticScene automaticScene(const Series& series, const std::filesystem::path& dataset);
 // The same with the opacity window given: `series` may then be an outline (no values), as where
 // each process of a distributed render reads only its block and the window is taken from them all.
-AutomaticScene automaticScene(const Series& series, const std::filesystem::path& dataset, const OpacityWindow& window);
+// RenderedBy::MergedBlocks: the frames of processes that each render a block are merged front to back
+// (`--distributed`), so the ray composites where the automatic mode would not merge.
+enum class RenderedBy { OneProcess, MergedBlocks };
+AutomaticScene automaticScene(const Series& series, const std::filesystem::path& dataset, const OpacityWindow& window,
+                              RenderedBy renderedBy = RenderedBy::OneProcess);
 
-// The ray mode of the automatic scene: maximum for intensity images (values not below zero, beyond
+// The ray mode of the automatic scene: largest-change for maps (geographic data, seen from above:
+// each place at the depth where it changes most); maximum for intensity images (values not below zero, beyond
 // noise of 2 % of the largest, on anatomical axes or a microscope's: MR, fMRI, PET, fluorescence
 // microscopy), where compositing the
 // whole volume gives a fog with no boundary in it; composite for everything else (CT, whose

@@ -2,7 +2,7 @@
 // scene-file name, its shader module (shaders/ray_*.glsl) and the options it takes. The temporal
 // compositor turns the time-steps at each sample into a characteristic; the ray mode reduces those
 // along the ray (composite front to back, the paper's; maximum; minimum; average; additive;
-// attenuated maximum; iso-surfaces). Adding a mode is a module and a line here; adding an option is
+// attenuated maximum; largest change; iso-surfaces). Adding a mode is a module and a line here; adding an option is
 // a RayModeOption in the line (and the uniform the module declares for it). The scene reader and
 // writer, the scene key table (and so the docs and Python), the window, `--ray` and its
 // `--ray-KEY` options and the legend follow the table.
@@ -70,6 +70,15 @@ enum class RayMerge {
     None,        // a process's part of the ray reduced on its own does not merge: not distributed
 };
 
+// The STF the automatic scene gives a mode (applyAutomaticRay): how much opacity one sample needs.
+enum class AutomaticStf {
+    RayThrough,     // the histogram's ramp, peaking where a ray through the data gathers ~95 %; shaded
+    LargestValue,   // one sample makes the pixel: a ramp to 1 at the largest value; unshaded, unchanged
+                    // places at the STF's whole opacity
+    EveryPlace,     // one sample makes the pixel, whatever its value: 1 from the 5th percentile up;
+                    // unshaded, unchanged places a faint grey (the mode picks by change, not value)
+};
+
 struct RayModeInfo {
     const char* name = "";          // in scene files, --ray and the window
     const char* shaderModule = "";  // in shaders/
@@ -81,6 +90,12 @@ struct RayModeInfo {
     // The pixel is as opaque as the STF makes one sample (or their mean), not a ray through all
     // of them: the automatic STF then rises to 1 (applyAutomaticRayOpacity).
     bool pixelTakesStfOpacity = false;
+    // Compares how much each place changes over time: the range of its time-steps' densities,
+    // which the built-in compositors that pick a time-step measure (CompositorInfo::takesUnchanged;
+    // they measure it whether or not the scene asks for unchanged places, and the scene's own
+    // index compositor is refused), or the magnitude of the value the gradient TSTF reads.
+    bool readsChange = false;
+    AutomaticStf automaticStf = AutomaticStf::RayThrough;
     RayMerge merge = RayMerge::Over;
     RayModeOptionList options = {};
     const char* summary = "";  // one line for help texts, the viewer and the docs' table
@@ -94,18 +109,19 @@ inline constexpr std::array kRayModes = [] {
              .summary = "the samples' temporal styles composited front to back (emission and absorption, the "
                         "paper's); rays stop once nearly opaque"},
         Info{.name = "maximum", .shaderModule = "ray_maximum.glsl", .needsValue = true,
-             .pixelTakesStfOpacity = true, .merge = RayMerge::None,
+             .pixelTakesStfOpacity = true, .automaticStf = AutomaticStf::LargestValue, .merge = RayMerge::None,
              .summary = "the sample of the largest value along the ray (maximum intensity projection), in its "
                         "time colour"},
         Info{.name = "minimum", .shaderModule = "ray_minimum.glsl", .needsValue = true,
-             .pixelTakesStfOpacity = true, .merge = RayMerge::None,
+             .pixelTakesStfOpacity = true, .automaticStf = AutomaticStf::LargestValue, .merge = RayMerge::None,
              .summary = "the sample of the smallest value the STF shows along the ray, in its time colour"},
-        Info{.name = "average", .shaderModule = "ray_average.glsl", .pixelTakesStfOpacity = true, .merge = RayMerge::None,
+        Info{.name = "average", .shaderModule = "ray_average.glsl", .pixelTakesStfOpacity = true,
+             .automaticStf = AutomaticStf::LargestValue, .merge = RayMerge::None,
              .summary = "the mean of the samples' temporal styles along the ray"},
         Info{.name = "additive", .shaderModule = "ray_additive.glsl", .stopsEarly = true, .merge = RayMerge::None,
              .summary = "the samples' temporal styles added up along the ray (emission without absorption)"},
         Info{.name = "attenuated-maximum", .shaderModule = "ray_attenuated_maximum.glsl", .needsValue = true,
-             .pixelTakesStfOpacity = true, .merge = RayMerge::None,
+             .pixelTakesStfOpacity = true, .automaticStf = AutomaticStf::LargestValue, .merge = RayMerge::None,
              .options = {RayModeOption{
                  .key = "attenuation",
                  .kind = RayModeOptionKind::Number,
@@ -115,6 +131,11 @@ inline constexpr std::array kRayModes = [] {
                  .defaultNumber = 1.0,
              }},
              .summary = "the largest value along the ray, each value first lowered by the opacity in front of it"},
+        Info{.name = "largest-change", .shaderModule = "ray_largest_change.glsl", .needsValue = true,
+             .pixelTakesStfOpacity = true, .readsChange = true, .automaticStf = AutomaticStf::EveryPlace,
+             .merge = RayMerge::None,
+             .summary = "the sample whose values change most over time along the ray, in the colour of its "
+                        "time-step: seen from above, each place of a map at the depth where it changes most"},
         Info{.name = "isosurface", .shaderModule = "ray_isosurface.glsl", .needsValue = true, .stopsEarly = true,
              .merge = RayMerge::None,
              .options = {RayModeOption{
