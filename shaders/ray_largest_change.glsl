@@ -7,30 +7,14 @@
 // column. With a compositor whose value the gradient TSTF reads (a change, a spread, a trend, a
 // difference), the change is that value's magnitude, in the gradient TSTF's colour. The first of
 // equal changes, the nearest, stays.
-#include "ray_kept_sample.glsl"
+#include "ray_sample.glsl"
 
-struct RayState {
-    KeptSample kept;
-};
-
-RayState rayInit(Ray ray) {
-    return RayState(noKeptSample());
+float comparedValue(TemporalCharacteristic c) {
+    return c.change;
 }
 
-void rayAccumulate(inout RayState state, RaySample s, inout int fetches) {
-    if (!hasValue(s.characteristic)) return;
-    float change = s.characteristic.change;
-    if (!state.kept.kept || change > state.kept.value) keepSample(state.kept, s, change);
+bool replacesKept(float value, float keptValue) {
+    return value > keptValue;
 }
 
-void rayPassEmpty(inout RayState state, float skippedLength) {}
-
-void rayPassGap(inout RayState state) {}
-
-bool rayDone(RayState state) {
-    return false;
-}
-
-vec4 rayFinish(inout RayState state, inout int fetches) {
-    return finishKeptSample(state.kept, fetches);
-}
+#include "ray_extremum.glsl"
