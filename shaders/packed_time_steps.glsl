@@ -22,6 +22,11 @@ layout(binding = PACKED_OCCUPANCY_UNIT) uniform usampler3D packedOccupancy;
 // a time-step of group g is visible under the STF. One fetch gives a sample both.
 layout(binding = PACKED_GROUP_MASK_UNIT) uniform usampler3D packedGroupMasks;
 layout(binding = PACKED_VALIDITY_UNIT) uniform sampler3D packedValidity;
+#if SKIP_UNCHANGING_BRICKS
+// Per brick: at least the range over time of the densities at any place in it (render::
+// brickChangeBounds, raised by the 16-bit rounding).
+layout(binding = PACKED_CHANGE_BOUND_UNIT) uniform sampler3D packedChangeBounds;
+#endif
 #include "raycast_uniforms.glsl"
 
 layout(std430, binding = PACKED_GROUP_BUFFER) readonly buffer PackedGroups {
@@ -117,3 +122,15 @@ float packedEmptySpaceUntil(AlignedSample aligned, float t) {
     if (reach < 0) return -1.0;
     return brickExit(0, aligned.voxel, aligned.gridLocal, t, slotVoxelDirection(0), reach);
 }
+
+#if SKIP_UNCHANGING_BRICKS
+// Skipping the bricks that cannot change a largest-change ray's pixel: -1 where the brick at the
+// sample may hold a place whose densities span more than `changeFloor` over time, else where the
+// brick ends. A compositor that sees one time-step alone (one exposed) reports a change above any
+// bound, so then never.
+float packedUnchangingSpaceUntil(AlignedSample aligned, float t, float changeFloor) {
+    if (exposedSteps.x >= exposedSteps.y) return -1.0;
+    if (texelFetch(packedChangeBounds, ivec3(brickOf(0, aligned.voxel)), 0).r > changeFloor) return -1.0;
+    return brickExit(0, aligned.voxel, aligned.gridLocal, t, slotVoxelDirection(0), 0);
+}
+#endif

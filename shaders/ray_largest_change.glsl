@@ -18,3 +18,7 @@ bool replacesKept(float value, float keptValue) {
 }
 
 #include "ray_extremum.glsl"
+
+float rayChangeFloor(RayState state) {
+    return state.kept.kept ? state.kept.value : -1.0;
+}

@@ -17,6 +17,10 @@
 //   bool rayDone(RayState state)      nothing further along the ray can change the pixel
 //   vec4 rayFinish(inout RayState state, inout int fetches)
 //                                     the pixel's premultiplied colour and opacity, before the background
+// and, a mode that reads the change over time (RayModeInfo::readsChange),
+//   float rayChangeFloor(RayState state)
+//                                     the change a sample must exceed to change the pixel, -1 while
+//                                     every sample may (SKIP_UNCHANGING_BRICKS skips the rest)
 // and the uniforms of its options (the table of ray modes names them, ray_modes.h).
 #include "temporal_sample.glsl"
 #include "characteristic_style.glsl"

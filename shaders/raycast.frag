@@ -87,9 +87,23 @@ void main() {
         }
         advanceWalk(middle);
         vec3 position = ray.origin + ray.direction * middle;
-        TemporalSample sampled = compositeTemporal(position, middle);
+#if SKIP_UNCHANGING_BRICKS
+        float changeFloor = rayChangeFloor(rayState);
+#else
+        float changeFloor = -1.0;
+#endif
+        TemporalSample sampled = compositeTemporal(position, middle, changeFloor);
         samples += 1;
         fetches += sampled.fetches;
+#if SKIP_UNCHANGING_BRICKS
+        if (sampled.unchangingUntil > 0.0) {
+            // No place in the brick changes enough to replace the sample the ray keeps. Go on from
+            // the last lattice point before the brick's end, so that the ray takes the very samples
+            // it would have taken without the jump: the same picture.
+            t = max(segmentEnd, latticePointAtOrBefore(min(sampled.unchangingUntil, rayDepth.y), anchor));
+            continue;
+        }
+#endif
         if (WALK_SKIPS_EMPTY_SPACE && sampled.contributing == 0) {
             // Between time-steps: jump to where the next one begins.
             t = nextEntryAfter(middle, rayDepth.y);

@@ -9,8 +9,10 @@
 #include "compositor.glsl"
 #include "time_step_walk.glsl"
 
-TemporalSample compositeTemporal(vec3 position, float t) {
-    TemporalSample result = TemporalSample(transparentCharacteristic(), 0, 0, -1.0);
+// `changeFloor` (SKIP_UNCHANGING_BRICKS): the change over time a place must exceed to change the
+// pixel (rayChangeFloor), or -1 where every place may.
+TemporalSample compositeTemporal(vec3 position, float t, float changeFloor) {
+    TemporalSample result = TemporalSample(transparentCharacteristic(), 0, 0, -1.0, -1.0);
     SamplePoint point = samplePointAt(position, t);
     // Skip transparent regions of all time-steps at once. The max density change needs every
     // density once any time-step is visible, so the test comes before the real work.
@@ -21,6 +23,17 @@ TemporalSample compositeTemporal(vec3 position, float t) {
             return result;
         }
     }
+#if SKIP_UNCHANGING_BRICKS
+    // And the bricks where nothing changes more than the ray's kept change: no sample of theirs
+    // could replace it.
+    if (changeFloor >= 0.0) {
+        result.unchangingUntil = unchangingSpaceUntil(point, changeFloor);
+        if (result.unchangingUntil > 0.0) {
+            result.contributing = 1;
+            return result;
+        }
+    }
+#endif
     if (RAYCAST_PART == RAYCAST_PART_MARCH) {
         // The march alone (`bench --stages`): the sample is transparent, so the ray runs to its
         // exit, and jumps where the whole pass would, between time-steps (none in the walk's

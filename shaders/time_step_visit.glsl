@@ -13,6 +13,9 @@ struct TemporalSample {
     int fetches;        // volume texture fetches spent
     // > 0 when every time-step at the sample is in an empty brick: the ray may skip to here.
     float emptyUntil;
+    // > 0 (SKIP_UNCHANGING_BRICKS) when no place in the sample's brick changes over time by more
+    // than the ray's change floor: the ray may skip to here.
+    float unchangingUntil;
 };
 
 // Densities outside stfVisibleRange have STF opacity 0 (render/transfer_tables.h, visibleDensityRange).

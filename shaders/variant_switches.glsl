@@ -18,6 +18,8 @@
 //   MAX_TIME_STEPS      capacity of the per-ray arrays of time-steps
 //   COLLECT_STATISTICS  1 to count rays, samples and fetches
 //   SKIP_EMPTY_BRICKS   1 to test at each sample whether every time-step there is in an empty brick
+//   SKIP_UNCHANGING_BRICKS 1 when the ray mode reads the change (largest-change) and the packed walk's
+//                       bricks bound it: a ray skips the bricks whose change cannot beat the one it keeps
 //   CUSTOM_READS_INDEX  the scene's own compositor (tc_custom.glsl) returns a time-step index
 //   PER_RAY_CACHES      1 for per-ray arrays of time-step data (voxel rays, the average's deferred
 //                       styling): they pay on a CPU rasterizer and cost on a GPU (Renderer decides)
@@ -36,11 +38,14 @@
     !defined(CUSTOM_READS_INDEX) || !defined(STYLED_TRACKS) || !defined(SKIP_EMPTY_BRICKS) || \
     !defined(MISSING_VALUES) || !defined(UNEVEN_AXIS_WALK) || !defined(PER_RAY_CACHES) ||              \
     !defined(PRECOMPUTED_GRADIENTS) || !defined(RECTILINEAR_GRIDS) || !defined(PACKED_GROUP_MASKS) ||  \
-    !defined(UNCHANGED_TIME) || !defined(RAYCAST_PART)
+    !defined(UNCHANGED_TIME) || !defined(RAYCAST_PART) || !defined(SKIP_UNCHANGING_BRICKS)
 #error "a raycasting switch is not defined: build the program through RaycastVariant"
 #endif
 #if !RECTILINEAR_GRIDS && !STRUCTURED_GRIDS && !BEAM_GRIDS
 #error "a series holds at least one kind of grid"
+#endif
+#if SKIP_UNCHANGING_BRICKS && !PACKED_ALIGNED
+#error "only the packed walk's bricks bound the change over time"
 #endif
 
 // A series of one kind of grid needs no test of a time-step's kind: isBeamGrid and isStructured

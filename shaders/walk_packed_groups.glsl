@@ -49,6 +49,14 @@ float emptySpaceUntil(SamplePoint point) {
     return packedEmptySpaceUntil(point.aligned, point.t);
 }
 
+#if SKIP_UNCHANGING_BRICKS
+// Whether the sample's brick may change by more than `changeFloor` over time: -1 if so, else where
+// the brick ends.
+float unchangingSpaceUntil(SamplePoint point, float changeFloor) {
+    return packedUnchangingSpaceUntil(point.aligned, point.t, changeFloor);
+}
+#endif
+
 // One group of four time-steps at the sample: one fetch, then each exposed time-step to the
 // compositor. `knownTransparent` (a constant at every call, so only one kind of visit is in the
 // program there): the brick's group mask lacks the group, every time-step of it is transparent, and

@@ -7,6 +7,7 @@
 
 #include "tstyles/core/errors.h"
 #include "tstyles/data/series_summary.h"
+#include "tstyles/render/brick_occupancy.h"
 #include "tstyles/render/shader_contract.h"
 #include "tstyles/render/density_texels.h"
 #include "tstyles/render/empty_brick_reach.h"
@@ -102,6 +103,7 @@ PackedAlignedAtlas::PackedAlignedAtlas(const Series& series, glm::ivec3 brickCou
       validityTexture_(Texture::create(GL_TEXTURE_3D)),
       occupancy_(Texture::create(GL_TEXTURE_3D)),
       groupMasks_(Texture::create(GL_TEXTURE_3D)),
+      changeBounds_(Texture::create(GL_TEXTURE_3D)),
       groupOrigins_(Buffer::create()) {
     const std::size_t groups = (series.size() + kTimeStepsPerTexel - 1) / kTimeStepsPerTexel;
     const glm::ivec3 dims = series.steps.front().dims();
@@ -149,11 +151,21 @@ PackedAlignedAtlas::PackedAlignedAtlas(const Series& series, glm::ivec3 brickCou
     glTextureStorage3D(groupMasks_.id(), 1, GL_RG32UI, maskSize.x, maskSize.y, maskSize.z);
     groupMasks_.setFilter(GL_NEAREST, GL_NEAREST);
     groupMasks_.setClampToEdge();
+
+    // A filtered RGBA16 density is a mix of the stored 16-bit values, each within half a unit of
+    // the data: two units cover both ends of a range and the filter's own rounding.
+    std::vector<float> bounds = brickChangeBounds(series.steps);
+    for (float& bound : bounds) bound += 2.0f / 65535.0f;
+    glTextureStorage3D(changeBounds_.id(), 1, GL_R32F, brickCounts.x, brickCounts.y, brickCounts.z);
+    changeBounds_.setFilter(GL_NEAREST, GL_NEAREST);
+    changeBounds_.setClampToEdge();
+    glTextureSubImage3D(changeBounds_.id(), 0, 0, 0, 0, brickCounts.x, brickCounts.y, brickCounts.z, GL_RED, GL_FLOAT,
+                        bounds.data());
 }
 
 std::size_t PackedAlignedAtlas::textureBytes() const {
     return atlas_.allocatedBytes() + validityTexture_.allocatedBytes() + occupancy_.allocatedBytes() +
-           groupMasks_.allocatedBytes();
+           groupMasks_.allocatedBytes() + changeBounds_.allocatedBytes();
 }
 
 double PackedAlignedAtlas::updateOccupancy(const std::vector<std::vector<std::uint8_t>>& visibilities) {
@@ -183,6 +195,7 @@ void PackedAlignedAtlas::bind() const {
     validityTexture_.bindToUnit(contract::PACKED_VALIDITY_UNIT);
     occupancy_.bindToUnit(contract::PACKED_OCCUPANCY_UNIT);
     groupMasks_.bindToUnit(contract::PACKED_GROUP_MASK_UNIT);
+    changeBounds_.bindToUnit(contract::PACKED_CHANGE_BOUND_UNIT);
     groupOrigins_.bindBase(GL_SHADER_STORAGE_BUFFER, contract::PACKED_GROUP_BUFFER);
 }
 

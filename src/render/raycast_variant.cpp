@@ -121,6 +121,7 @@ RaycastVariant partOf(const RaycastVariant& whole, RaycastPart part) {
     variant.styledTracks = 0;
     variant.precomputedGradients = false;
     variant.unchangedTime = false;
+    variant.skipUnchangingBricks = false;
     return variant;
 }
 
@@ -143,6 +144,7 @@ ShaderDefines RaycastVariant::defines() const {
         {"MAX_TIME_STEPS", std::to_string(timeStepCapacity)},
         {"COLLECT_STATISTICS", flag(collectStatistics)},
         {"SKIP_EMPTY_BRICKS", flag(skipEmptyBricks)},
+        {"SKIP_UNCHANGING_BRICKS", flag(skipUnchangingBricks)},
         {"CUSTOM_READS_INDEX", flag(customReads == CompositorReads::IndexTstf)},
         {"PER_RAY_CACHES", flag(perRayCaches)},
         {"PRECOMPUTED_GRADIENTS", flag(precomputedGradients)},
@@ -251,6 +253,10 @@ std::vector<RaycastVariant> requestableRaycastVariants() {
                 if (!compositorInfo(variant.compositor).takesUnchanged) continue;
                 variant.unchangedTime = true;
             }
+            // And skips the bricks that change too little, on the packed walk where the validities
+            // let the bricks bound the change (both sides compile: the styled half skips).
+            variant.skipUnchangingBricks = rayModeInfo(mode).readsChange && variant.walk == TimeStepWalk::PackedGroups &&
+                                           variant.packedValidity != PackedValidity::PerGroup && variant.styled();
             const bool everyCompositor = variant.allAffine && !variant.masks && !variant.precomputedGradients &&
                                          variant.packedValidity != PackedValidity::Shared;
             const bool everyGrid = variant.compositor == compositorNamed("temporal-mip") ||

@@ -78,6 +78,18 @@ std::vector<ModuleOptionUniform> rayOptionUniforms(RayMode mode, const Scene& sc
     return uniforms;
 }
 
+// Whether a compositor's change over time (TemporalCharacteristic.change) is at most the range of
+// the densities at the sample, where every time-step there has data (brickChangeBounds): the range
+// itself for the compositors that pick a time-step, and for the gradient TSTF's values whose
+// automatic range is the largest change (the change, half of it for a spread, a difference); not
+// a trend per unit of time, nor the scene's own code.
+bool changeWithinDensityRange(TemporalCompositor compositor) {
+    if (compositor == kCustomCompositor) return false;
+    const TemporalCompositorInfo& info = compositorInfo(compositor);
+    if (info.takesUnchanged) return true;
+    return info.reads == CompositorReads::GradientTstf && info.range != AutomaticRange::SignedPerTime;
+}
+
 }  // namespace
 
 Renderer::Renderer(ShaderLibrary shaders)
@@ -203,6 +215,9 @@ RaycastVariant Renderer::variantFor(const Scene& scene, const FrameOptions& opti
     const double emptyBrickShare = variant.walk == TimeStepWalk::PackedGroups ? gpuSeries_->emptyPackedBrickFraction()
                                                                               : gpuSeries_->emptyBrickFraction();
     variant.skipEmptyBricks = options.emptyBrickTest.value_or(skipsEmptyBricks(emptyBrickShare));
+    variant.skipUnchangingBricks = options.skipUnchangingBricks && rayModeInfo(scene.rayMode).readsChange &&
+                                   variant.walk == TimeStepWalk::PackedGroups && packed->boundsChange() &&
+                                   changeWithinDensityRange(scene.compositor);
     variant.perRayCaches = options.perRayCaches.value_or(cpuRasterizer_);
     variant.precomputedGradients = gradients_.useFor(*gpuSeries_, variant.styled(), options.precomputedGradients);
     return partOf(variant, options.raycastPart);

@@ -95,6 +95,7 @@ std::vector<PlannedTexture> SeriesTexturePlan::textures() const {
         const bool masked = packed->brickOrigins.size() <= std::size_t(kMaxMaskedGroups);
         result.push_back({"packed occupancy", masked ? glm::ivec3(1) : packedBricks, 1});
         result.push_back({"packed group masks", masked ? packedBricks : glm::ivec3(1), 8});
+        result.push_back({"packed change bounds", packedBricks, 4});
     }
     return result;
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -43,5 +44,15 @@ private:
 
 // 1 for each brick the STF can make visible, 0 for bricks it leaves fully transparent.
 std::vector<std::uint8_t> brickVisibility(const BrickGrid& grid, const OpacityRangeMaximum& opacity);
+
+// Time-steps that share one grid (a packed series): per brick, the largest range over time of the
+// densities at one of the samples a lookup inside the brick reads (each sample's largest density
+// over the time-steps with data there less its smallest); -1 where no time-step has data in it. A
+// trilinear lookup mixes those samples with the same weights in every time-step, and the range of
+// a mix is at most the mix of the ranges: so where every time-step has data or none does, no place
+// in the brick changes over time by more than its bound, and the largest-change ray mode skips the
+// bricks whose bound cannot beat the change it has kept. Throws std::invalid_argument where the
+// grids differ.
+std::vector<float> brickChangeBounds(std::span<const TimeStep> steps);
 
 }  // namespace tstyles

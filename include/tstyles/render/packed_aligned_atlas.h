@@ -65,8 +65,9 @@ std::vector<std::uint32_t> groupVisibilityMasks(const std::vector<std::vector<st
 
 class PackedAlignedAtlas {
 public:
-    // Uploads every group of four time-steps; the series must suit (suitsPackedAtlas). Throws
-    // InputError when the groups do not fit into one 3D texture.
+    // Uploads every group of four time-steps and their bricks' change bounds (brickChangeBounds);
+    // the series must suit (suitsPackedAtlas). Throws InputError when the groups do not fit into
+    // one 3D texture.
     PackedAlignedAtlas(const Series& series, glm::ivec3 brickCounts, int maxTextureSize);
 
     int groupCount() const { return int(layout_.brickOrigins.size()); }
@@ -84,7 +85,12 @@ public:
     // shows (groupVisibilityMasks), the two side by side in the group-mask texture; without masks
     // the reach goes to the occupancy texture. Returns the share of bricks empty in every time-step.
     double updateOccupancy(const std::vector<std::vector<std::uint8_t>>& visibilities);
-    // Binds the packed atlas, its validities, its occupancy and the table of group origins.
+    // Whether the bricks' change bounds hold for every place of the series: where time-steps miss
+    // different voxels (PackedValidity::PerGroup), a place may have data in one time-step only, whose
+    // compositor then reports a change above any bound.
+    bool boundsChange() const { return validity_ != PackedValidity::PerGroup; }
+    // Binds the packed atlas, its validities, its occupancy, its change bounds and the table of
+    // group origins.
     void bind() const;
 
 private:
@@ -98,6 +104,8 @@ private:
     Texture occupancy_;  // R8UI, one texel per brick without group masks, else one texel
     // RG32UI, one texel per brick (hasGroupMasks): the occupancy texel and the group mask.
     Texture groupMasks_;
+    // R32F, one texel per brick: brickChangeBounds, raised by the rounding of the 16-bit densities.
+    Texture changeBounds_;
     Buffer groupOrigins_;
 };
 

@@ -60,6 +60,9 @@ struct RaycastVariant {
     // Test at each sample whether every time-step there is in an empty brick (emptySpaceUntil):
     // worth its cost only where the STF leaves some bricks empty (skipsEmptyBricks).
     bool skipEmptyBricks = true;
+    // A largest-change ray skips the bricks whose change over time cannot beat the change it has
+    // kept (packed walk only; Renderer decides where the bricks bound the compositor's change).
+    bool skipUnchangingBricks = false;
     // Per-ray arrays of the time-steps' voxel rays and the temporal average's deferred styling:
     // they pay on a CPU rasterizer, and cost on a GPU, where arrays indexed at run time live in slow
     // per-thread memory (Renderer picks by the driver).

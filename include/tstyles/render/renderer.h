@@ -39,6 +39,10 @@ struct FrameOptions {
     // The per-sample empty-brick test: by default compiled in where the STF leaves enough bricks
     // empty for it to pay (skipsEmptyBricks); true or false forces it, for comparison. Same image.
     std::optional<bool> emptyBrickTest;
+    // A largest-change ray skips the bricks whose change over time cannot beat the one it has kept,
+    // where the bricks bound the compositor's change (RaycastVariant::skipUnchangingBricks); false
+    // leaves the test out, for comparison. Same image.
+    bool skipUnchangingBricks = true;
     // Per-ray arrays of time-step data in the raycaster (RaycastVariant::perRayCaches): by default
     // on a CPU rasterizer and off on a GPU; true or false forces them, for comparison. Same image.
     std::optional<bool> perRayCaches;
