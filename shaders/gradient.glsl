@@ -9,14 +9,16 @@ vec3 beamWorldGradient(int step, vec3 worldPosition);
 
 #if PRECOMPUTED_GRADIENTS
 // The node differences computed once per series (gradient_atlas.comp), in the density atlas'
-// layout: one fetch, trilinearly filtered, instead of six. Even rectilinear grids without missing
-// values only (variant_switches.glsl).
+// layout: one fetch, trilinearly filtered, instead of six. Rectilinear grids only
+// (variant_switches.glsl). Alpha is 1 at nodes with data and 0 at nodes without.
 layout(binding = GRADIENT_ATLAS_UNIT) uniform sampler3D gradientAtlas;
 #endif
 
 vec3 worldGradient(int step, vec3 worldPosition) {
 #if PRECOMPUTED_GRADIENTS
-    vec3 voxelGradient = texture(gradientAtlas, atlasCoordinate(step, worldPosition)).xyz;
+    vec4 filtered = texture(gradientAtlas, atlasCoordinate(step, worldPosition));
+    // Beside missing data: the mean over the nodes that have data (none: no slope).
+    vec3 voxelGradient = MISSING_VALUES == 0 ? filtered.xyz : (filtered.a > 0.0 ? filtered.xyz / filtered.a : vec3(0.0));
     return transpose(mat3(timeSteps.steps[step].worldToVoxel)) * voxelGradient;
 #endif
 #if !ALL_AFFINE

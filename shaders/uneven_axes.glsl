@@ -4,12 +4,7 @@
 // tstyles/data/grid_axes.h.
 #include "contract.glsl"
 #include "variant_switches.glsl"
-layout(std430, binding = UNEVEN_AXIS_BUFFER) readonly buffer UnevenAxes {
-    UnevenAxisInfo steps[];  // per time-step
-} unevenAxes;
-layout(std430, binding = AXIS_NODE_BUFFER) readonly buffer AxisNodes {
-    float positions[];  // the nodes of every uneven axis, each list increasing from 0
-} axisNodes;
+#include "uneven_axis_nodes.glsl"
 #if UNEVEN_AXES
 // Per bucket of each axis: the first node after the bucket's start (x), its index (y), and the node
 // indices per grid-local unit below (z) and above (w) it (UnevenAxisTable::cells). A texel fetch:
@@ -26,7 +21,7 @@ bool isUnevenAxis(int step, int axis) {
 #if !UNEVEN_AXES
     return false;
 #else
-    return unevenAxes.steps[step].firstNode[axis] >= 0;
+    return hasUnevenAxisNodes(step, axis);
 #endif
 }
 
@@ -65,15 +60,6 @@ vec3 applyUnevenAxesIn(UnevenAxisInfo info, ivec3 nodes, vec3 gridCoordinate) {
     return voxel;
 }
 #endif
-
-// The grid-local position of a fractional node index along an uneven axis.
-float nodePositionOf(int step, int axis, float index) {
-    int first = unevenAxes.steps[step].firstNode[axis];
-    int cell = clamp(int(floor(index)), 0, int(timeSteps.steps[step].dims[axis]) - 2);
-    float lower = axisNodes.positions[first + cell];
-    float upper = axisNodes.positions[first + cell + 1];
-    return mix(lower, upper, index - float(cell));
-}
 
 // worldToVoxel's result -> voxel coordinates: even axes are already node indices.
 vec3 applyUnevenAxes(int step, vec3 gridCoordinate) {

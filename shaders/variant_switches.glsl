@@ -54,6 +54,6 @@
 // the rectilinear path beside the beam one).
 const bool ONLY_BEAM_GRIDS = BEAM_GRIDS != 0 && RECTILINEAR_GRIDS == 0 && STRUCTURED_GRIDS == 0;
 const bool ONLY_STRUCTURED_GRIDS = STRUCTURED_GRIDS != 0 && RECTILINEAR_GRIDS == 0 && BEAM_GRIDS == 0;
-#if PRECOMPUTED_GRADIENTS && (!ALL_AFFINE || MISSING_VALUES)
-#error "precomputed gradients are for even rectilinear grids without missing values"
+#if PRECOMPUTED_GRADIENTS && (STRUCTURED_GRIDS || BEAM_GRIDS)
+#error "precomputed gradients are for rectilinear grids"
 #endif

@@ -17,7 +17,9 @@ GLuint groupsFor(int texels, int groupSize) { return GLuint((texels + groupSize 
 
 }  // namespace
 
-bool GradientAtlas::suits(const GpuSeries& series) { return series.allAffine() && !series.hasMissingValues(); }
+bool GradientAtlas::suits(const GpuSeries& series) {
+    return !series.hasBeamGrids() && series.structuredGrids().layerCount() == 0;
+}
 
 std::size_t GradientAtlas::bytesFor(const AtlasLayout& layout) { return layout.texelCount() * kBytesPerTexel; }
 

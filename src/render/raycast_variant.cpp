@@ -223,11 +223,18 @@ std::vector<RaycastVariant> requestableRaycastVariants() {
                             variants.push_back(variant);
                         }
                     }
-                    // Precomputed gradients: styled even rectilinear series without missing values.
-                    if (styled && kind.allAffine) {
-                        variant.missingValues = false;
+                    // Precomputed gradients: styled rectilinear series (even or uneven axes), with
+                    // missing values and without (the packed walk's shared validity for them).
+                    if (styled && kind.onlyRectilinear) {
                         variant.precomputedGradients = true;
-                        variants.push_back(variant);
+                        for (bool missing : {false, true}) {
+                            variant.missingValues = missing;
+                            if (walk == TimeStepWalk::PackedGroups) {
+                                variant.packedValidity = missing ? PackedValidity::Shared : PackedValidity::None;
+                                variant.packedGroupMasks = true;
+                            }
+                            variants.push_back(variant);
+                        }
                     }
                 }
             }

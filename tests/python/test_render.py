@@ -89,8 +89,11 @@ def test_a_numpy_series_renders_the_pixels_of_its_manifest_through_the_cli(tmp_p
         assert np.array_equal(renderer.render(series, scene), expected_bytes)
         automatic = renderer.render(series, dtype="float32")
         assert np.array_equal(automatic, auto_float)
-        assert np.array_equal(renderer.render(series), auto_bytes)
         assert renderer.uploads == 1, "the automatic scene's display frame resolves to the scene file's"
+    # The automatic scene is styled: a renderer's second styled frame of a series reads the gradient
+    # atlas, where the CLI's one frame takes six fetches. A fresh renderer's first frame is the CLI's.
+    with tstyles.Renderer(backend) as renderer:
+        assert np.array_equal(renderer.render(series), auto_bytes)
     assert len(np.unique(expected_bytes.reshape(-1, 4), axis=0)) > 20, "the image shows something"
 
 

@@ -2,8 +2,9 @@
 // every time-step, computed once per series on the GPU (shaders/gradient_atlas.comp) into a
 // texture with the density atlas' layout. A styled sample then reads its gradient with one
 // filtered fetch (PRECOMPUTED_GRADIENTS in shaders/gradient.glsl) where it took six. Only for
-// series whose grids are all even rectilinear and that have no missing values: there the filtered
-// node differences are the six-fetch gradient, to rounding, except within a voxel of a grid's face.
+// series whose grids are all rectilinear (even or uneven axes, missing values or not). On even axes
+// the filtered node differences are the six-fetch gradient, to rounding, except within a voxel of a
+// grid's face or of missing data; along uneven axes they differ where neighbouring spans do.
 #pragma once
 
 #include <cstddef>

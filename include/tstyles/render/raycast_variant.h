@@ -68,7 +68,7 @@ struct RaycastVariant {
     // per-thread memory (Renderer picks by the driver).
     bool perRayCaches = true;
     // Styles read gradients from the gradient atlas (render/gradient_atlas.h), one fetch where six
-    // were: for even rectilinear series without missing values (Renderer decides).
+    // were: for rectilinear series (Renderer decides).
     bool precomputedGradients = false;
     // The compositor leaves unchanged places without time colour (CompositorOptions::unchanged;
     // compositors whose table line takesUnchanged).

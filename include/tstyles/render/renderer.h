@@ -48,9 +48,9 @@ struct FrameOptions {
     std::optional<bool> perRayCaches;
     // Lit-sphere styles read their gradients precomputed once per series (gradient_atlas.h), one
     // fetch where they took six: by default from the series' second styled frame on, where the
-    // series suits (even rectilinear grids, no missing values) and the memory budget holds the
-    // gradient atlas; true from the first such frame, false never (for comparison). The same
-    // image but within a voxel of a grid's face, to rounding.
+    // series suits (rectilinear grids) and the memory budget holds the gradient atlas; true from
+    // the first such frame, false never (for comparison). The same image but within a voxel of a
+    // grid's face or of missing data, to rounding, and along uneven axes to a speckle of pixels.
     std::optional<bool> precomputedGradients;
     // Renders only the parts of the rays inside this world box (one process's block of a
     // distributed render, docs/scaling.md); none: whole rays.
