@@ -51,7 +51,8 @@ void ProgressiveFrame::renderPreview(Renderer& renderer, const Request& request,
     // The preview covers the padded frame (divisor whole tiles), so each preview pixel stands for
     // exactly divisor x divisor frame pixels.
     const PixelWindow padded{{0, 0}, tile * divisor_};
-    lastPreviewMs_ = renderWindow(renderer, request.scene, view, padded, tile, kPreviewStepScale, request.soloTimeStep);
+    lastPreviewMs_ =
+        renderWindow(renderer, request.scene, view, padded, tile, previewStepScaleFor(divisor_), request.soloTimeStep);
     const int finestDivisor = std::max(1, std::min(size_.x, size_.y) / kMinTileSide);
     tileDivisor_ = std::clamp(2 * divisor_, 1, finestDivisor);
     pending_ = planTiles(size_, tileDivisor_);

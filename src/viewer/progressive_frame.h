@@ -22,8 +22,6 @@ namespace tstyles::viewer {
 // A preview should take about this long, so that dragging stays near 15 frames per second with
 // the UI's own drawing on top.
 inline constexpr double kPreviewTargetMs = 45.0;
-// Previews march with this multiple of the scene's step.
-inline constexpr float kPreviewStepScale = 2.0f;
 // Refinement renders tiles until this much of a UI frame is used.
 inline constexpr double kRefineBudgetMs = 40.0;
 inline constexpr int kMaxPreviewDivisor = 16;

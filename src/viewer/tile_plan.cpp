@@ -64,4 +64,6 @@ int previewDivisorFor(double lastMs, int lastDivisor, double targetMs, int maxDi
     return std::clamp(divisor, 1, maxDivisor);
 }
 
+float previewStepScaleFor(int divisor) { return std::max(kPreviewStepScale, 0.5f * float(divisor)); }
+
 }  // namespace tstyles::viewer

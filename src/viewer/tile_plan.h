@@ -39,4 +39,13 @@ View cropView(const View& view, glm::ivec2 frame, const PixelWindow& window);
 // `lastMs` at `lastDivisor` (render time grows with the pixel count).
 int previewDivisorFor(double lastMs, int lastDivisor, double targetMs, int maxDivisor);
 
+// Previews march with at least this multiple of the scene's step.
+inline constexpr float kPreviewStepScale = 2.0f;
+// The multiple of the scene's step a preview of `divisor` marches with: kPreviewStepScale, or half
+// the divisor where that is longer (8 at 1/16). A preview pixel stands for divisor x divisor frame
+// pixels, and fewer pixels stop paying on a CPU rasterizer long before the rays' length does: a
+// 61 x 31 preview of the sonar's long rays is one of llvmpipe's 64-pixel bins, which one thread
+// draws. Opacity correction keeps a longer step's opacities.
+float previewStepScaleFor(int divisor);
+
 }  // namespace tstyles::viewer

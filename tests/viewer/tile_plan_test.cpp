@@ -72,4 +72,11 @@ TEST(TilePlan, PreviewDivisorFollowsTheRenderTime) {
     EXPECT_EQ(previewDivisorFor(1e6, 2, 45.0, 16), 16);
 }
 
+TEST(TilePlan, CoarsePreviewsTakeLongerSteps) {
+    EXPECT_EQ(previewStepScaleFor(1), kPreviewStepScale);
+    EXPECT_EQ(previewStepScaleFor(4), kPreviewStepScale);
+    EXPECT_EQ(previewStepScaleFor(5), 2.5f);
+    EXPECT_EQ(previewStepScaleFor(16), 8.0f);
+}
+
 }  // namespace
