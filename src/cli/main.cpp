@@ -6,6 +6,7 @@
 
 #include "commands.h"
 #include "manual_page.h"
+#include "packaging_files.h"
 #include "version_text.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/distributed/mpi_session.h"
@@ -20,7 +21,8 @@ int main(int argc, char** argv) {
                                                 cli::addBenchCommand(app), cli::addViewCommand(app),
                                                 cli::addConvertCommand(app), cli::addSceneCommand(app),
                                                 cli::addAnimateCommand(app), cli::addCompareCommand(app),
-                                                cli::addCheckCommand(app), cli::addManualPageCommand(app)};
+                                                cli::addCheckCommand(app), cli::addManualPageCommand(app),
+                                                cli::addPackagingFileCommand(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {

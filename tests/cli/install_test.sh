@@ -154,7 +154,8 @@ help_options_of_page() {
 }
 
 case_desktop_entry_and_mime_types_valid() {
-    local entry="$SOURCE_DIR/tools/packaging/tstyles.desktop"
+    # Written by the build from the format table (tools/cmake/Install.cmake).
+    local entry="$BUILD_DIR/packaging/tstyles.desktop"
     if command -v desktop-file-validate >/dev/null; then
         desktop-file-validate "$entry" >&2 || fail "desktop-file-validate rejects $entry"
     else
@@ -165,14 +166,14 @@ case_desktop_entry_and_mime_types_valid() {
     # The MIME package: well-formed, and accepted by update-mime-database, which then knows our types.
     local mime="$SCRATCH/mime"
     mkdir -p "$mime/packages"
-    cp "$SOURCE_DIR/tools/packaging/tstyles-mime.xml" "$mime/packages/tstyles.xml"
-    xmllint --noout "$mime/packages/tstyles.xml" || fail "tstyles-mime.xml is not well-formed XML"
+    cp "$BUILD_DIR/packaging/tstyles.xml" "$mime/packages/tstyles.xml"
+    xmllint --noout "$mime/packages/tstyles.xml" || fail "the MIME package is not well-formed XML"
     # Our temporary share/ on the search path, or update-mime-database warns that nothing will look there.
     XDG_DATA_DIRS="$SCRATCH" XDG_DATA_HOME="$SCRATCH" update-mime-database "$mime" 2>"$SCRATCH/mime.log" ||
         fail "update-mime-database: $(cat "$SCRATCH/mime.log")"
     [ ! -s "$SCRATCH/mime.log" ] || fail "update-mime-database warns: $(cat "$SCRATCH/mime.log")"
     local type
-    for type in x-nifti x-nrrd x-tstyles-series x-tstyles-scene; do
+    for type in x-nifti x-nrrd x-vtk-xml x-tstyles-series x-tstyles-scene; do
         [ -f "$mime/application/$type.xml" ] || fail "update-mime-database did not register application/$type"
     done
     # Every type the entry opens is ours or the system's.
@@ -180,6 +181,11 @@ case_desktop_entry_and_mime_types_valid() {
     for listed in $(sed -n 's/^MimeType=//p' "$entry" | tr ';' ' '); do
         [ -f "$mime/$listed.xml" ] || [ -f "/usr/share/mime/$listed.xml" ] ||
             fail "the desktop entry opens $listed, which no MIME package defines"
+    done
+    # The desktop offers the program for a TIFF, a DICOM file and a VTK image: their types are listed.
+    local offered
+    for offered in image/tiff application/dicom application/x-vtk-xml; do
+        grep -q "^MimeType=.*$offered;" "$entry" || fail "the desktop entry does not open $offered"
     done
     # The icon in its three sizes, each square at its size.
     local size
@@ -208,6 +214,13 @@ case_deb_package_contents() {
     grep -q '^./usr/lib/python3/dist-packages/tstyles/_native\..*\.so$' "$SCRATCH/contents.txt" ||
         fail "the .deb lacks the Python extension module"
     if grep -qE 'build|/work/|/home/' "$SCRATCH/contents.txt"; then fail "the .deb holds paths of the build machine"; fi
+    # Its description names the formats from the table, the latest rows too.
+    local description
+    description=$(dpkg-deb -f "$deb" Description)
+    local format
+    for format in NetCDF NIfTI "VTK XML" DICOM OME-Zarr TIFF Plot3D; do
+        case "$description" in *"$format"*) ;; *) fail "the description lacks $format: $description" ;; esac
+    done
     local depends
     depends=$(dpkg-deb -f "$deb" Depends)
     case "$depends" in *fonts-dejavu-core*libegl1*) ;; *) fail "Depends lacks the font or libegl1: $depends" ;; esac

@@ -39,11 +39,27 @@ add_custom_command(OUTPUT ${TSTYLES_MAN_PAGE}
 add_custom_target(tstyles_manual_page ALL DEPENDS ${TSTYLES_MAN_PAGE})
 install(FILES ${TSTYLES_MAN_PAGE} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 
-# The desktop: the applications menu entry, MIME types for the files no shared-mime-info type
-# covers, and the icon (tools/packaging/icons, drawn by tools/packaging/make_icons.sh from a rendered scene).
-install(FILES ${CMAKE_SOURCE_DIR}/tools/packaging/tstyles.desktop DESTINATION ${CMAKE_INSTALL_DATADIR}/applications)
-install(FILES ${CMAKE_SOURCE_DIR}/tools/packaging/tstyles-mime.xml DESTINATION ${CMAKE_INSTALL_DATADIR}/mime/packages
-        RENAME tstyles.xml)
+# The desktop: the applications menu entry and the MIME types for the files no shared-mime-info
+# type covers, written from the format table by the hidden `tstyles packaging-file` (so that every
+# format the program reads is offered for its files; tstyles/data/format_listing.h), with the
+# package's description (tools/cmake/Packaging.cmake); and the icon (tools/packaging/icons, drawn by
+# tools/packaging/make_icons.sh from a rendered scene).
+set(TSTYLES_PACKAGING_DIR ${CMAKE_BINARY_DIR}/packaging)
+set(TSTYLES_DESKTOP_ENTRY ${TSTYLES_PACKAGING_DIR}/tstyles.desktop)
+set(TSTYLES_MIME_PACKAGE ${TSTYLES_PACKAGING_DIR}/tstyles.xml)
+set(TSTYLES_PACKAGE_DESCRIPTION ${TSTYLES_PACKAGING_DIR}/description.txt)
+add_custom_command(OUTPUT ${TSTYLES_DESKTOP_ENTRY} ${TSTYLES_MIME_PACKAGE} ${TSTYLES_PACKAGE_DESCRIPTION}
+  COMMAND ${CMAKE_COMMAND} -E make_directory ${TSTYLES_PACKAGING_DIR}
+  COMMAND tstyles packaging-file desktop-entry --output ${TSTYLES_DESKTOP_ENTRY}
+  COMMAND tstyles packaging-file mime-package --output ${TSTYLES_MIME_PACKAGE}
+  COMMAND tstyles packaging-file description --output ${TSTYLES_PACKAGE_DESCRIPTION}
+  DEPENDS tstyles
+  COMMENT "Writing the desktop entry, the MIME package and the package description from the format table"
+  VERBATIM)
+add_custom_target(tstyles_packaging_files ALL
+                  DEPENDS ${TSTYLES_DESKTOP_ENTRY} ${TSTYLES_MIME_PACKAGE} ${TSTYLES_PACKAGE_DESCRIPTION})
+install(FILES ${TSTYLES_DESKTOP_ENTRY} DESTINATION ${CMAKE_INSTALL_DATADIR}/applications)
+install(FILES ${TSTYLES_MIME_PACKAGE} DESTINATION ${CMAKE_INSTALL_DATADIR}/mime/packages)
 foreach(size 48 128 256)
   install(FILES ${CMAKE_SOURCE_DIR}/tools/packaging/icons/tstyles-${size}.png
           DESTINATION ${CMAKE_INSTALL_DATADIR}/icons/hicolor/${size}x${size}/apps RENAME tstyles.png)

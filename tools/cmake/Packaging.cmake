@@ -7,10 +7,11 @@ set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_PACKAGE_VENDOR "Temporal Styles")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY
     "Time-varying volume rendering with temporal style transfer functions")
-set(CPACK_PACKAGE_DESCRIPTION
-    "tstyles renders time-varying volume data (NetCDF, NIfTI, NRRD, Plot3D, its own manifests) with temporal
-compositors and temporal style transfer functions, from the command line, in a window, or from
-Python (import tstyles).")
+# The long description names every format the program reads: the build writes it from the format
+# table (tools/cmake/Install.cmake), and cpack reads it when it packs (CPACK_PROJECT_CONFIG_FILE).
+configure_file(${CMAKE_SOURCE_DIR}/tools/packaging/cpack_description.cmake.in
+               ${CMAKE_BINARY_DIR}/packaging/cpack_description.cmake @ONLY)
+set(CPACK_PROJECT_CONFIG_FILE ${CMAKE_BINARY_DIR}/packaging/cpack_description.cmake)
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_MAINTAINER "Temporal Styles developers <tstyles@invalid>")

@@ -27,32 +27,42 @@ bool startsWithNrrdMagic(const std::filesystem::path& file) {
     return in && std::string(magic, 7) == "NRRD000";
 }
 
+// How the desktop's MIME database recognises our types' content (shared-mime-info <match> elements).
+// NIfTI-1 single file: "n+1" at byte 344; NIfTI-2: "n+2" at byte 4.
+constexpr const char* kNiftiMagic =
+    R"(<match type="string" offset="344" value="n+1"/><match type="string" offset="4" value="n+2"/>)";
+constexpr const char* kNrrdMagic = R"(<match type="string" offset="0" value="NRRD000"/>)";
+// The root element of a VTK XML file, after the XML declaration.
+constexpr const char* kVtkXmlMagic = R"(<match type="string" offset="0:256" value="&lt;VTKFile"/>)";
+
 }  // namespace
 
 const std::vector<SeriesFormat>& seriesFormats() {
     static const std::vector<SeriesFormat> formats = {
-        {"NetCDF", {".nc", ".nc4", ".cdf", ".netcdf"}, ".nc .nc4 .cdf .netcdf",
+        {"NetCDF", {".nc", ".nc4", ".cdf", ".netcdf"}, {{"application/x-netcdf"}}, ".nc .nc4 .cdf .netcdf",
          {"--var", "--time-dim", "--index-axes"}, hasNetcdfSignature,
          stackedFiles([](const std::filesystem::path& file, const ReadOptions& options) {
              return openNetcdf(file, options);
          })},
-        {"NIfTI", {".nii", ".nii.gz"}, ".nii .nii.gz", {}, hasNiftiSignature,
+        {"NIfTI", {".nii", ".nii.gz"}, {{"application/x-nifti", "NIfTI volume", kNiftiMagic}}, ".nii .nii.gz", {}, hasNiftiSignature,
          stackedFiles([](const std::filesystem::path& file, const ReadOptions&) { return openNifti(file); })},
-        {"NRRD", {".nrrd", ".nhdr"}, ".nrrd .nhdr", {}, startsWithNrrdMagic,
+        {"NRRD", {".nrrd", ".nhdr"}, {{"application/x-nrrd", "NRRD volume", kNrrdMagic}}, ".nrrd .nhdr", {}, startsWithNrrdMagic,
          stackedFiles([](const std::filesystem::path& file, const ReadOptions&) { return openNrrd(file); })},
         // ParaView's time series: a collection (.pvd, .series) or the data sets themselves.
-        {"VTK XML", {".pvd", ".series", ".vti", ".vts"}, ".pvd .series .vti .vts", {"--var"}, hasVtkXmlSignature,
+        {"VTK XML", {".pvd", ".series", ".vti", ".vts"},
+         {{"application/x-vtk-xml", "VTK XML data set or ParaView collection", kVtkXmlMagic}}, ".pvd .series .vti .vts", {"--var"}, hasVtkXmlSignature,
          openVtkSeries},
         // Files, lists of files, or folders (nested ones too) of one or more series; --series picks one.
-        {"DICOM", {".dcm", ".dicom"}, ".dcm .dicom, files with the DICM magic, or their folder", {"--series"},
+        {"DICOM", {".dcm", ".dicom"}, {{"application/dicom"}}, ".dcm .dicom, files with the DICM magic, or their folder", {"--series"},
          hasDicomMagic, openDicom, isDicomFolder},
-        // By name only: ".bin" alone says too little.
-        {"Hurricane Isabel raw", {}, "VARIABLEfHH.bin or .bin.gz", {"--dims"}, isIsabelFileName,
+        // By name only: ".bin" alone says too little (and no MIME type: the desktop goes by names too).
+        {"Hurricane Isabel raw", {}, {}, "VARIABLEfHH.bin or .bin.gz", {"--dims"}, isIsabelFileName,
          [](const std::vector<std::filesystem::path>& files, const ReadOptions& options) {
              return openIsabel(files, options.rawDims);
          }},
-        // A store is a folder; its zarr.json or .zattrs names it too.
-        {"OME-Zarr", {"zarr.json", ".zattrs"}, "a .zarr store folder, or its zarr.json or .zattrs", {"--channel", "--level"},
+        // A store is a folder; its zarr.json or .zattrs names it too. The desktop has no type for a
+        // folder of one kind.
+        {"OME-Zarr", {"zarr.json", ".zattrs"}, {}, "a .zarr store folder, or its zarr.json or .zattrs", {"--channel", "--level"},
          {},
          [](const std::vector<std::filesystem::path>& files, const ReadOptions& options) {
              if (files.size() > 1)
@@ -61,10 +71,11 @@ const std::vector<SeriesFormat>& seriesFormats() {
          },
          isOmeZarrFolder},
         // Microscopy: one file, a list of files or a folder of them, read as pages (tiff_reader.h).
-        {"TIFF", {".tif", ".tiff"}, ".tif .tiff (ImageJ, OME-TIFF, plain pages), or a folder of them",
+        {"TIFF", {".tif", ".tiff"}, {{"image/tiff"}}, ".tif .tiff (ImageJ, OME-TIFF, plain pages), or a folder of them",
          {"--channel", "--dims", "--axes"}, hasTiffSignature, openTiff, isTiffFolder},
-        // Last: its content sniff reads the whole file to find a layout that fits.
-        {kPlot3DFormatName, {".xyz", ".x", ".g", ".grd"}, ".xyz .x .g .grd, with --solution",
+        // Last: its content sniff reads the whole file to find a layout that fits. No MIME type: its
+        // names (.xyz, .x, .g) are other formats' too, and its files have no magic.
+        {kPlot3DFormatName, {".xyz", ".x", ".g", ".grd"}, {}, ".xyz .x .g .grd, with --solution",
          {"--var", "--solution", "--block", "--gamma"}, looksLikePlot3DGrid,
          [](const std::vector<std::filesystem::path>& files, const ReadOptions& options) {
              if (files.size() > 1)

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "source_series.h"
+#include "tstyles/data/format_listing.h"
 #include "tstyles/data/read_options.h"
 
 namespace tstyles {
@@ -14,6 +15,7 @@ namespace tstyles {
 struct SeriesFormat {
     std::string name;
     std::vector<std::string> extensions;                        // lower case, with the dot: ".nii.gz"
+    std::vector<FormatMimeType> mimeTypes;                      // of its files, for the desktop
     std::string spelling;                                       // how its files look, for messages
     std::vector<std::string> options;                           // the format-only options it takes: "--var", ...
     std::function<bool(const std::filesystem::path&)> sniff;    // recognises the content; may be empty
