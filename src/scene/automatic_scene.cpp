@@ -241,8 +241,10 @@ AutomaticScene automaticScene(const Series& series, const std::filesystem::path&
 
     if (const auto step = automaticStep(series, frame)) {
         scene.raycast.step = *step;
+        const bool beams = std::any_of(series.steps.begin(), series.steps.end(), [](const TimeStep& s) { return s.isBeam(); });
         result.explanation.push_back("ray step: " + number(*step) +
-                                     " (half the typical cell: the lower quartile of the spacings along each axis)");
+                                     (beams ? " (one range cell of the beams, or half the typical cell of other grids)"
+                                            : " (half the typical cell: the lower quartile of the spacings along each axis)"));
     }
     const DataKind kind = dataKindOf(series);
     const AutomaticCamera camera = automaticCamera(kind, series, frame);

@@ -26,6 +26,12 @@ double lowerQuartileGap(const RectilinearGrid& grid, int axis) {
 std::optional<double> automaticStep(const Series& series, const DisplayFrame& frame) {
     double typical = std::numeric_limits<double>::infinity();
     for (const TimeStep& step : series.steps) {
+        if (step.isBeam()) {
+            // One range cell (counted as two halves here), as short as the display draws any axis.
+            const double leastDrawn = std::min({frame.scale.x, frame.scale.y, frame.scale.z});
+            typical = std::min(typical, 2.0 * step.beam().rangeSpacing() * leastDrawn);
+            continue;
+        }
         if (!std::holds_alternative<RectilinearGrid>(step.grid)) return std::nullopt;
         const RectilinearGrid& grid = step.rectilinear();
         const glm::dmat3 toWorld = glm::mat3_cast(step.placement.rotation);

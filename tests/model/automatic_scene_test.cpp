@@ -317,4 +317,23 @@ TEST(AutomaticStep, HalfTheLowerQuartileOfTheLevelSpacings) {
     EXPECT_DOUBLE_EQ(*automaticStep(series, DisplayFrame{}), 0.5 * series.finestSpacing());
 }
 
+// A beam grid (a sonar's fan) takes one range cell, as short as the display draws any axis: its
+// cells are far wider across the beams than along the range. 101 samples over ranges 2 .. 52: 0.5.
+TEST(AutomaticStep, ABeamGridTakesOneRangeCell) {
+    Series series;
+    BeamGrid fan;
+    fan.dims = {8, 6, 101};
+    fan.azimuthDeg = {-30, -20, -10, 0, 10, 20, 30, 40};
+    fan.elevationDeg = {-20, -10, 0, 10, 20, 30};
+    fan.minRange = 2.0;
+    fan.maxRange = 52.0;
+    TimeStep step;
+    step.grid = fan;
+    series.steps.push_back(step);
+    EXPECT_DOUBLE_EQ(*automaticStep(series, DisplayFrame{}), 0.5);
+    DisplayFrame flattened;
+    flattened.scale = {1.0, 0.5, 1.0};
+    EXPECT_DOUBLE_EQ(*automaticStep(series, flattened), 0.25);
+}
+
 }  // namespace tstyles
