@@ -82,7 +82,7 @@ void DistributedRendering::keepBlock(const Series& block, Series outline, const 
     if (mpi_.isFirst()) outline_ = std::move(outline);
 }
 
-Image DistributedRendering::render(const Scene& scene) {
+Image DistributedRendering::render(const Scene& scene, FrameOptions options) {
     const RayModeInfo& ray = rayModeInfo(scene.rayMode);
     if (ray.merge != RayMerge::Over)
         throw InputError("ray.mode \"" + std::string(ray.name) +
@@ -111,7 +111,6 @@ Image DistributedRendering::render(const Scene& scene) {
         // Blocks are rendered over nothing; process 0 puts the background behind the composite.
         Scene blockScene = scene;
         blockScene.background = glm::dvec4(0.0);
-        FrameOptions options;
         options.size = {scene.width, scene.height};
         options.clipBox = blocks_.block(mpi_.rank());
         renderer_.draw(blockScene, view, options);

@@ -56,7 +56,8 @@ public:
                          const BlockUpload& upload, bool automaticOpacity = false);
 
     // Collective: the scene's frame, annotated, on process 0; an empty image on the others.
-    Image render(const Scene& scene);
+    // `options`: as for Renderer::draw, but for the size and clip box, which the blocks set.
+    Image render(const Scene& scene, FrameOptions options = {});
 
     const Scene& scene() const { return scene_; }
     // What the camera frames where the scene leaves it to the data (Framing).
