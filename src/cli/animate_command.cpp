@@ -9,6 +9,7 @@
 
 #include "animation_options.h"
 #include "annotation_options.h"
+#include "batch_frame_options.h"
 #include "tstyles/render/annotated_rendering.h"
 #include "commands.h"
 #include "distributed_source.h"
@@ -102,16 +103,6 @@ void reportWritten(const AnimateOptions& options, const FrameSink& sink, const M
               << " ms per frame; " << how << ")\n";
 }
 
-// Every frame is the image `tstyles render --frame N` draws: its styles take their gradients with
-// six fetches, as that one frame does. The gradient atlas, which the renderer reads from a series'
-// second styled frame on, would make the movie's first frame differ from the others' method and
-// every later frame differ from `render --frame` (by up to 7/255 on the hurricane).
-FrameOptions framesAsRenderDrawsThem() {
-    FrameOptions options;
-    options.precomputedGradients = false;
-    return options;
-}
-
 int runAnimate(const AnimateOptions& options) {
     parseGpuMemoryOption(options.gpuMemory);
     AnimationPlan plan = planAnimation(options, openSceneOrDataset(options.inputs, {}, options.dataset), true);
@@ -135,7 +126,7 @@ int runAnimate(const AnimateOptions& options) {
         }
         progress.update(int(frame));
         const auto start = std::chrono::steady_clock::now();
-        sink->add(rendering.render(scenes[frame], framesAsRenderDrawsThem()));
+        sink->add(rendering.render(scenes[frame], asOneFrameRenderDrawsIt()));
         milliseconds.push_back(
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     }
@@ -199,7 +190,7 @@ int runDistributedAnimate(const AnimateOptions& options) {
         }
         if (progress) progress->update(int(frame));
         const auto start = std::chrono::steady_clock::now();
-        const Image image = rendering.render(plan->scenes[frame], framesAsRenderDrawsThem());
+        const Image image = rendering.render(plan->scenes[frame], asOneFrameRenderDrawsIt());
         mpi.together("writing a frame", [&] {
             if (mpi.isFirst()) sink->add(image);
         });

@@ -3,6 +3,7 @@
 
 #include <chrono>
 
+#include "../batch_frame_options.h"
 #include "commands.h"
 #include "tstyles/core/user_paths.h"
 #include "tstyles/gl/gl_loader.h"
@@ -57,13 +58,8 @@ CaseResult CaseWorker::check(const CheckCase& entry, Scene scene, bool update) {
     if (entry.height) scene.height = *entry.height;
     const SceneOnSeries& fitted = fit(scene);
     AnnotatedRendering rendering(renderer_, fitted);
-    // A case's pixels must not depend on the cases before it on this worker: the gradient atlas,
-    // which the renderer makes from a series' second styled frame on, would make them depend on the
-    // suite's order and the --jobs split (up to 3/255 on the styled super-ellipsoid). Six fetches,
-    // as `tstyles render` draws its one frame.
-    FrameOptions options;
-    options.precomputedGradients = false;
-    Image actual = rendering.render(fitted.scene, options);
+    // A case's pixels must not depend on the cases before it on this worker.
+    Image actual = rendering.render(fitted.scene, asOneFrameRenderDrawsIt());
     const bool haveGolden = userPathKind({{}, "golden"}, entry.golden) == PathKind::RegularFile;
     std::optional<Image> expected;
     if (haveGolden) expected = readImage(entry.golden);
