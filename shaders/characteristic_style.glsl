@@ -13,25 +13,27 @@ vec4 styledCharacteristic(TemporalCharacteristic c, vec3 position, inout int fet
     if (COMPOSITOR_READS == READS_COMPOSITED) return c.colorOpacity;
     if (COMPOSITOR_READS == READS_INDEX_TSTF) {
         if (UNCHANGED_TIME == 0) return styledTimeStep(c.representative, position, fetches);
-        if (c.reads == READS_INDEX_TSTF) {
-            // A place whose time shows: as opaque as a slab `changedGain` times as thick.
-            vec4 timed = styledTimeStep(c.representative, position, fetches);
-            return vec4(timed.rgb, 1.0 - pow(1.0 - clamp(timed.a, 0.0, 1.0), changedGain));
-        }
-        // No time colour (pickedCharacteristic): the STF alone, as final processing shows it outside
-        // a mask, as opaque as the scene asks.
-        TimeStepSample neutral = c.representative;
-        neutral.inMask = false;
-        vec4 stf = styledFinal(neutral, position, vec4(0.0), INDEX_TSTF_TRACK, 0.0, fetches);
+        // A place whose time shows (READS_INDEX_TSTF) is styled with its time colour and as opaque
+        // as a slab `changedGain` times as thick; an unchanged one (READS_STF, no time colour, as
+        // final processing shows it outside a mask) with the STF alone, as opaque as the scene asks,
+        // and where `unchangedBoundary` is set, fading to UNCHANGED_INTERIOR of that inside regions
+        // of one value. One styledFinalOn for both and one gradient for the style and the boundary:
+        // llvmpipe runs both sides of a branch.
+        bool timed = c.reads == READS_INDEX_TSTF;
+        TimeStepSample shown = c.representative;
+        shown.inMask = timed && shown.inMask;
+        bool boundaryRead = !timed && unchangedBoundary > 0.0;
+        vec3 gradient = vec3(0.0);
+        if (boundaryRead || (STYLED != 0 && readsLitSphere(shown.inMask, INDEX_TSTF_TRACK)))
+            gradient = countedGradient(shown.step, position, fetches);
+        SphereCoordinate sphere = STYLED != 0 ? sphereCoordinate(gradient) : SphereCoordinate(vec2(0.5));
+        vec4 styled = styledFinalOn(sphere, shown, timed ? classifyIndexTstf(shown.step) : vec4(0.0),
+                                    INDEX_TSTF_TRACK, timed ? float(shown.step) : 0.0);
+        if (timed) return vec4(styled.rgb, 1.0 - pow(1.0 - clamp(styled.a, 0.0, 1.0), changedGain));
         float share = unchangedOpacity;
-        if (unchangedBoundary > 0.0) {
-            // Boundaries stay, regions of one value fade to UNCHANGED_INTERIOR of the share (6
-            // fetches; 1 with precomputed gradients).
-            fetches += PRECOMPUTED_GRADIENTS != 0 ? 1 : 6;
-            float steepness = clamp(length(worldGradient(neutral.step, position)) / unchangedBoundary, 0.0, 1.0);
-            share *= mix(UNCHANGED_INTERIOR, 1.0, steepness);
-        }
-        return vec4(stf.rgb, stf.a * share);
+        if (boundaryRead)
+            share *= mix(UNCHANGED_INTERIOR, 1.0, clamp(length(gradient) / unchangedBoundary, 0.0, 1.0));
+        return vec4(styled.rgb, styled.a * share);
     }
     // READS_STF: the representative's STF alone, as final processing shows it outside a mask.
     TimeStepSample shown = c.representative;

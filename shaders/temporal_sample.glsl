@@ -113,15 +113,10 @@ TemporalCharacteristic pickedCharacteristic(TimeStepSample picked, float range, 
     return picks;
 }
 
-// Where the time-step's style is read at this sample (6 fetches when styled, 1 with precomputed
-// gradients).
-SphereCoordinate styleCoordinate(int step, vec3 position, inout int fetches) {
-#if STYLED
+// The world gradient of a time-step at this sample (6 fetches, 1 with precomputed gradients).
+vec3 countedGradient(int step, vec3 position, inout int fetches) {
     fetches += PRECOMPUTED_GRADIENTS != 0 ? 1 : 6;
-    return sphereCoordinate(worldGradient(step, position));
-#else
-    return SphereCoordinate(vec2(0.5));
-#endif
+    return worldGradient(step, position);
 }
 
 // Whether the final processing of a sample, in or outside the masks, with the TSTF `tstfTrack`
@@ -131,19 +126,25 @@ bool readsLitSphere(bool inMask, int tstfTrack) {
 }
 
 // The final processing of an STF classification and a TSTF one (`tstfTrack`), each styled where
-// it has styles and is shown. Only then is the sphere coordinate (a six-fetch gradient) needed:
-// outside the masks of a scene whose STF has no styles there is none. A run-time test: a GPU skips
-// the gradient where a warp agrees, but inside the ray's loop llvmpipe runs it for every call, taken
-// or not (docs/performance.md, "llvmpipe and branches"), so a compositor that styles several
-// time-steps per sample leaves out those that need no sphere before it calls this (tc_average.glsl).
-vec4 styledFinal(TimeStepSample s, vec3 position, vec4 tstf, int tstfTrack, float tstfX, inout int fetches) {
-    bool stfShown = showsStf(s.inMask);
-    bool tstfShown = showsTstf(s.inMask);
-    SphereCoordinate sphere = SphereCoordinate(vec2(0.5));
-    if (readsLitSphere(s.inMask, tstfTrack)) sphere = styleCoordinate(s.step, position, fetches);
-    vec4 stf = stfShown ? applyStyle(STF_TRACK, s.density, s.stf, sphere) : s.stf;
-    vec4 styledTstf = tstfShown ? applyStyle(tstfTrack, tstfX, tstf, sphere) : tstf;
+// it has styles and is shown, read on the lit spheres at `sphere`.
+vec4 styledFinalOn(SphereCoordinate sphere, TimeStepSample s, vec4 tstf, int tstfTrack, float tstfX) {
+    vec4 stf = showsStf(s.inMask) ? applyStyle(STF_TRACK, s.density, s.stf, sphere) : s.stf;
+    vec4 styledTstf = showsTstf(s.inMask) ? applyStyle(tstfTrack, tstfX, tstf, sphere) : tstf;
     return finalProcessing(stf, styledTstf, s.inMask);
+}
+
+// styledFinalOn() where the sphere coordinate comes from the time-step's gradient, read only where a
+// style is shown: outside the masks of a scene whose STF has no styles there is none. A run-time
+// test: a GPU skips the gradient where a warp agrees, but inside the ray's loop llvmpipe runs it for
+// every call, taken or not (docs/performance.md, "llvmpipe and branches"), so a compositor that
+// styles several time-steps per sample leaves out those that need no sphere before it calls this
+// (tc_average.glsl), and a caller with two ways to style one sample calls it once.
+vec4 styledFinal(TimeStepSample s, vec3 position, vec4 tstf, int tstfTrack, float tstfX, inout int fetches) {
+    SphereCoordinate sphere = SphereCoordinate(vec2(0.5));
+#if STYLED
+    if (readsLitSphere(s.inMask, tstfTrack)) sphere = sphereCoordinate(countedGradient(s.step, position, fetches));
+#endif
+    return styledFinalOn(sphere, s, tstf, tstfTrack, tstfX);
 }
 
 // One time-step's own temporal style: its STF and its index TSTF, styled, after final processing.

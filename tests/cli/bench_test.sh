@@ -113,19 +113,21 @@ case_stages() {
 
 # Issue 52: `bench FILE` times the automatic scene of a dataset (any format render reads), as
 # `render FILE` draws it; `--automatic` adds the bundled datasets' automatic scenes after the matrix;
-# a scene file is refused (its scene is not the automatic one).
+# a scene file is timed as written.
 case_automatic_scene_of_a_file() {
     run_tstyles -- bench "$DATASET" --sizes 24 --frames 1 --warmup 0 --json "$SCRATCH/file.json"
     expect_exit 0
-    expect_stdout_contains "scenes: each file's automatic scene"
+    expect_stdout_contains "scenes: each dataset's automatic scene"
     grep -qE "^series.json +temporal-mip +10 +24x24 " "$OUT_FILE" || fail "no row for the file's automatic scene"
     grep -q '"scene": "automatic"' "$SCRATCH/file.json" || fail "the JSON does not say the scene is the automatic one"
-    run_tstyles -- bench "$SOURCE_DIR/data/scenes/figure4-temporal-mip.json" --sizes 24 --frames 1 --warmup 0
-    expect_exit 2
-    expect_stderr_contains "is a scene file; bench FILE times a dataset's automatic scene"
+    run_tstyles -- bench "$SOURCE_DIR/data/scenes/figure4-temporal-mip.json" --sizes 24 --frames 1 --warmup 0 \
+        --json "$SCRATCH/scene.json"
+    expect_exit 0
+    grep -qE "^figure4-temporal-mip.json +temporal-mip +10 +24x24 " "$OUT_FILE" || fail "no row for the scene file"
+    grep -q '"scene": "scene file"' "$SCRATCH/scene.json" || fail "the JSON does not say the scene is the file's"
     run_tstyles -- bench "$DATASET" --styled --sizes 24 --frames 1 --warmup 0
     expect_exit 2
-    expect_stderr_contains "FILE: times the files' automatic scenes"
+    expect_stderr_contains "FILE: times the files' own scenes"
 }
 
 case_automatic_after_the_matrix() {

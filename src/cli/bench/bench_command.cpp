@@ -59,7 +59,8 @@ struct BenchOptions {
     GlOptions gl;
 };
 
-// The automatic scene of a user's file, fitted to its series, and what its camera frames.
+// A user's scene: a file's automatic scene, or a scene file as written, fitted to its series, and
+// what its camera frames.
 struct AutomaticBenchScene {
     Scene scene;
     Bounds framed;
@@ -67,11 +68,12 @@ struct AutomaticBenchScene {
 
 struct BenchCase {
     std::string dataset;
-    std::string scene;  // the bundled scene that supplies camera and transfer functions, or "automatic"
+    // The bundled scene that supplies camera and transfer functions, "automatic", or "scene file"
+    std::string scene;
     TemporalCompositor compositor;
     RayMode rayMode;
     glm::ivec2 size;
-    std::optional<AutomaticBenchScene> automatic;  // a file's automatic scene, used as it is
+    std::optional<AutomaticBenchScene> automatic;  // a user's scene, used as it is
 };
 
 // The compositor, and the ray mode where it is not the default: "temporal-mip", "temporal-mip+maximum".
@@ -222,7 +224,8 @@ void printTable(const std::vector<BenchResult>& results, const std::string& devi
     std::cout << "device: " << device << "\n";
     const bool styled = results.front().benchCase.scene.find("styled") != std::string::npos;
     if (results.front().benchCase.automatic)
-        std::cout << "scenes: each file's automatic scene, as `tstyles render FILE` draws it\n";
+        std::cout << "scenes: each dataset's automatic scene, as `tstyles render FILE` draws it, and each scene file "
+                     "as written\n";
     else
         std::cout << "scenes: data/scenes/<dataset's prefix>" << (styled ? "styled-" : "") << "*.json\n";
     const int method = methodColumnWidth(results);
@@ -339,14 +342,13 @@ void runMatrix(Renderer& renderer, const BenchOptions& options, std::vector<Benc
     }
 }
 
-// Each file's automatic scene (docs/automatic-scene.md), as `render FILE` draws it, at every size;
-// --ray replaces its ray mode where given.
+// Each dataset's automatic scene (docs/automatic-scene.md), as `render FILE` draws it, and each scene
+// file as written, at every size; --ray replaces its ray mode where given.
 void runAutomaticScenes(Renderer& renderer, const std::vector<std::pair<std::string, std::filesystem::path>>& files,
                         const BenchOptions& options, bool raysGiven, std::vector<BenchResult>& results) {
     for (const auto& [name, file] : files) {
         SceneAndSeries opened = openSceneOrDataset({file}, {}, options.dataset);
-        if (opened.explanation.empty())
-            throwInputError(file, "", "is a scene file; bench FILE times a dataset's automatic scene");
+        const std::string sceneKind = opened.explanation.empty() ? "scene file" : "automatic";
         SceneOnSeries fitted = fitSceneToSeries(std::move(opened.scene), std::move(opened.series));
         const std::vector<std::string> storageChanges = residencyChanges(
             fitted.series, uploadWithinGpuMemory(renderer, fitted.series, options.gpuMemory, options.dataset));
@@ -359,7 +361,7 @@ void runAutomaticScenes(Renderer& renderer, const std::vector<std::pair<std::str
         for (const RayMode mode : modes) {
             if (!goTogether(fitted.scene.compositor, mode)) continue;
             for (glm::ivec2 size : options.sizes) {
-                BenchCase benchCase{name, "automatic", fitted.scene.compositor, mode, size,
+                BenchCase benchCase{name, sceneKind, fitted.scene.compositor, mode, size,
                                     AutomaticBenchScene{fitted.scene, fitted.framed}};
                 results.push_back(runCase(renderer, fitted.series, benchCase, options));
                 results.back().gpuStorageChanges = storageChanges;
@@ -381,7 +383,7 @@ void runScaling(Renderer& renderer, const BenchOptions& options, std::vector<Ben
 int runBench(const BenchOptions& options, bool raysGiven) {
     if (!options.files.empty() &&
         (options.styled || !options.scalingSteps.empty() || options.distributed || options.automatic))
-        throwInputError("", "FILE", "times the files' automatic scenes; it takes neither --styled, --scaling, "
+        throwInputError("", "FILE", "times the files' own scenes; it takes neither --styled, --scaling, "
                                     "--distributed nor --automatic");
     if (options.distributed) {
         if (options.baseline || options.styled || options.stages || !options.scalingSteps.empty() || options.automatic)
@@ -435,8 +437,8 @@ Command addBenchCommand(CLI::App& app) {
         "bench", "Benchmark the bundled scenes (every temporal compositor on each dataset), or the automatic scene of "
                  "your own files; medians of several frames");
     command->add_option("files", options->files,
-                        std::string("Datasets whose automatic scenes to time, as `render FILE` draws them, instead of "
-                                    "the bundled matrix: ") + kDatasetKinds);
+                        std::string("Datasets whose automatic scenes to time, as `render FILE` draws them, or scene "
+                                    "files to time as written, instead of the bundled matrix: ") + kDatasetKinds);
     command->add_option("--sizes", options->sizeTexts,
                         "Image sizes to render: WIDTHxHEIGHT (e.g. 1920x1080), or one number for a square (default: 512 1024)");
     command->add_option("--frames", options->frames, "Timed frames per case (the median is reported)")
