@@ -1,5 +1,6 @@
 // tstyles._native.Series: a loaded series, shared with the renderers that show it, and the ways to
 // make one (arrays, files). The friendly argument handling lives in python/tstyles/series.py.
+#include <map>
 #include <memory>
 
 #include <pybind11/numpy.h>
@@ -10,8 +11,8 @@
 #include "array_series.h"
 #include "bindings.h"
 #include "tstyles/core/errors.h"
-#include "tstyles/data/read_options.h"
 #include "tstyles/data/isolated_reading.h"
+#include "tstyles/data/reader_option_table.h"
 #include "tstyles/data/series_opener.h"
 #include "tstyles/data/series_summary.h"
 
@@ -94,35 +95,38 @@ SharedSeries buildSeries(const py::dict& spec) {
     return std::make_shared<const Series>(buildArraySeries(input));
 }
 
-// The reading options as the command line spells them, so that a problem reads as it would there.
-SharedSeries openFiles(const std::vector<std::filesystem::path>& inputs, const py::dict& options) {
-    auto text = [&](const char* key) -> std::optional<std::string> {
-        if (!options.contains(key) || options[key].is_none()) return std::nullopt;
-        return options[key].cast<std::string>();
-    };
-    ReadOptions read;
-    read.variable = text("var").value_or("");
-    read.timeDimension = text("time_dim").value_or("");
-    read.indexAxes = options["index_axes"].cast<bool>();
-    if (const auto steps = text("steps")) read.steps = parseStepSelection(*steps, "--steps");
-    if (const auto range = text("range")) read.valueRange = parseValueRange(*range, "--range");
-    if (const auto resample = text("resample")) read.resampleTo = parseDims(*resample, "--resample");
-    if (const auto dims = text("dims")) read.rawDims = parseDims(*dims, "--dims");
-    if (options.contains("channel") && !options["channel"].is_none()) read.channel = options["channel"].cast<int>();
-    read.seriesChoice = text("series").value_or("");
-    read.pageAxes = text("axes").value_or("");
-    if (options.contains("level") && !options["level"].is_none()) read.level = options["level"].cast<int>();
-    if (const auto precision = text("precision")) read.precision = parseDensityPrecision(*precision, "--precision");
-    if (const auto memory = text("max_memory")) read.maxMemoryBytes = parseMemorySize(*memory, "--max-memory");
-    if (const auto fit = text("fit")) {
-        if (!read.maxMemoryBytes) throwInputError("", "--fit", "says what to do over --max-memory, which is not given");
-        read.fit = parseMemoryFit(*fit, "--fit");
+// The reading options, keyed by their Python keywords and given as the texts the command line takes
+// (series.py turns slices and tuples into them), through the reader options' table, so that a
+// problem reads as it would there.
+SharedSeries openFiles(const std::vector<std::filesystem::path>& inputs, const std::map<std::string, std::vector<std::string>>& options) {
+    ReaderOptionTexts texts;
+    for (const auto& [keyword, values] : options) {
+        const ReaderOptionLine* line = readerOptionNamed(keyword);
+        if (line == nullptr || line->python != keyword) throwInputError("", keyword, "is not a reader option");
+        texts[std::string(line->key)] = values;
     }
-    read.solutionFiles = options["solution"].cast<std::vector<std::filesystem::path>>();
-    read.block = options["block"].cast<int>();
-    read.gamma = options["gamma"].cast<double>();
     if (inputs.empty()) throwInputError("", "path", "names no file");
-    return std::make_shared<const Series>(openSeriesIsolated(inputs, read));
+    return std::make_shared<const Series>(openSeriesIsolated(inputs, readOptionsFrom(texts)));
+}
+
+// The table for series.py: each option's keyword, command-line spelling, kind, default and help.
+py::list readerOptionTable() {
+    static const char* const kKindNames[] = {"text",  "flag",        "whole-number", "number", "choice",
+                                             "steps", "value-range", "dims",         "memory", "files"};
+    static_assert(std::size(kKindNames) == std::size_t(ReaderOptionKind::Files) + 1, "a name per kind");
+    py::list lines;
+    for (const ReaderOptionLine& line : readerOptionLines()) {
+        py::dict entry;
+        entry["keyword"] = std::string(line.python);
+        entry["option"] = std::string(line.cli);
+        entry["kind"] = kKindNames[int(line.kind)];
+        entry["value"] = std::string(line.valueName);
+        entry["bounds"] = readerOptionBounds(line);
+        entry["default"] = std::string(line.defaultText);
+        entry["help"] = std::string(line.help);
+        lines.append(entry);
+    }
+    return lines;
 }
 
 py::dict stepInfo(const Series& series, std::size_t index) {
@@ -213,7 +217,9 @@ void bindSeries(py::module_& module) {
         .def("describe", [](const SeriesHandle& s) { return describeSeries(*s.series); });
 
     module.def("build_series", [](const py::dict& spec) { return SeriesHandle{buildSeries(spec)}; });
-    module.def("open_series", [](const std::vector<std::filesystem::path>& inputs, const py::dict& options) {
+    module.def("reader_options", &readerOptionTable);
+    module.def("open_series", [](const std::vector<std::filesystem::path>& inputs,
+                                 const std::map<std::string, std::vector<std::string>>& options) {
         return SeriesHandle{openFiles(inputs, options)};
     });
 }

@@ -12,7 +12,7 @@ temporal compositors and temporal style transfer functions by the same C++ rende
 
 from .rendering import Image, Renderer, read_image, render, upload_count
 from .scene import Scene, built_in_styles
-from .series import Series, from_xarray, open
+from .series import Series, from_xarray, open, reader_options
 
-__all__ = ["Image", "Renderer", "Scene", "Series", "built_in_styles", "from_xarray", "open", "read_image", "render",
+__all__ = ["Image", "Renderer", "Scene", "Series", "built_in_styles", "from_xarray", "open", "read_image", "reader_options", "render",
            "upload_count"]

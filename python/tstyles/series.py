@@ -102,29 +102,61 @@ def _steps_text(steps):
     raise ValueError("--steps: expected \"first:end:stride\", a slice or a range")
 
 
-def open(path, *, var=None, steps=None, time_dim=None, index_axes=False, value_range=None, resample=None,
-         dims=None, precision=None, max_memory=None, fit=None, solution=(), block=0, gamma=1.4, channel=None,
-         series=None, axes=None, level=None):
-    """Opens any dataset the executable reads (manifest, NetCDF, NIfTI, NRRD, Plot3D, Isabel files; TIFF,
-    OME-Zarr, DICOM, VTK XML).
+def _option_texts(line, value):
+    """The command-line texts of one reader option's value (None: not given)."""
+    kind, option = line["kind"], line["option"]
+    if value is None:
+        return None
+    if kind == "flag":
+        return ["true"] if bool(value) else None
+    if kind == "steps":
+        return [_steps_text(value)]
+    if kind == "value-range" and not isinstance(value, str):
+        low, high = value
+        return [f"{float(low)!r}:{float(high)!r}"]
+    if kind == "dims" and not isinstance(value, str):
+        return ["x".join(str(int(n)) for n in value)]
+    if kind == "files":
+        paths = [value] if isinstance(value, (str, os.PathLike)) else list(value)
+        return [os.fspath(p) for p in paths] or None
+    if kind == "whole-number" and isinstance(value, bool):
+        raise ValueError(f"{option}: must be {line['bounds']}; got {value!r}")
+    return [str(value)]
 
-    The options are those of `tstyles render`/`info` (docs/readers.md): var=--var, steps=--steps
-    ("0:48:5" or slice(0, 48, 5)), value_range=--range (low, high), resample=--resample (nx, ny, nz),
-    and so on; problems raise ValueError with the message the command line prints.
+
+def _reader_options():
+    return {line["keyword"]: line for line in _native.reader_options()}
+
+
+def open(path, **options):
+    """Opens any dataset the executable reads: a manifest, or a file, folder or store of any format of
+    docs/readers.md.
+
+    The keyword options are the reader options of `tstyles render`/`info`, from the same table
+    (docs/readers.md, and tstyles.reader_options()): var=--var, steps=--steps ("0:48:5", slice(0, 48, 5)
+    or range(...)), value_range=--range ((low, high) or "low:high"), resample=--resample ((nx, ny, nz)),
+    dims=, channel=, level=, series=, axes=, precision=, max_memory=, fit=, solution= (paths), block=,
+    gamma=, time_dim=, index_axes=True; problems raise ValueError with the message the command line
+    prints, an unknown keyword TypeError.
     """
+    table = _reader_options()
+    unknown = sorted(set(options) - set(table))
+    if unknown:
+        raise TypeError(f"open() got an unexpected keyword argument {unknown[0]!r}; "
+                        f"the reader options are: {', '.join(table)}")
     paths = [os.fspath(p) for p in path] if isinstance(path, (list, tuple)) else [os.fspath(path)]
-    options = {
-        "var": var, "time_dim": time_dim, "index_axes": bool(index_axes), "steps": _steps_text(steps),
-        "range": None if value_range is None else f"{float(value_range[0])!r}:{float(value_range[1])!r}",
-        "resample": None if resample is None else "x".join(str(int(n)) for n in resample),
-        "dims": None if dims is None else "x".join(str(int(n)) for n in dims),
-        "precision": None if precision is None else str(precision),
-        "max_memory": None if max_memory is None else str(max_memory), "fit": fit,
-        "solution": [os.fspath(p) for p in solution], "block": int(block), "gamma": float(gamma),
-        "channel": None if channel is None else int(channel), "series": None if series is None else str(series),
-        "axes": axes, "level": None if level is None else int(level),
-    }
-    return Series._wrap(_native.open_series(paths, options))
+    texts = {}
+    for keyword, value in options.items():
+        given = _option_texts(table[keyword], value)
+        if given is not None:
+            texts[keyword] = given
+    return Series._wrap(_native.open_series(paths, texts))
+
+
+def reader_options():
+    """The reader options open() takes, one dict each: keyword, option (the command line's spelling),
+    kind, value, bounds, default and help."""
+    return [dict(line) for line in _native.reader_options()]
 
 
 def from_xarray(array, *, time_dim=None, value_range=None, precision=16):

@@ -11,6 +11,7 @@
 
 #include "tstyles/core/bundled_data.h"
 #include "tstyles/data/read_options.h"
+#include "tstyles/data/reader_option_table.h"
 #include "tstyles/data/series.h"
 #include "tstyles/gl/headless_context.h"
 
@@ -37,32 +38,13 @@ void addImageSizeOptions(CLI::App& command, const std::string& what, std::option
                          std::optional<int>& height);
 GlBackend parseBackend(const std::string& name);
 
-// What a dataset argument may be, for the commands' help (docs/readers.md has the formats).
-inline constexpr const char* kDatasetKinds =
-    "a manifest (series.json) or its folder; a NetCDF, NIfTI, NRRD, Plot3D grid, TIFF, DICOM or VTK XML (.pvd, "
-    ".series, .vti, .vts) file; an OME-Zarr store, a DICOM folder or a folder of TIFFs; or several files of one "
-    "series (Isabel hours, 3D volumes in time order)";
-
-// How a dataset is read (docs/readers.md): the spellings as typed, parsed when the command runs so
-// that a bad one is an InputError naming the option. Shared by info, render, view and convert.
+// How a dataset is read (docs/readers.md): the reader options as typed, per key of the reader
+// options' table (reader_option_table.h), which registers them on the command line; toReadOptions
+// checks and converts them when the command runs, so that a bad one is an InputError naming the
+// option. Shared by info, render, view, scene, animate, convert and bench.
 struct DatasetOptions {
-    std::string variable;                  // --var
-    std::string timeDimension;             // --time-dim
-    bool indexAxes = false;                // --index-axes
-    std::optional<std::string> steps;      // --steps FIRST:END:STRIDE
-    std::optional<std::string> range;      // --range LO:HI
-    std::optional<std::string> resample;   // --resample NXxNYxNZ
-    std::optional<std::string> rawDims;    // --dims NXxNYxNZ
-    std::optional<int> channel;            // --channel (TIFF, OME-Zarr)
-    std::string series;                    // --series (DICOM)
-    std::string axes;                      // --axes (plain TIFF)
-    std::optional<int> level;              // --level (OME-Zarr)
-    std::optional<std::string> precision;  // --precision 8|16|32
-    std::optional<std::string> maxMemory;  // --max-memory SIZE
-    std::optional<std::string> fit;        // --fit refuse|resolution|steps
-    std::vector<std::filesystem::path> solutions;  // --solution (Plot3D)
-    int block = 0;                         // --block (Plot3D)
-    double gamma = 1.4;                    // --gamma (Plot3D)
+    ReaderOptionTexts texts;
+    bool given(const std::string& key) const { return texts.count(key) != 0; }
 };
 void addDatasetOptions(CLI::App& command, DatasetOptions& options);
 ReadOptions toReadOptions(const DatasetOptions& options);

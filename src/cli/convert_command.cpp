@@ -10,6 +10,7 @@
 #include "tstyles/core/user_paths.h"
 #include "tstyles/data/series_export.h"
 #include "tstyles/data/isolated_reading.h"
+#include "tstyles/data/format_listing.h"
 
 namespace tstyles::cli {
 namespace {
@@ -41,11 +42,10 @@ int runConvert(const ConvertOptions& options) {
 Command addConvertCommand(CLI::App& app) {
     auto options = std::make_shared<ConvertOptions>();
     CLI::App* command = app.add_subcommand(
-        "convert", "Read a scientist's files (NetCDF, NIfTI, NRRD, Plot3D, Isabel, TIFF, OME-Zarr, DICOM, VTK XML) and "
-                   "keep the series as a tstyles manifest folder");
+        "convert", "Read a scientist's files (" + seriesFormatNames() + ") and keep the series as a tstyles manifest folder");
     command
         ->add_option("input", options->inputs,
-                     std::string("The dataset: ") + kDatasetKinds)
+                     std::string("The dataset: ") + datasetKindsText())
         ->required();
     command->add_option("-o,--output", options->output, "Dataset folder to write (series.json and raw files)")
         ->required();

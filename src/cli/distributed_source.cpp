@@ -19,11 +19,10 @@ namespace {
 std::string whyNotInBlocks(const std::vector<std::filesystem::path>& dataset, const DatasetOptions& options) {
     if (dataset.size() != 1 || !isManifestInput(dataset.front()))
         return "only a tstyles manifest is read in blocks (`tstyles convert` makes one)";
-    const bool readingOptions = !options.variable.empty() || !options.timeDimension.empty() || options.indexAxes ||
-                                options.steps || options.range || options.resample || options.rawDims || options.fit ||
-                                options.channel || !options.series.empty() || !options.axes.empty() || options.level ||
-                                !options.solutions.empty() || options.block != 0;
-    if (readingOptions) return "a reader's options were given";
+    // Only what a manifest takes too (the precision, the memory limit) keeps the blocks.
+    for (const auto& [key, texts] : options.texts)
+        if (const ReaderOptionLine* line = readerOptionNamed(key); line && !line->forManifest)
+            return "a reader's options were given";
     return "";
 }
 

@@ -28,8 +28,7 @@ std::optional<std::uint64_t> parseGpuMemoryOption(const GpuMemoryOption& option)
 
 GpuResidency uploadWithinGpuMemory(Renderer& renderer, const Series& series, const GpuMemoryOption& option,
                                    const DatasetOptions& dataset, const std::optional<WholeSeries>& whole) {
-    const std::optional<std::uint64_t> maxHostMemory =
-        dataset.maxMemory ? std::optional(parseMemorySize(*dataset.maxMemory, "--max-memory")) : std::nullopt;
+    const std::optional<std::uint64_t> maxHostMemory = toReadOptions(dataset).maxMemoryBytes;
     const GpuMemoryLimits limits = gpuMemoryLimitsFor(series, parseGpuMemoryOption(option), maxHostMemory);
     const GpuResidency residency = renderer.setSeries(series, limits, whole);
     if (option.maxGpuMemory || residency.changed()) std::cerr << "tstyles: " << residencyText(series, limits, residency) << "\n";

@@ -8,6 +8,7 @@
 #include "gpu_memory_option.h"
 #include "tstyles/scene/automatic_scene.h"
 #include "tstyles/data/series_summary.h"
+#include "tstyles/data/format_listing.h"
 
 namespace tstyles::cli {
 
@@ -18,7 +19,7 @@ Command addInfoCommand(CLI::App& app) {
     CLI::App* command = app.add_subcommand("info", "Describe a dataset: time-steps, grids, placements, overlap, memory");
     command
         ->add_option("dataset", *inputs,
-                     std::string("Dataset: ") + kDatasetKinds)
+                     std::string("Dataset: ") + datasetKindsText())
         ->required();
     addDatasetOptions(*command, *dataset);
     addGpuMemoryOption(*command, *gpuMemory);

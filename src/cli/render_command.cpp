@@ -20,6 +20,7 @@
 #include "tstyles/image/image_io.h"
 #include "tstyles/render/renderer.h"
 #include "tstyles/scene/scene_file.h"
+#include "tstyles/data/format_listing.h"
 
 namespace tstyles::cli {
 namespace {
@@ -191,7 +192,7 @@ Command addRenderCommand(CLI::App& app) {
     command
         ->add_option("input", options->inputs,
                      std::string("A scene file (JSON); or a dataset, drawn with the automatic scene "
-                                 "(docs/automatic-scene.md): ") + kDatasetKinds)
+                                 "(docs/automatic-scene.md): ") + datasetKindsText())
         ->required();
     command->add_option("-o,--output", options->output, "Image file to write; the format follows the extension")
         ->required();
@@ -202,7 +203,7 @@ Command addRenderCommand(CLI::App& app) {
     addGlOptions(*command, options->gl);
     command->add_option("--dataset", options->datasetFiles,
                         std::string("Render this dataset instead of the scene's (repeated or comma-separated): ") +
-                            kDatasetKinds)
+                            datasetKindsText())
         ->delimiter(',');
     addDatasetOptions(*command, options->dataset);
     addGpuMemoryOption(*command, options->gpuMemory);

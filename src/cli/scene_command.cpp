@@ -11,6 +11,7 @@
 #include "tstyles/core/user_paths.h"
 #include "tstyles/scene/automatic_scene.h"
 #include "tstyles/scene/scene_file.h"
+#include "tstyles/data/format_listing.h"
 
 namespace tstyles::cli {
 namespace {
@@ -48,7 +49,7 @@ Command addSceneCommand(CLI::App& app) {
     CLI::App* command = app.add_subcommand(
         "scene", "Write the automatic scene of a dataset to a scene file, to edit and render (docs/automatic-scene.md)");
     command->add_option("dataset", options->inputs,
-                        std::string("The dataset: ") + kDatasetKinds)
+                        std::string("The dataset: ") + datasetKindsText())
         ->required();
     command->add_option("-o,--output", options->output, "Scene file to write (.json)")->required();
     addSceneOverrides(*command, options->overrides);

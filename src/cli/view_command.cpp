@@ -8,6 +8,7 @@
 #include "gpu_memory_option.h"
 #include "scene_source.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/data/format_listing.h"
 #include "viewer/viewer.h"
 
 namespace tstyles::cli {
@@ -56,7 +57,7 @@ Command addViewCommand(CLI::App& app) {
     CLI::App* command = app.add_subcommand(
         "view", "Open the interactive viewer on a scene or dataset (default: the bundled Figure 1 scene)");
     command->add_option("input", options->inputs,
-                        std::string("Scene file (JSON); or a dataset: ") + kDatasetKinds);
+                        std::string("Scene file (JSON); or a dataset: ") + datasetKindsText());
     command->add_option("--script", options->script,
                         "Play input events from this file (format: docs/viewer.md), e.g. for tests")
         ->check(CLI::ExistingFile);

@@ -27,8 +27,14 @@ std::vector<std::string> formatMimeTypes() {
 std::vector<FormatListing> seriesFormatListings() {
     std::vector<FormatListing> listings;
     for (const SeriesFormat& format : seriesFormats())
-        listings.push_back({format.name, format.extensions, format.mimeTypes});
+        listings.push_back({format.name, format.extensions, format.mimeTypes, format.spelling});
     return listings;
+}
+
+std::string datasetKindsText() {
+    std::string text = "a manifest (series.json) or its folder; ";
+    for (const FormatListing& format : seriesFormatListings()) text += format.name + ": " + format.spelling + "; ";
+    return text + "or several files of one series (Isabel hours, 3D volumes in time order)";
 }
 
 std::string seriesFormatNames() {

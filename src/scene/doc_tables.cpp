@@ -2,6 +2,7 @@
 #include "tstyles/scene/doc_tables.h"
 
 #include "tstyles/core/errors.h"
+#include "tstyles/data/reader_option_table.h"
 #include "tstyles/scene/ray_modes.h"
 #include "tstyles/scene/scene_keys.h"
 #include "tstyles/scene/temporal_compositors.h"
@@ -13,6 +14,7 @@ constexpr GeneratedDocTable kDocTables[] = {
     {"scene-format.md", kSceneKeyTableBegin, kSceneKeyTableEnd, sceneKeyTable},
     {"compositors.md", kCompositorTableBegin, kCompositorTableEnd, compositorDocTable},
     {"ray-modes.md", kRayModeTableBegin, kRayModeTableEnd, rayModeDocTable},
+    {"readers.md", kReaderOptionTableBegin, kReaderOptionTableEnd, readerOptionsMarkdown},
 };
 
 // Where the table's text starts (after the begin marker's line) and ends (at the end marker).

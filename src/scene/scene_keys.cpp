@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "tstyles/data/format_listing.h"
 #include "tstyles/scene/temporal_compositors.h"
 
 namespace tstyles {
@@ -125,9 +126,9 @@ const std::vector<SceneKey>& keyTable() {
     static const std::vector<SceneKey> keys = [] {
         std::vector<SceneKey> table = {
             {"dataset", "string", "— (required)",
-             "a path to a series manifest, or a file the readers open (NetCDF, NIfTI, NRRD, Plot3D grid, "
-             "Isabel; docs/readers.md, read with `render`'s `--var`, `--steps`, ... options); relative paths "
-             "start at the scene file's folder",
+             "a path to a series manifest, or a file the readers open (" + seriesFormatNames() +
+                 "; docs/readers.md, read with `render`'s `--var`, `--steps`, ... options); relative paths start at "
+                 "the scene file's folder",
              std::nullopt},
             {"orientation", "string or 3 strings", "`\"data\"`",
              "`\"data\"` (axes as stored), `\"auto\"` (from what the file says its axes mean: "

@@ -143,7 +143,7 @@ case_precision_in_info() {
     expect_stdout_contains "(32-bit density + validity per voxel)"
     run_tstyles -- info "$S/volume.nrrd" --precision 12
     expect_exit 2
-    expect_option_error "--precision" "expected 8, 16 or 32"
+    expect_option_error "--precision" "must be 8, 16 or 32; got \"12\""
 }
 
 case_resample() {
@@ -346,6 +346,20 @@ case_manifest_with_reader_option() {
     run_tstyles -- info "$DATASET" --steps 0:2
     expect_exit 2
     expect_error_line "$DATASET" "--steps" "not to a tstyles manifest"
+}
+
+# The reader options' table checks each value and names its bounds in words (issue 53: CLI11's own
+# message printed 1.8e308 as the upper bound of --level).
+case_option_values_outside_their_bounds() {
+    run_tstyles -- info "$DATASET" --level -1
+    expect_exit 2
+    expect_stderr_contains '--level: must be a whole number 0 or more; got "-1"'
+    run_tstyles -- info "$DATASET" --precision 12
+    expect_exit 2
+    expect_stderr_contains '--precision: must be 8, 16 or 32; got "12"'
+    run_tstyles -- info "$DATASET" --level 1
+    expect_exit 2
+    expect_error_line "$DATASET" "--level" "applies to the files a reader reads (OME-Zarr), not to a tstyles manifest"
 }
 
 case_solution_on_netcdf() {

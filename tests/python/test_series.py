@@ -138,13 +138,28 @@ def cli_message(executable, *arguments):
 def test_open_errors_are_the_command_line_messages(realistic_datasets, tstyles_executable):
     ocean = realistic_datasets / "ocean-anomalies.nc"
     for options, arguments in [({"var": "nope"}, ["--var", "nope"]), ({"steps": slice(5, None)}, ["--steps", "5:"]),
-                               ({"value_range": (2.0, 1.0)}, ["--range", "2.0:1.0"])]:
+                               ({"value_range": (2.0, 1.0)}, ["--range", "2.0:1.0"]),
+                               ({"level": -1}, ["--level", "-1"]), ({"precision": 12}, ["--precision", "12"])]:
         with pytest.raises(ValueError) as error:
             tstyles.open(ocean, **options)
         assert str(error.value) == cli_message(tstyles_executable, "info", ocean, *arguments)
     with pytest.raises(ValueError) as error:
         tstyles.open(realistic_datasets / "missing.nc")
     assert str(error.value) == cli_message(tstyles_executable, "info", realistic_datasets / "missing.nc")
+
+
+def test_open_takes_the_reader_options_of_the_table(realistic_datasets):
+    """open()'s keywords are the reader options' table's (tstyles.reader_options()); another is a TypeError."""
+    table = tstyles.reader_options()
+    keywords = [line["keyword"] for line in table]
+    assert {"var", "steps", "value_range", "level", "channel", "series", "max_memory", "gamma"} <= set(keywords)
+    level = next(line for line in table if line["keyword"] == "level")
+    assert (level["option"], level["kind"], level["bounds"]) == ("--level", "whole-number", "a whole number 0 or more")
+    with pytest.raises(TypeError) as error:
+        tstyles.open(realistic_datasets / "ocean-anomalies.nc", levels=1)
+    assert "unexpected keyword argument 'levels'" in str(error.value) and "level" in str(error.value)
+    first_two = tstyles.open(realistic_datasets / "ocean-anomalies.nc", steps=range(0, 2), index_axes=False)
+    assert len(first_two) == 2
 
 
 def assert_same_series(actual, expected):

@@ -25,6 +25,7 @@ struct FormatListing {
     std::string name;                     // "NetCDF", "VTK XML"
     std::vector<std::string> extensions;  // lower case, with the dot
     std::vector<FormatMimeType> mimeTypes;
+    std::string spelling;  // how its files look: ".nii .nii.gz", "a .zarr store folder, or its zarr.json"
 };
 
 // Every format of the table, in its order.
@@ -32,6 +33,10 @@ std::vector<FormatListing> seriesFormatListings();
 
 // "NetCDF, NIfTI, ..., TIFF and Plot3D": every format's name, in the table's order.
 std::string seriesFormatNames();
+
+// What a command's dataset may be, for its help: a manifest, or each format's files as they look,
+// or several files of one series.
+std::string datasetKindsText();
 
 // The desktop entry (share/applications/tstyles.desktop): every format's MIME types and name.
 std::string desktopEntryText();

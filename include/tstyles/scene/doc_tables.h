@@ -1,6 +1,6 @@
 // The tables of docs/ that are made from the code's own tables: the scene keys (scene_keys.h) in
 // scene-format.md, the compositors (temporal_compositors.h) in compositors.md and the ray modes
-// (ray_modes.h) in ray-modes.md. Each stands
+// (ray_modes.h) in ray-modes.md, the reader options (reader_option_table.h) in readers.md. Each stands
 // between its two marker lines; build/tools/write_doc_tables docs writes them, and
 // DocTables.TheDocsHoldTheGeneratedTables fails while one differs.
 #pragma once

@@ -8,8 +8,8 @@ namespace tstyles {
 
 enum class InputKind { Scene, Dataset };
 
-// A folder, a JSON file that is a series manifest, or a file that is not JSON (NetCDF, NIfTI,
-// NRRD, Plot3D, Isabel: docs/readers.md) is a dataset; a JSON file naming a dataset is a scene. A
+// A folder, a JSON file that is a series manifest, or a file that is not JSON (a reader's:
+// docs/readers.md) is a dataset; a JSON file naming a dataset is a scene. A
 // file that cannot be opened counts as a scene, so that the scene reader says what is wrong.
 InputKind classifyInput(const std::filesystem::path& path);
 

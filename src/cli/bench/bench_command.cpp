@@ -26,6 +26,7 @@
 #include "tstyles/gl/gl_api.h"
 #include "tstyles/render/renderer.h"
 #include "tstyles/scene/scene_file.h"
+#include "tstyles/data/format_listing.h"
 
 namespace tstyles::cli {
 namespace {
@@ -438,7 +439,7 @@ Command addBenchCommand(CLI::App& app) {
                  "your own files; medians of several frames");
     command->add_option("files", options->files,
                         std::string("Datasets whose automatic scenes to time, as `render FILE` draws them, or scene "
-                                    "files to time as written, instead of the bundled matrix: ") + kDatasetKinds);
+                                    "files to time as written, instead of the bundled matrix: ") + datasetKindsText());
     command->add_option("--sizes", options->sizeTexts,
                         "Image sizes to render: WIDTHxHEIGHT (e.g. 1920x1080), or one number for a square (default: 512 1024)");
     command->add_option("--frames", options->frames, "Timed frames per case (the median is reported)")

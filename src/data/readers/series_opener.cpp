@@ -10,6 +10,7 @@
 #include "tstyles/core/input_limits.h"
 #include "tstyles/core/user_paths.h"
 #include "tstyles/data/manifest.h"
+#include "tstyles/data/reader_option_table.h"
 
 namespace tstyles {
 namespace {
@@ -72,44 +73,27 @@ const SeriesFormat& formatOf(const std::filesystem::path& input, const ReadOptio
     throwInputError(input, "", "unknown format: its name and first bytes match none of " + known);
 }
 
-// A manifest is already prepared: the reading options have nothing to choose in it.
+// A manifest is already prepared: the reading options have nothing to choose in it but the
+// precision and the memory limit (the table's `forManifest`).
 void rejectReadingOptions(const std::filesystem::path& manifest, const ReadOptions& options) {
-    const auto reject = [&](bool given, const char* option) {
-        if (given)
-            throwInputError(manifest, option,
-                            "applies to NetCDF, NIfTI, NRRD, Plot3D and Isabel files, not to a tstyles manifest");
-    };
-    reject(!options.variable.empty(), "--var");
-    reject(!options.timeDimension.empty(), "--time-dim");
-    reject(options.indexAxes, "--index-axes");
-    reject(options.steps.has_value(), "--steps");
-    reject(options.valueRange.has_value(), "--range");
-    reject(options.resampleTo.has_value(), "--resample");
-    reject(options.rawDims.has_value(), "--dims");
-    reject(options.channel.has_value(), "--channel");
-    reject(!options.seriesChoice.empty(), "--series");
-    reject(!options.pageAxes.empty(), "--axes");
-    reject(options.level.has_value(), "--level");
-    reject(options.fit != MemoryFit::Refuse, "--fit");
-    reject(!options.solutionFiles.empty(), "--solution");
-    reject(options.block != 0, "--block");
-    reject(options.gamma != ReadOptions{}.gamma, "--gamma");
+    for (const ReaderOptionLine* line : readerOptionsGiven(options))
+        if (!line->forManifest) {
+            std::string takers;
+            if (line->formatOnly)
+                for (const SeriesFormat& format : seriesFormats())
+                    if (std::find(format.options.begin(), format.options.end(), line->cli) != format.options.end())
+                        takers += (takers.empty() ? "" : ", ") + format.name;
+            throwInputError(manifest, std::string(line->cli),
+                            "applies to the files a reader reads" + (takers.empty() ? "" : " (" + takers + ")") +
+                                ", not to a tstyles manifest");
+        }
 }
 
 // The options that only some formats take, as the command line spells them, where given.
 std::vector<std::string> formatOnlyOptionsGiven(const ReadOptions& options) {
     std::vector<std::string> given;
-    if (!options.variable.empty()) given.push_back("--var");
-    if (!options.timeDimension.empty()) given.push_back("--time-dim");
-    if (options.indexAxes) given.push_back("--index-axes");
-    if (options.rawDims) given.push_back("--dims");
-    if (options.channel) given.push_back("--channel");
-    if (!options.seriesChoice.empty()) given.push_back("--series");
-    if (!options.pageAxes.empty()) given.push_back("--axes");
-    if (options.level) given.push_back("--level");
-    if (!options.solutionFiles.empty()) given.push_back("--solution");
-    if (options.block != 0) given.push_back("--block");
-    if (options.gamma != ReadOptions{}.gamma) given.push_back("--gamma");
+    for (const ReaderOptionLine* line : readerOptionsGiven(options))
+        if (line->formatOnly) given.emplace_back(line->cli);
     return given;
 }
 
