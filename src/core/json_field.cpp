@@ -142,6 +142,25 @@ std::vector<double> JsonField::numbers(std::size_t count, const Interval& allowe
     return result;
 }
 
+std::vector<double> JsonField::finiteNumbers() const {
+    std::vector<double> result;
+    for (std::size_t i = 0; i < arraySize(); ++i) result.push_back(element(i).finiteNumber());
+    return result;
+}
+
+std::vector<std::uint64_t> JsonField::wholeNumbers(std::uint64_t least) const {
+    constexpr std::uint64_t kLargest = std::uint64_t(1) << 53;
+    std::vector<std::uint64_t> result;
+    for (std::size_t i = 0; i < arraySize(); ++i) {
+        const JsonField item = element(i);
+        const double number = item.finiteNumber();
+        if (number != std::floor(number) || number < double(least) || number > double(kLargest))
+            item.fail("expected a whole number from " + std::to_string(least) + " to 2^53, got " + formatNumber(number));
+        result.push_back(std::uint64_t(number));
+    }
+    return result;
+}
+
 glm::dvec3 JsonField::vec3(const Interval& allowed) const {
     const std::vector<double> xyz = numbers(3, allowed);
     return {xyz[0], xyz[1], xyz[2]};

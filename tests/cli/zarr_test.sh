@@ -177,6 +177,18 @@ for level in m["datasets"]:
     render_refused "multiscales[0].axes" "(t, c, y, x) is an axis order that cannot be a volume over time" "$Z/.zattrs"
 }
 
+# Zarr and OME metadata are read through JsonField, in the wording of every JSON the program reads.
+case_metadata_of_the_wrong_type() {
+    store v2_gzip
+    edit_json "$Z/0/.zarray" 'd["shape"] = "5x4"'
+    render_refused "shape" "expected an array, got a string" "$Z/0/.zarray"
+    store v3_blosc
+    edit_json "$Z/0/zarr.json" 'd["chunk_grid"]["configuration"]["chunk_shape"][1] = 0'
+    render_refused "chunk_grid.configuration.chunk_shape[1]" "expected a whole number from 1 to 2^53, got 0" "$Z/0/zarr.json"
+    edit_json "$Z/0/zarr.json" 'del d["node_type"]'
+    render_refused "node_type" "missing; this key is required" "$Z/0/zarr.json"
+}
+
 case_bad_json() {
     store v2_gzip
     head -c 50 "$Z/.zattrs" >"$Z/cut" && mv "$Z/cut" "$Z/.zattrs"

@@ -1,10 +1,12 @@
 // One value inside a parsed JSON document together with its field path (`time_steps[3].grid.dims[1]`,
 // `stf.opacity[2].at`) and its file, so that every typed read can fail with a message naming the
 // file, the field and the problem. The one typed reader of the scene files, the manifests, the grid
-// files, the check suites and the comparison thresholds; their text is parsed by json_text.h.
+// files, the check suites, the comparison thresholds, the Zarr and OME-Zarr metadata and ParaView's
+// .series files; their text is parsed by json_text.h.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <initializer_list>
 #include <limits>
@@ -69,6 +71,10 @@ public:
     double numberIn(const Interval& allowed) const;
     int integer() const;
     int integerIn(int low, int high) const;
+    // An array of any length of finite numbers.
+    std::vector<double> finiteNumbers() const;
+    // An array of any length of whole numbers from `least` to 2^53 (the largest a double holds exactly).
+    std::vector<std::uint64_t> wholeNumbers(std::uint64_t least) const;
     // A fixed-length array of numbers, each checked against `allowed`.
     std::vector<double> numbers(std::size_t count, const Interval& allowed) const;
     glm::dvec3 vec3(const Interval& allowed = anyFinite) const;

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "tstyles/core/errors.h"
+#include "tstyles/core/json_field.h"
 #include "zarr_json.h"
 
 namespace tstyles {
@@ -42,10 +43,10 @@ std::vector<OmeAxis> readAxes(const nlohmann::json& multiscale, const std::files
             axis.name = list[index].get<std::string>();
             axis.type = axisTypeNamed("", axis.name, file, field);
         } else {
-            axis.name = requireString(requireMember(list[index], "name", file, field), file, field + ".name");
-            const std::string type = list[index].contains("type") ? requireString(list[index]["type"], file, field + ".type") : "";
+            axis.name = JsonField(file, list[index], field).member("name").string();
+            const std::string type = list[index].contains("type") ? JsonField(file, list[index]["type"], field + ".type").string() : "";
             axis.type = axisTypeNamed(type, axis.name, file, field);
-            if (list[index].contains("unit")) axis.unit = requireString(list[index]["unit"], file, field + ".unit");
+            if (list[index].contains("unit")) axis.unit = JsonField(file, list[index]["unit"], field + ".unit").string();
         }
         if (!names.insert(axis.name).second) throwInputError(file, field, "repeats the axis name \"" + axis.name + "\"");
         axes.push_back(axis);
@@ -60,13 +61,13 @@ void applyTransforms(const nlohmann::json& list, std::size_t axisCount, const st
     std::vector<double> ownScale(axisCount, 1.0), ownTranslation(axisCount, 0.0);
     for (std::size_t index = 0; index < list.size(); ++index) {
         const std::string at = field + "[" + std::to_string(index) + "]";
-        const std::string type = requireString(requireMember(list[index], "type", file, at), file, at + ".type");
+        const std::string type = JsonField(file, list[index], at).member("type").string();
         if (type == "identity") continue;
         if (type != "scale" && type != "translation")
             throwInputError(file, at + ".type", "\"" + type + "\" is not a transformation this reader knows (scale, translation)");
         if (list[index].contains("path"))
             throwInputError(file, at + ".path", "transformations stored in arrays are not supported");
-        auto values = requireNumbers(requireMember(list[index], type, file, at), file, at + "." + type);
+        auto values = JsonField(file, list[index], at).member(type).finiteNumbers();
         if (values.size() != axisCount)
             throwInputError(file, at + "." + type, "has " + std::to_string(values.size()) + " values for " +
                                                        std::to_string(axisCount) + " axes");
@@ -80,14 +81,14 @@ void applyTransforms(const nlohmann::json& list, std::size_t axisCount, const st
 }
 
 std::vector<OmeLevel> readLevels(const nlohmann::json& multiscale, std::size_t axisCount, const std::filesystem::path& file) {
-    const auto& datasets = requireMember(multiscale, "datasets", file, "multiscales[0]");
+    const auto& datasets = JsonField(file, multiscale, "multiscales[0]").member("datasets").value();
     if (!datasets.is_array() || datasets.empty())
         throwInputError(file, "multiscales[0].datasets", "must list at least one resolution level");
     std::vector<OmeLevel> levels;
     for (std::size_t index = 0; index < datasets.size(); ++index) {
         const std::string field = "multiscales[0].datasets[" + std::to_string(index) + "]";
         OmeLevel level;
-        level.path = requireString(requireMember(datasets[index], "path", file, field), file, field + ".path");
+        level.path = JsonField(file, datasets[index], field).member("path").string();
         const std::filesystem::path relative(level.path);
         if (level.path.empty() || relative.is_absolute() || level.path.find("..") != std::string::npos)
             throwInputError(file, field + ".path", "\"" + level.path + "\" is not a path inside the store");
@@ -147,14 +148,14 @@ OmeMultiscales readOmeMultiscales(const std::filesystem::path& store) {
     const nlohmann::json json = readZarrJson(result.attributesFile);
     const std::filesystem::path& file = result.attributesFile;
     try {
-        const nlohmann::json& attributes = result.zarrFormat == 3 ? requireMember(json, "attributes", file, "") : json;
+        const nlohmann::json& attributes = result.zarrFormat == 3 ? JsonField(file, json, "").member("attributes").value() : json;
         const nlohmann::json& ome = omeAttributes(attributes, file, result.zarrFormat);
-        const auto& list = requireMember(ome, "multiscales", file, result.zarrFormat == 3 ? "attributes.ome" : "");
+        const auto& list = JsonField(file, ome, result.zarrFormat == 3 ? "attributes.ome" : "").member("multiscales").value();
         if (!list.is_array() || list.empty()) throwInputError(file, "multiscales", "must list at least one image");
         const auto& multiscale = list[0];
-        if (ome.contains("version")) result.version = requireString(ome["version"], file, "version");
+        if (ome.contains("version")) result.version = JsonField(file, ome["version"], "version").string();
         if (result.version.empty() && multiscale.contains("version"))
-            result.version = requireString(multiscale["version"], file, "multiscales[0].version");
+            result.version = JsonField(file, multiscale["version"], "multiscales[0].version").string();
         if (multiscale.contains("name") && multiscale["name"].is_string()) result.name = multiscale["name"].get<std::string>();
         result.axes = readAxes(multiscale, file);
         result.levels = readLevels(multiscale, result.axes.size(), file);

@@ -14,6 +14,7 @@
 
 #include "series_assembly.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/core/json_field.h"
 #include "tstyles/core/json_text.h"
 #include "tstyles/core/input_limits.h"
 
@@ -101,28 +102,17 @@ VtkCollection readPvdCollection(const std::filesystem::path& pvd) {
 VtkCollection readFileSeries(const std::filesystem::path& series) {
     const std::string text = readSmallText(series, "ParaView file series (.series)");
     const nlohmann::json json = parseJsonText(text, series, JsonComments::Refused);
-    if (!json.is_object()) throwInputError(series, "", "is not a JSON object");
-    for (const auto& [key, value] : json.items())
-        if (key != "file-series-version" && key != "files")
-            throwInputError(series, key, "unknown key (a file series has \"file-series-version\" and \"files\")");
-    if (!json.contains("file-series-version") || !json["file-series-version"].is_string())
-        throwInputError(series, "file-series-version", "missing, or not a string such as \"1.0\"");
-    if (!json.contains("files") || !json["files"].is_array())
-        throwInputError(series, "files", "missing, or not a list of {\"name\", \"time\"}");
+    const JsonField root(series, json, "");
+    root.allowOnlyKeys({"file-series-version", "files"});
+    root.member("file-series-version").string();
+    const JsonField files = root.member("files");
     VtkCollection collection;
-    const auto& files = json["files"];
-    for (std::size_t index = 0; index < files.size(); ++index) {
-        const std::string where = "files[" + std::to_string(index) + "]";
-        const auto& entry = files[index];
-        if (!entry.is_object()) throwInputError(series, where, "is not an object {\"name\", \"time\"}");
-        for (const auto& [key, value] : entry.items())
-            if (key != "name" && key != "time") throwInputError(series, where + "." + key, "unknown key");
-        if (!entry.contains("name") || !entry["name"].is_string() || entry["name"].get<std::string>().empty())
-            throwInputError(series, where + ".name", "missing, or not a file name");
-        if (!entry.contains("time") || !entry["time"].is_number() || !std::isfinite(entry["time"].get<double>()))
-            throwInputError(series, where + ".time", "missing, or not a finite number");
-        collection.entries.push_back(
-            {entry["time"].get<double>(), series.parent_path() / entry["name"].get<std::string>(), where});
+    for (std::size_t index = 0; index < files.arraySize(); ++index) {
+        const JsonField entry = files.element(index);
+        entry.allowOnlyKeys({"name", "time"});
+        const std::string name = entry.member("name").pathName();
+        if (name.empty()) entry.failAt("name", "is empty, not a file name");
+        collection.entries.push_back({entry.member("time").finiteNumber(), series.parent_path() / name, entry.path()});
     }
     orderByTime(series, collection);
     return collection;

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "tstyles/core/errors.h"
+#include "tstyles/core/json_field.h"
 #include "tstyles/core/input_limits.h"
 #include "zarr_codec_pipeline.h"
 #include "zarr_json.h"
@@ -88,7 +89,7 @@ void requireKnownKeys(const nlohmann::json& json, const std::set<std::string>& k
 
 void readV2Compressor(const nlohmann::json& value, const std::filesystem::path& file, ZarrArray& array) {
     if (value.is_null()) return;
-    const std::string id = requireString(requireMember(value, "id", file, "compressor"), file, "compressor.id");
+    const std::string id = JsonField(file, value, "compressor").member("id").string();
     static const std::pair<const char*, ZarrByteCodec> kKnown[] = {{"blosc", ZarrByteCodec::Blosc},
                                                                    {"zlib", ZarrByteCodec::Zlib},
                                                                    {"gzip", ZarrByteCodec::Gzip},
@@ -106,14 +107,14 @@ void readV2(const nlohmann::json& json, const std::filesystem::path& file, ZarrA
     requireKnownKeys(json, {"zarr_format", "shape", "chunks", "dtype", "compressor", "fill_value", "order", "filters",
                             "dimension_separator"},
                      file);
-    const auto& format = requireMember(json, "zarr_format", file, "");
+    const auto& format = JsonField(file, json, "").member("zarr_format").value();
     if (format != 2) throwInputError(file, "zarr_format", "is " + format.dump() + ", a .zarray file is Zarr format 2");
-    array.shape = requireCounts(requireMember(json, "shape", file, ""), 0, file, "shape");
-    array.chunkShape = requireCounts(requireMember(json, "chunks", file, ""), 1, file, "chunks");
-    readV2DataType(requireMember(json, "dtype", file, ""), file, array);
-    readV2Compressor(requireMember(json, "compressor", file, ""), file, array);
-    array.fillValue = readFillValue(requireMember(json, "fill_value", file, ""), array, file);
-    const std::string order = requireString(requireMember(json, "order", file, ""), file, "order");
+    array.shape = JsonField(file, json, "").member("shape").wholeNumbers(0);
+    array.chunkShape = JsonField(file, json, "").member("chunks").wholeNumbers(1);
+    readV2DataType(JsonField(file, json, "").member("dtype").value(), file, array);
+    readV2Compressor(JsonField(file, json, "").member("compressor").value(), file, array);
+    array.fillValue = readFillValue(JsonField(file, json, "").member("fill_value").value(), array, file);
+    const std::string order = JsonField(file, json, "").member("order").string();
     if (order != "C" && order != "F") throwInputError(file, "order", "is \"" + order + "\", not \"C\" or \"F\"");
     array.fortranOrder = order == "F";
     const auto filters = json.find("filters");
@@ -121,7 +122,7 @@ void readV2(const nlohmann::json& json, const std::filesystem::path& file, ZarrA
         throwInputError(file, "filters", filters->dump() + ": filters (delta, shuffle, ...) are not supported; "
                                          "rewrite the array without them");
     const std::string separator = json.contains("dimension_separator")
-                                      ? requireString(json["dimension_separator"], file, "dimension_separator")
+                                      ? JsonField(file, json["dimension_separator"], "dimension_separator").string()
                                       : ".";
     if (separator != "." && separator != "/")
         throwInputError(file, "dimension_separator", "is \"" + separator + "\", not \".\" or \"/\"");
@@ -129,15 +130,14 @@ void readV2(const nlohmann::json& json, const std::filesystem::path& file, ZarrA
 }
 
 void readV3ChunkKeys(const nlohmann::json& json, const std::filesystem::path& file, ZarrArray& array) {
-    const auto& encoding = requireMember(json, "chunk_key_encoding", file, "");
-    const std::string name = requireString(requireMember(encoding, "name", file, "chunk_key_encoding"), file,
-                                           "chunk_key_encoding.name");
+    const auto& encoding = JsonField(file, json, "").member("chunk_key_encoding").value();
+    const std::string name = JsonField(file, encoding, "chunk_key_encoding").member("name").string();
     if (name != "default" && name != "v2")
         throwInputError(file, "chunk_key_encoding.name", "is \"" + name + "\", not \"default\" or \"v2\"");
     array.v2ChunkKeys = name == "v2";
     std::string separator = array.v2ChunkKeys ? "." : "/";
     if (encoding.contains("configuration") && encoding["configuration"].contains("separator"))
-        separator = requireString(encoding["configuration"]["separator"], file, "chunk_key_encoding.configuration.separator");
+        separator = JsonField(file, encoding["configuration"]["separator"], "chunk_key_encoding.configuration.separator").string();
     if (separator != "." && separator != "/")
         throwInputError(file, "chunk_key_encoding.configuration.separator", "is \"" + separator + "\", not \".\" or \"/\"");
     array.keySeparator = separator[0];
@@ -147,24 +147,23 @@ void readV3(const nlohmann::json& json, const std::filesystem::path& file, ZarrA
     requireKnownKeys(json, {"zarr_format", "node_type", "shape", "data_type", "chunk_grid", "chunk_key_encoding",
                             "fill_value", "codecs", "attributes", "dimension_names", "storage_transformers"},
                      file);
-    const auto& format = requireMember(json, "zarr_format", file, "");
+    const auto& format = JsonField(file, json, "").member("zarr_format").value();
     if (format != 3) throwInputError(file, "zarr_format", "is " + format.dump() + ", a zarr.json file is Zarr format 3");
-    const std::string node = requireString(requireMember(json, "node_type", file, ""), file, "node_type");
+    const std::string node = JsonField(file, json, "").member("node_type").string();
     if (node != "array") throwInputError(file, "node_type", "is \"" + node + "\" where an array was expected");
     if (json.contains("storage_transformers") && !json["storage_transformers"].empty())
         throwInputError(file, "storage_transformers", "are not supported");
-    array.shape = requireCounts(requireMember(json, "shape", file, ""), 0, file, "shape");
-    array.dataTypeText = requireString(requireMember(json, "data_type", file, ""), file, "data_type");
+    array.shape = JsonField(file, json, "").member("shape").wholeNumbers(0);
+    array.dataTypeText = JsonField(file, json, "").member("data_type").string();
     array.type = v3DataType(array.dataTypeText, file);
-    const auto& grid = requireMember(json, "chunk_grid", file, "");
-    if (requireString(requireMember(grid, "name", file, "chunk_grid"), file, "chunk_grid.name") != "regular")
+    const auto& grid = JsonField(file, json, "").member("chunk_grid").value();
+    if (JsonField(file, grid, "chunk_grid").member("name").string() != "regular")
         throwInputError(file, "chunk_grid.name", "only a \"regular\" chunk grid is supported");
-    const auto& gridConfiguration = requireMember(grid, "configuration", file, "chunk_grid");
-    array.chunkShape = requireCounts(requireMember(gridConfiguration, "chunk_shape", file, "chunk_grid.configuration"), 1,
-                                     file, "chunk_grid.configuration.chunk_shape");
+    const auto& gridConfiguration = JsonField(file, grid, "chunk_grid").member("configuration").value();
+    array.chunkShape = JsonField(file, gridConfiguration, "chunk_grid.configuration").member("chunk_shape").wholeNumbers(1);
     readV3ChunkKeys(json, file, array);
-    array.fillValue = readFillValue(requireMember(json, "fill_value", file, ""), array, file);
-    readCodecPipeline(requireMember(json, "codecs", file, ""), file, array);
+    array.fillValue = readFillValue(JsonField(file, json, "").member("fill_value").value(), array, file);
+    readCodecPipeline(JsonField(file, json, "").member("codecs").value(), file, array);
 }
 
 // Chunks of a size that cannot be read into memory are refused here, before any chunk is read.

@@ -2,6 +2,7 @@
 #include "zarr_codec_pipeline.h"
 
 #include "tstyles/core/errors.h"
+#include "tstyles/core/json_field.h"
 #include "zarr_json.h"
 
 namespace tstyles {
@@ -14,7 +15,7 @@ struct Codec {
 
 Codec readCodec(const nlohmann::json& value, const std::filesystem::path& file, const std::string& field) {
     Codec codec;
-    codec.name = requireString(requireMember(value, "name", file, field), file, field + ".name");
+    codec.name = JsonField(file, value, field).member("name").string();
     if (value.contains("configuration")) codec.configuration = value["configuration"];
     if (!codec.configuration.is_object()) throwInputError(file, field + ".configuration", "must be an object");
     return codec;
@@ -23,8 +24,7 @@ Codec readCodec(const nlohmann::json& value, const std::filesystem::path& file, 
 // Transpose is only accepted when it keeps the order: any other would reorder the values within a chunk.
 void requireIdentityTranspose(const Codec& codec, std::size_t dimensions, const std::filesystem::path& file,
                               const std::string& field) {
-    const auto order = requireCounts(requireMember(codec.configuration, "order", file, field + ".configuration"), 0, file,
-                                     field + ".configuration.order");
+    const auto order = JsonField(file, codec.configuration, field + ".configuration").member("order").wholeNumbers(0);
     for (std::size_t index = 0; index < order.size(); ++index)
         if (order[index] != index || order.size() != dimensions)
             throwInputError(file, field, "a transpose that reorders the axes is not supported; rewrite the array in C order");
@@ -35,7 +35,7 @@ ByteOrder readEndian(const Codec& codec, const ZarrArray& array, const std::file
         if (bytesPerValue(array.type) > 1) throwInputError(file, field + ".configuration.endian", "is missing");
         return ByteOrder::Little;
     }
-    const std::string endian = requireString(codec.configuration["endian"], file, field + ".configuration.endian");
+    const std::string endian = JsonField(file, codec.configuration["endian"], field + ".configuration.endian").string();
     if (endian != "little" && endian != "big")
         throwInputError(file, field + ".configuration.endian", "is \"" + endian + "\", not \"little\" or \"big\"");
     return endian == "big" ? ByteOrder::Big : ByteOrder::Little;
@@ -104,8 +104,7 @@ void readShardingConfiguration(const Codec& codec, const std::filesystem::path& 
     const std::string configuration = field + ".configuration";
     ZarrSharding sharding;
     sharding.shardShape = array.chunkShape;
-    array.chunkShape = requireCounts(requireMember(codec.configuration, "chunk_shape", file, configuration), 1, file,
-                                     configuration + ".chunk_shape");
+    array.chunkShape = JsonField(file, codec.configuration, configuration).member("chunk_shape").wholeNumbers(1);
     if (array.chunkShape.size() != sharding.shardShape.size())
         throwInputError(file, configuration + ".chunk_shape", "has another number of dimensions than the shards");
     for (std::size_t axis = 0; axis < array.chunkShape.size(); ++axis)
@@ -116,10 +115,10 @@ void readShardingConfiguration(const Codec& codec, const std::filesystem::path& 
     if (location != "start" && location != "end")
         throwInputError(file, configuration + ".index_location", "is \"" + location + "\", not \"start\" or \"end\"");
     sharding.indexAtEnd = location == "end";
-    readIndexCodecs(requireMember(codec.configuration, "index_codecs", file, configuration), file,
+    readIndexCodecs(JsonField(file, codec.configuration, configuration).member("index_codecs").value(), file,
                     configuration + ".index_codecs", sharding);
     array.sharding = sharding;
-    readCodecList(requireMember(codec.configuration, "codecs", file, configuration), file, configuration + ".codecs", false,
+    readCodecList(JsonField(file, codec.configuration, configuration).member("codecs").value(), file, configuration + ".codecs", false,
                   array);
 }
 
