@@ -6,14 +6,17 @@
 #include <numbers>
 #include <utility>
 
+#include "tstyles/core/ascii_case.h"
+
 namespace tstyles {
 namespace {
 
+// Without spaces, in lower case: "Degrees North" -> "degreesnorth".
 std::string normalised(const std::string& unit) {
     std::string text;
     for (char c : unit)
-        if (!std::isspace(static_cast<unsigned char>(c))) text += char(std::tolower(static_cast<unsigned char>(c)));
-    return text;
+        if (!std::isspace(static_cast<unsigned char>(c))) text += c;
+    return asciiLowercase(text);
 }
 
 struct KnownUnit {

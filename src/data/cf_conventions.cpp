@@ -1,4 +1,5 @@
 // CF coordinates: direction, placement and time (cf_conventions.h).
+#include "tstyles/core/ascii_case.h"
 #include "tstyles/data/cf_conventions.h"
 
 #include <algorithm>
@@ -9,11 +10,6 @@
 
 namespace tstyles {
 namespace {
-
-std::string lowercase(std::string text) {
-    for (char& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return text;
-}
 
 bool startsWith(const std::string& text, const std::string& prefix) { return text.rfind(prefix, 0) == 0; }
 
@@ -26,10 +22,10 @@ bool isPressureUnit(const std::string& unit) {
 }  // namespace
 
 AxisDirection cfDirection(const CfAttributes& attributes, bool& down) {
-    const std::string units = lowercase(attributes.units);
-    const std::string standardName = lowercase(attributes.standardName);
-    const std::string axis = lowercase(attributes.axis);
-    const std::string positive = lowercase(attributes.positive);
+    const std::string units = asciiLowercase(attributes.units);
+    const std::string standardName = asciiLowercase(attributes.standardName);
+    const std::string axis = asciiLowercase(attributes.axis);
+    const std::string positive = asciiLowercase(attributes.positive);
     const bool pressure = isPressureUnit(units) || standardName.find("pressure") != std::string::npos;
     down = positive == "down" || (positive.empty() && pressure);
     if (standardName == "longitude" || startsWith(units, "degrees_e") || startsWith(units, "degree_e") ||
@@ -85,10 +81,10 @@ CfSpatialAxis cfIndexAxis(const std::string& name, const CfAttributes& attribute
 
 bool cfLooksLikeTime(const std::string& dimension, const CfAttributes* attributes) {
     if (attributes) {
-        if (lowercase(attributes->axis) == "t") return true;
+        if (asciiLowercase(attributes->axis) == "t") return true;
         if (attributes->units.find(" since ") != std::string::npos) return true;
     }
-    const std::string name = lowercase(dimension);
+    const std::string name = asciiLowercase(dimension);
     return name == "t" || name.find("time") != std::string::npos;
 }
 

@@ -1,5 +1,6 @@
 // Plot3D grid + solution files to a series: one structured grid (the chosen block), one time-step
 // per solution file, its density one solution variable or a quantity derived from them.
+#include "tstyles/core/ascii_case.h"
 #include "tstyles/data/plot3d.h"
 
 #include <algorithm>
@@ -43,9 +44,7 @@ std::optional<int> functionIndex(const std::string& variable) {
 }
 
 bool hasFunctionExtension(const std::filesystem::path& path) {
-    std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
+    const std::string extension = lowercaseExtension(path);
     return extension == ".f" || extension == ".fun";
 }
 
@@ -203,9 +202,7 @@ std::vector<std::string> plot3DVariableNames() {
 }
 
 bool hasPlot3DGridExtension(const std::filesystem::path& path) {
-    std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
+    const std::string extension = lowercaseExtension(path);
     return extension == ".xyz" || extension == ".x" || extension == ".g" || extension == ".grd";
 }
 

@@ -1,6 +1,7 @@
 // CF time units, calendars and labels (time_axis.h). Day numbers: Julian day numbers for the
 // Gregorian and Julian calendars (the integer algorithms of Richards, "Mapping Time", as in the
 // Explanatory Supplement to the Astronomical Almanac), plain counts for the fixed-length calendars.
+#include "tstyles/core/ascii_case.h"
 #include "tstyles/data/time_axis.h"
 
 #include <array>
@@ -163,11 +164,6 @@ const char* unitSymbol(TimeUnit unit) {
     return "";
 }
 
-std::string lowercase(std::string text) {
-    for (char& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return text;
-}
-
 std::string trimmed(const std::string& text) {
     const auto first = text.find_first_not_of(" \t");
     if (first == std::string::npos) return "";
@@ -293,7 +289,7 @@ std::optional<CalendarDate> parseReferenceDate(const std::string& text) {
 }
 
 std::optional<Calendar> calendarFromString(const std::string& name) {
-    const std::string text = lowercase(trimmed(name));
+    const std::string text = asciiLowercase(trimmed(name));
     if (text == "standard" || text == "gregorian" || text.empty()) return Calendar::Standard;
     if (text == "proleptic_gregorian") return Calendar::ProlepticGregorian;
     if (text == "noleap" || text == "365_day") return Calendar::NoLeap;
@@ -313,7 +309,7 @@ TimeAxis parseTimeUnits(const std::string& units, const std::string& calendar, c
                             "\"; CF calendars: standard, gregorian, proleptic_gregorian, noleap, 365_day, all_leap, "
                             "366_day, 360_day, julian");
     axis.calendar = *parsedCalendar;
-    const std::string text = lowercase(trimmed(units));
+    const std::string text = asciiLowercase(trimmed(units));
     if (text.empty()) return axis;
     const auto since = text.find(" since ");
     const std::string unitText = trimmed(since == std::string::npos ? text : text.substr(0, since));
@@ -348,7 +344,7 @@ TimeAxis parseTimeUnits(const std::string& units, const std::string& calendar, c
 std::optional<CalendarMonthStamps> readCalendarMonths(const std::string& units, const std::string& calendar,
                                                       const std::vector<double>& stamps,
                                                       const std::filesystem::path& file, const std::string& field) {
-    const std::string text = lowercase(trimmed(units));
+    const std::string text = asciiLowercase(trimmed(units));
     const auto since = text.find(" since ");
     if (since == std::string::npos) return std::nullopt;
     const std::string unitText = trimmed(text.substr(0, since));

@@ -1,4 +1,5 @@
 // Reading and writing images with OpenImageIO.
+#include "tstyles/core/ascii_case.h"
 #include "tstyles/image/image_io.h"
 
 #include <OpenImageIO/imagebuf.h>
@@ -27,8 +28,7 @@ std::string oneLine(std::string text) {
 }
 
 bool isFloatFormat(const std::filesystem::path& file) {
-    std::string extension = file.extension().string();
-    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    const std::string extension = lowercaseExtension(file);
     return extension == ".exr" || extension == ".hdr";
 }
 }  // namespace

@@ -1,6 +1,7 @@
 // Movie formats by extension, and the checks a front end runs before it renders any frame.
 #include <cctype>
 
+#include "tstyles/core/ascii_case.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/core/user_paths.h"
 #include "tstyles/video/video_file.h"
@@ -18,8 +19,7 @@ std::string toString(VideoFormat format) {
 }
 
 std::optional<VideoFormat> videoFormatForPath(const std::filesystem::path& file) {
-    std::string extension = file.extension().string();
-    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    const std::string extension = lowercaseExtension(file);
     if (extension == ".mp4") return VideoFormat::Mp4;
     if (extension == ".webm") return VideoFormat::WebM;
     if (extension == ".gif") return VideoFormat::Gif;

@@ -12,6 +12,7 @@
 #include "nrrd_header.h"
 #include "oriented_axes.h"
 #include "file_bytes.h"
+#include "tstyles/core/ascii_case.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/core/input_limits.h"
 
@@ -129,8 +130,7 @@ std::array<SpatialAxis, 3> nrrdAxes(const NrrdHeader& header) {
         {"left-anterior-superior", "las", {D::Left, D::Anterior, D::Superior}},
         {"left-posterior-superior", "lps", {D::Left, D::Posterior, D::Superior}},
     };
-    std::string space;
-    for (char c : header.space) space += char(std::tolower(static_cast<unsigned char>(c)));
+    const std::string space = asciiLowercase(header.space);
     std::array<SpatialAxis, 3> axes;
     for (const Space& known : kSpaces)
         if (space == known.name || space == known.abbreviation)

@@ -1,4 +1,5 @@
 // Which reader: a manifest by its folder or .json, any other format by the format table.
+#include "tstyles/core/ascii_case.h"
 #include "tstyles/data/series_opener.h"
 
 #include <algorithm>
@@ -15,12 +16,6 @@
 namespace tstyles {
 namespace {
 
-std::string lowercaseName(const std::filesystem::path& file) {
-    std::string name = file.filename().string();
-    for (char& c : name) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return name;
-}
-
 bool endsWith(const std::string& text, const std::string& suffix) {
     return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
@@ -32,7 +27,7 @@ const SeriesFormat& formatByName(const std::string& name) {
 }
 
 const SeriesFormat* formatByExtension(const std::filesystem::path& input) {
-    const std::string name = lowercaseName(input);
+    const std::string name = lowercaseFileName(input);
     for (const SeriesFormat& format : seriesFormats())
         for (const std::string& extension : format.extensions)
             if (endsWith(name, extension)) return &format;
@@ -127,7 +122,7 @@ bool isManifestInput(const std::filesystem::path& input) {
     std::error_code error;
     if (std::filesystem::is_directory(input, error)) return formatClaimingFolder(input) == nullptr;
     // A Zarr v3 store's metadata file is JSON but names the store, not a manifest.
-    return endsWith(lowercaseName(input), ".json") && lowercaseName(input) != "zarr.json";
+    return endsWith(lowercaseFileName(input), ".json") && lowercaseFileName(input) != "zarr.json";
 }
 
 bool isNamedLikeSeriesFile(const std::filesystem::path& input) { return formatByExtension(input) != nullptr; }

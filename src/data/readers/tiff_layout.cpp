@@ -5,6 +5,7 @@
 #include <cctype>
 #include <map>
 
+#include "tstyles/core/ascii_case.h"
 #include "tstyles/core/errors.h"
 
 namespace tstyles {
@@ -24,8 +25,7 @@ ChannelChoice chooseChannel(const ReadOptions& options, std::size_t planeChannel
 }
 
 std::string normalizedLengthUnit(const std::string& unit) {
-    std::string lower;
-    for (char c : unit) lower += char(std::tolower(static_cast<unsigned char>(c)));
+    const std::string lower = asciiLowercase(unit);
     if (lower == "micron" || lower == "microns" || lower == "um" || lower == "\\u00b5m" || lower == "µm" ||
         lower == "μm" || lower == "micrometer" || lower == "micrometre")
         return "um";
@@ -46,8 +46,7 @@ std::optional<double> micrometresPer(const std::string& unit) {
 }
 
 TimeUnit timeUnitFromText(const std::string& unit) {
-    std::string lower;
-    for (char c : unit) lower += char(std::tolower(static_cast<unsigned char>(c)));
+    const std::string lower = asciiLowercase(unit);
     if (lower == "s" || lower == "sec" || lower == "second" || lower == "seconds") return TimeUnit::Seconds;
     if (lower == "ms" || lower == "msec" || lower == "millisecond" || lower == "milliseconds") return TimeUnit::Milliseconds;
     if (lower == "µs" || lower == "us" || lower == "\\u00b5s" || lower == "microsecond" || lower == "microseconds")

@@ -12,19 +12,15 @@
 #include "tiff_imagej.h"
 #include "tiff_ome.h"
 #include "tiff_pages.h"
+#include "tstyles/core/ascii_case.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/core/input_limits.h"
 
 namespace tstyles {
 namespace {
 
-std::string lowercaseText(std::string text) {
-    for (char& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return text;
-}
-
 bool isTiffName(const std::filesystem::path& file) {
-    const std::string extension = lowercaseText(file.extension().string());
+    const std::string extension = lowercaseExtension(file);
     return (extension == ".tif" || extension == ".tiff") && file.filename().string().front() != '.';
 }
 

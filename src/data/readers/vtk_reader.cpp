@@ -9,17 +9,12 @@
 #include "oriented_axes.h"
 #include "vtk_collection.h"
 #include "vtk_dataset.h"
+#include "tstyles/core/ascii_case.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/core/input_limits.h"
 
 namespace tstyles {
 namespace {
-
-std::string lowercaseExtension(const std::filesystem::path& file) {
-    std::string extension = file.extension().string();
-    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return extension;
-}
 
 bool isListFile(const std::filesystem::path& file) {
     const std::string extension = lowercaseExtension(file);
