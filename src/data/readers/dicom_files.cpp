@@ -3,9 +3,9 @@
 #include "dicom_files.h"
 
 #include <algorithm>
-#include <fstream>
 #include <string>
 
+#include "file_magic.h"
 #include "tstyles/core/errors.h"
 
 namespace tstyles {
@@ -69,10 +69,7 @@ void collect(const std::filesystem::path& root, const std::filesystem::path& fol
 }  // namespace
 
 bool hasDicomMagic(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    char magic[132] = {};
-    in.read(magic, sizeof(magic));
-    return in && std::string(magic + 128, 4) == "DICM";
+    return hasMagicAt(fileStart(file, 132), 128, "DICM");  // after the 128-byte preamble
 }
 
 bool isDicomFolder(const std::filesystem::path& folder) {

@@ -2,10 +2,9 @@
 // series of several files through eachFileOneStep.
 #include "format_table.h"
 
-#include <fstream>
-
 #include "dicom_files.h"
 #include "dicom_reader.h"
+#include "file_magic.h"
 #include "isabel_reader.h"
 #include "netcdf_reader.h"
 #include "nifti_reader.h"
@@ -20,12 +19,7 @@
 namespace tstyles {
 namespace {
 
-bool startsWithNrrdMagic(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    char magic[7] = {};
-    in.read(magic, 7);
-    return in && std::string(magic, 7) == "NRRD000";
-}
+bool startsWithNrrdMagic(const std::filesystem::path& file) { return hasMagicAt(fileStart(file, 7), 0, "NRRD000"); }
 
 // How the desktop's MIME database recognises our types' content (shared-mime-info <match> elements).
 // NIfTI-1 single file: "n+1" at byte 344; NIfTI-2: "n+2" at byte 4.

@@ -3,11 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <memory>
 
 #include <netcdf.h>
 
+#include "file_magic.h"
 #include "finite_values.h"
 #include "netcdf_file.h"
 #include "series_assembly.h"
@@ -216,13 +216,11 @@ SourceSeries openNetcdf(const std::filesystem::path& file, const ReadOptions& op
 }
 
 bool hasNetcdfSignature(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    char magic[8] = {};
-    in.read(magic, 8);
-    if (!in) return false;
-    if (magic[0] == 'C' && magic[1] == 'D' && magic[2] == 'F' && (magic[3] == 1 || magic[3] == 2 || magic[3] == 5))
-        return true;
-    return std::string(magic + 1, 3) == "HDF" && static_cast<unsigned char>(magic[0]) == 0x89;
+    // Classic (CDF 1), 64-bit offset (2), 64-bit data (5); netCDF-4 is HDF5.
+    const std::string start = fileStart(file, 8);
+    if (start.size() < 8) return false;
+    return hasMagicAt(start, 0, std::string_view("CDF\x01", 4)) || hasMagicAt(start, 0, std::string_view("CDF\x02", 4)) ||
+           hasMagicAt(start, 0, std::string_view("CDF\x05", 4)) || hasMagicAt(start, 0, "\x89HDF");
 }
 
 }  // namespace tstyles

@@ -4,10 +4,10 @@
 #include "tiff_reader.h"
 
 #include <algorithm>
-#include <fstream>
 #include <map>
 #include <memory>
 
+#include "file_magic.h"
 #include "finite_values.h"
 #include "tiff_imagej.h"
 #include "tiff_ome.h"
@@ -150,13 +150,12 @@ SourceSeries openTiff(const std::vector<std::filesystem::path>& inputs, const Re
 }
 
 bool hasTiffSignature(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    char magic[4] = {};
-    in.read(magic, 4);
-    if (!in) return false;
-    const std::string bytes(magic, 4);
-    return bytes == std::string("II*\0", 4) || bytes == std::string("MM\0*", 4) || bytes == std::string("II+\0", 4) ||
-           bytes == std::string("MM\0+", 4);
+    // Classic TIFF and BigTIFF, little- and big-endian.
+    const std::string start = fileStart(file, 4);
+    for (const std::string_view magic : {std::string_view("II*\0", 4), std::string_view("MM\0*", 4),
+                                         std::string_view("II+\0", 4), std::string_view("MM\0+", 4)})
+        if (hasMagicAt(start, 0, magic)) return true;
+    return false;
 }
 
 bool isTiffFolder(const std::filesystem::path& folder) {

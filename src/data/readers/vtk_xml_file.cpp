@@ -3,9 +3,11 @@
 // read here, once per file.
 #include "vtk_xml_file.h"
 
+
 #include <algorithm>
 #include <fstream>
 
+#include "file_magic.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/core/input_limits.h"
 
@@ -121,11 +123,8 @@ std::size_t lineOf(const VtkXmlFile& file, const pugi::xml_node& node) {
 }
 
 bool looksLikeVtkXml(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::string start(512, '\0');
-    in.read(start.data(), std::streamsize(start.size()));
-    start.resize(std::size_t(in.gcount()));
-    return start.find("<VTKFile") != std::string::npos;
+    // The root element, after the XML declaration and any comment.
+    return fileStart(path, 512).find("<VTKFile") != std::string::npos;
 }
 
 }  // namespace tstyles
