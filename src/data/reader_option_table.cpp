@@ -15,7 +15,7 @@ namespace {
 constexpr double kNoUpperBound = std::numeric_limits<double>::infinity();
 constexpr double kLargestWholeNumber = double(std::numeric_limits<int>::max());
 
-const std::string& only(const std::vector<std::string>& texts) { return texts.back(); }
+const std::string& lastGiven(const std::vector<std::string>& texts) { return texts.back(); }
 
 std::vector<ReaderOptionLine> buildLines() {
     using Kind = ReaderOptionKind;
@@ -24,11 +24,11 @@ std::vector<ReaderOptionLine> buildLines() {
                      "NetCDF: the variable to read; Plot3D: density, x-momentum, y-momentum, z-momentum, energy, "
                      "momentum-magnitude, pressure, or function-K for function (.f) files; VTK XML: the point-data "
                      "array (a vector is read as its magnitude)",
-                     true, false, [](ReadOptions& o, const auto& t, const auto&) { o.variable = only(t); },
+                     true, false, [](ReadOptions& o, const auto& t, const auto&) { o.variable = lastGiven(t); },
                      [](const ReadOptions& o) { return !o.variable.empty(); }});
     lines.push_back({"time-dim", "--time-dim", "time_dim", Kind::Text, "NAME", 0, 0, false, {}, "",
                      "NetCDF: the time dimension, when it is not found", true, false,
-                     [](ReadOptions& o, const auto& t, const auto&) { o.timeDimension = only(t); },
+                     [](ReadOptions& o, const auto& t, const auto&) { o.timeDimension = lastGiven(t); },
                      [](const ReadOptions& o) { return !o.timeDimension.empty(); }});
     lines.push_back({"index-axes", "--index-axes", "index_axes", Kind::Flag, "", 0, 0, false, {}, "off",
                      "NetCDF: unit spacing instead of the coordinate variables", true, false,
@@ -36,56 +36,56 @@ std::vector<ReaderOptionLine> buildLines() {
                      [](const ReadOptions& o) { return o.indexAxes; }});
     lines.push_back({"steps", "--steps", "steps", Kind::Steps, "FIRST:END:STRIDE", 0, 0, false, {}, "every time-step",
                      "Time-steps FIRST:END:STRIDE (END exclusive, may be empty), e.g. 0:48:5", false, false,
-                     [](ReadOptions& o, const auto& t, const auto& s) { o.steps = parseStepSelection(only(t), s); },
+                     [](ReadOptions& o, const auto& t, const auto& s) { o.steps = parseStepSelection(lastGiven(t), s); },
                      [](const ReadOptions& o) { return o.steps.has_value(); }});
     lines.push_back({"range", "--range", "value_range", Kind::ValueRange, "LO:HI", 0, 0, false, {},
                      "the chosen steps' values", "Raw values LO:HI map to density 0 and 1 (default: the data's)", false,
-                     false, [](ReadOptions& o, const auto& t, const auto& s) { o.valueRange = parseValueRange(only(t), s); },
+                     false, [](ReadOptions& o, const auto& t, const auto& s) { o.valueRange = parseValueRange(lastGiven(t), s); },
                      [](const ReadOptions& o) { return o.valueRange.has_value(); }});
     lines.push_back({"resample", "--resample", "resample", Kind::Dims, "NXxNYxNZ", 0, 0, false, {}, "",
                      "Resample every time-step to NXxNYxNZ (rectilinear grids)", false, false,
-                     [](ReadOptions& o, const auto& t, const auto& s) { o.resampleTo = parseDims(only(t), s); },
+                     [](ReadOptions& o, const auto& t, const auto& s) { o.resampleTo = parseDims(lastGiven(t), s); },
                      [](const ReadOptions& o) { return o.resampleTo.has_value(); }});
     lines.push_back({"dims", "--dims", "dims", Kind::Dims, "NXxNYxNZ", 0, 0, false, {}, "500x500x100 (Isabel)",
                      "Hurricane Isabel raw files: samples per file NXxNYxNZ (default 500x500x100); plain TIFF: the "
                      "samples of one volume",
-                     true, false, [](ReadOptions& o, const auto& t, const auto& s) { o.rawDims = parseDims(only(t), s); },
+                     true, false, [](ReadOptions& o, const auto& t, const auto& s) { o.rawDims = parseDims(lastGiven(t), s); },
                      [](const ReadOptions& o) { return o.rawDims.has_value(); }});
     lines.push_back({"channel", "--channel", "channel", Kind::WholeNumber, "N", 0, kLargestWholeNumber, false, {}, "0",
                      "TIFF, OME-Zarr: which channel of a multi-channel image (samples of a pixel, channel planes, the c "
                      "axis), from 0; `info` says which", true, false,
-                     [](ReadOptions& o, const auto& t, const auto&) { o.channel = std::stoi(only(t)); },
+                     [](ReadOptions& o, const auto& t, const auto&) { o.channel = std::stoi(lastGiven(t)); },
                      [](const ReadOptions& o) { return o.channel.has_value(); }});
     lines.push_back({"series", "--series", "series", Kind::Text, "N|UID", 0, 0, false, {}, "the one with the most frames",
                      "DICOM: which series of the folder, by its number in `tstyles info`'s list (from 1) or its "
                      "SeriesInstanceUID (default: the one with the most frames)",
-                     true, false, [](ReadOptions& o, const auto& t, const auto&) { o.seriesChoice = only(t); },
+                     true, false, [](ReadOptions& o, const auto& t, const auto&) { o.seriesChoice = lastGiven(t); },
                      [](const ReadOptions& o) { return !o.seriesChoice.empty(); }});
     lines.push_back({"axes", "--axes", "axes", Kind::Text, "TZYX|ZTYX", 0, 0, false, {}, "TZYX",
                      "Plain TIFF: what the pages are, slowest axis first, with --dims: TZYX (default) or ZTYX", true, false,
-                     [](ReadOptions& o, const auto& t, const auto&) { o.pageAxes = only(t); },
+                     [](ReadOptions& o, const auto& t, const auto&) { o.pageAxes = lastGiven(t); },
                      [](const ReadOptions& o) { return !o.pageAxes.empty(); }});
     lines.push_back({"level", "--level", "level", Kind::WholeNumber, "N", 0, kLargestWholeNumber, false, {},
                      "the finest that fits",
                      "OME-Zarr: the resolution level, 0 the finest (default: the finest that fits the memory limits; "
                      "`info` says which)",
-                     true, false, [](ReadOptions& o, const auto& t, const auto&) { o.level = std::stoi(only(t)); },
+                     true, false, [](ReadOptions& o, const auto& t, const auto&) { o.level = std::stoi(lastGiven(t)); },
                      [](const ReadOptions& o) { return o.level.has_value(); }});
     lines.push_back({"precision", "--precision", "precision", Kind::Choice, "BITS", 0, 0, false, {"8", "16", "32"}, "16",
                      "Bits per density on the GPU: 8, 16 (default) or 32 (R8, R16, R32F; RG8, RG16, RG32F with missing "
                      "values); counted by --max-memory", false, true,
-                     [](ReadOptions& o, const auto& t, const auto& s) { o.precision = parseDensityPrecision(only(t), s); },
+                     [](ReadOptions& o, const auto& t, const auto& s) { o.precision = parseDensityPrecision(lastGiven(t), s); },
                      [](const ReadOptions& o) { return o.precision != ReadOptions{}.precision; }});
     lines.push_back({"max-memory", "--max-memory", "max_memory", Kind::MemorySize, "SIZE", 0, 0, false, {},
                      "half of this machine's memory",
                      "Memory the series may take (host + GPU copy), e.g. 512M, 2G or bytes; more is refused with the "
                      "figure it needs, or fitted (--fit)", false,
-                     true, [](ReadOptions& o, const auto& t, const auto& s) { o.maxMemoryBytes = parseMemorySize(only(t), s); },
+                     true, [](ReadOptions& o, const auto& t, const auto& s) { o.maxMemoryBytes = parseMemorySize(lastGiven(t), s); },
                      [](const ReadOptions& o) { return o.maxMemoryBytes.has_value(); }});
     lines.push_back({"fit", "--fit", "fit", Kind::Choice, "HOW", 0, 0, false, {"refuse", "resolution", "steps"}, "refuse",
                      "With --max-memory, a series too large is: refuse (default), resolution (read smaller), steps "
                      "(fewer time-steps)",
-                     false, false, [](ReadOptions& o, const auto& t, const auto& s) { o.fit = parseMemoryFit(only(t), s); },
+                     false, false, [](ReadOptions& o, const auto& t, const auto& s) { o.fit = parseMemoryFit(lastGiven(t), s); },
                      [](const ReadOptions& o) { return o.fit != MemoryFit::Refuse; }});
     lines.push_back({"solution", "--solution", "solution", Kind::Files, "FILE,...", 0, 0, false, {}, "",
                      "Plot3D: solution (.q) or function (.f) files, one per time-step in time order (comma-separated "
@@ -97,26 +97,26 @@ std::vector<ReaderOptionLine> buildLines() {
                      [](const ReadOptions& o) { return !o.solutionFiles.empty(); }});
     lines.push_back({"block", "--block", "block", Kind::WholeNumber, "N", 0, kLargestWholeNumber, false, {}, "0",
                      "Plot3D: which block of a multi-block file (from 0)", true, false,
-                     [](ReadOptions& o, const auto& t, const auto&) { o.block = std::stoi(only(t)); },
+                     [](ReadOptions& o, const auto& t, const auto&) { o.block = std::stoi(lastGiven(t)); },
                      [](const ReadOptions& o) { return o.block != ReadOptions{}.block; }});
     lines.push_back({"gamma", "--gamma", "gamma", Kind::Number, "G", 1.0, 10.0, true, {}, "1.4",
                      "Plot3D: ratio of specific heats, for pressure", true, false,
-                     [](ReadOptions& o, const auto& t, const auto&) { o.gamma = std::stod(only(t)); },
+                     [](ReadOptions& o, const auto& t, const auto&) { o.gamma = std::stod(lastGiven(t)); },
                      [](const ReadOptions& o) { return o.gamma != ReadOptions{}.gamma; }});
     return lines;
 }
 
-std::string numberText(double value) {
+std::string boundNumberText(double value) {
     if (value == kLargestWholeNumber) return std::to_string(std::numeric_limits<int>::max());
     std::ostringstream text;
     text << value;
     return text.str();
 }
 
-std::string quoted(const std::string& text) { return "\"" + text + "\""; }
+std::string inQuotes(const std::string& text) { return "\"" + text + "\""; }
 
 // Which readers take a line: the formats whose rows name it, or every one (and a manifest).
-std::string readBy(const ReaderOptionLine& line) {
+std::string formatsReading(const ReaderOptionLine& line) {
     if (!line.formatOnly) return line.forManifest ? "every format and a manifest" : "every format";
     std::string formats;
     for (const SeriesFormat& format : seriesFormats())
@@ -143,10 +143,10 @@ std::string readerOptionBounds(const ReaderOptionLine& line) {
         case ReaderOptionKind::WholeNumber:
         case ReaderOptionKind::Number: {
             const std::string kind = line.kind == ReaderOptionKind::WholeNumber ? "a whole number " : "a number ";
-            const std::string low = (line.lowExclusive ? "above " : "") + numberText(line.low);
+            const std::string low = (line.lowExclusive ? "above " : "") + boundNumberText(line.low);
             if (line.high == kLargestWholeNumber || line.high == kNoUpperBound)
                 return kind + low + (line.lowExclusive ? "" : " or more");
-            return kind + (line.lowExclusive ? low + " and at most " : "from " + low + " to ") + numberText(line.high);
+            return kind + (line.lowExclusive ? low + " and at most " : "from " + low + " to ") + boundNumberText(line.high);
         }
         case ReaderOptionKind::Choice: {
             std::string text;
@@ -161,7 +161,7 @@ std::string readerOptionBounds(const ReaderOptionLine& line) {
 void checkReaderOptionText(const ReaderOptionLine& line, const std::string& text) {
     const std::string spelling(line.cli);
     const auto refuse = [&] {
-        throwInputError("", spelling, "must be " + readerOptionBounds(line) + "; got " + quoted(text));
+        throwInputError("", spelling, "must be " + readerOptionBounds(line) + "; got " + inQuotes(text));
     };
     switch (line.kind) {
         case ReaderOptionKind::WholeNumber: {
@@ -229,7 +229,7 @@ std::string readerOptionsMarkdown() {
         std::string value = line.valueName.empty() ? "(a flag)" : "`" + escaped(line.valueName) + "`";
         if (const std::string bounds = readerOptionBounds(line); !bounds.empty()) value += ": " + bounds;
         table += "| `" + std::string(line.cli) + "` | `" + std::string(line.python) + "` | " + value + " | " +
-                 (line.defaultText.empty() ? "" : escaped(line.defaultText)) + " | " + readBy(line) + " | " +
+                 (line.defaultText.empty() ? "" : escaped(line.defaultText)) + " | " + formatsReading(line) + " | " +
                  escaped(line.help) + " |\n";
     }
     return table;
