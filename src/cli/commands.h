@@ -44,7 +44,6 @@ GlBackend parseBackend(const std::string& name);
 // option. Shared by info, render, view, scene, animate, convert and bench.
 struct DatasetOptions {
     ReaderOptionTexts texts;
-    bool given(const std::string& key) const { return texts.count(key) != 0; }
 };
 void addDatasetOptions(CLI::App& command, DatasetOptions& options);
 ReadOptions toReadOptions(const DatasetOptions& options);

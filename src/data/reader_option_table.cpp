@@ -12,7 +12,6 @@
 namespace tstyles {
 namespace {
 
-constexpr double kNoUpperBound = std::numeric_limits<double>::infinity();
 constexpr double kLargestWholeNumber = double(std::numeric_limits<int>::max());
 
 const std::string& lastGiven(const std::vector<std::string>& texts) { return texts.back(); }
@@ -144,7 +143,7 @@ std::string readerOptionBounds(const ReaderOptionLine& line) {
         case ReaderOptionKind::Number: {
             const std::string kind = line.kind == ReaderOptionKind::WholeNumber ? "a whole number " : "a number ";
             const std::string low = (line.lowExclusive ? "above " : "") + boundNumberText(line.low);
-            if (line.high == kLargestWholeNumber || line.high == kNoUpperBound)
+            if (line.high == kLargestWholeNumber)
                 return kind + low + (line.lowExclusive ? "" : " or more");
             return kind + (line.lowExclusive ? low + " and at most " : "from " + low + " to ") + boundNumberText(line.high);
         }
