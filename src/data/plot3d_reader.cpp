@@ -132,13 +132,15 @@ SolutionBlock readSolutionBlock(const Plot3DFile& file, const Plot3DOptions& opt
     result.values.resize(nodes);
     for (std::size_t node = 0; node < nodes; ++node) {
         std::array<double, 5> q{};
+        bool unknown = false;  // NaN in any component: the solver left the node without data
         for (std::size_t component = 0; component < 5; ++component) {
             q[component] = file.real(arrays + (component * nodes + node) * precision);
-            if (!std::isfinite(q[component]))
-                throwInputError(file.path, "", std::string("non-finite ") + names[component] + " at node " +
+            if (std::isinf(q[component]))
+                throwInputError(file.path, "", std::string("infinite ") + names[component] + " at node " +
                                                    nodeText(dims, node) + " of block " + std::to_string(block));
+            unknown = unknown || std::isnan(q[component]);
         }
-        if (grid.blanked[node]) {
+        if (grid.blanked[node] || unknown) {
             result.values[node] = missingDensity();
             continue;
         }
@@ -174,10 +176,10 @@ SolutionBlock readFunctionBlock(const Plot3DFile& file, const Plot3DOptions& opt
     SolutionBlock result{std::numeric_limits<double>::quiet_NaN(), std::vector<float>(nodes)};  // no time stored
     for (std::size_t node = 0; node < nodes; ++node) {
         const double value = file.real(start + node * std::size_t(file.layout.precision));
-        if (!std::isfinite(value) || std::abs(value) > std::numeric_limits<float>::max())
-            throwInputError(file.path, "", "non-finite " + options.variable + " at node " + nodeText(dims, node) +
-                                               " of block " + std::to_string(block));
-        result.values[node] = grid.blanked[node] ? missingDensity() : float(value);
+        if (std::isinf(value) || std::abs(value) > std::numeric_limits<float>::max())
+            throwInputError(file.path, "", "infinite " + options.variable + " at node " + nodeText(dims, node) +
+                                               " of block " + std::to_string(block) + " (in float32)");
+        result.values[node] = grid.blanked[node] || std::isnan(value) ? missingDensity() : float(value);
     }
     return result;
 }

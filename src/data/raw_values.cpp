@@ -77,31 +77,31 @@ std::string voxelText(std::size_t index, const glm::ivec3& dims) {
            std::to_string(index / (nx * ny)) + ")";
 }
 
-// Decodes raw values one at a time into a kept list, marking missing ones and refusing other
-// non-finite ones, and keeps the range of those with data.
+// Decodes raw values one at a time into a kept list, marking missing ones (the marker, NaN) and
+// refusing infinities, and keeps the range of those with data.
 class ValueDecoder {
 public:
     ValueDecoder(const RawFileSource& source, const glm::ivec3& dims, ValueType type,
                  std::optional<double> missingMarker)
         : source_(source), dims_(dims), type_(type) {
         // Compared in the file's own precision: a float32 file stores the marker 1e35 as float(1e35).
-        nanIsMissing_ = missingMarker && std::isnan(*missingMarker);
-        markerIsSet_ = missingMarker && !nanIsMissing_;
+        // NaN is missing whether or not the manifest declares it (a "NaN" marker only says so).
+        markerIsSet_ = missingMarker && !std::isnan(*missingMarker);
         marker_ = markerIsSet_ ? float(*missingMarker) : 0.0f;
     }
 
     // The value at `bytes`, the file's value number `index`; appended to `values` where `keep`.
     void decode(const std::uint8_t* bytes, std::size_t index, bool keep, std::vector<float>& values, std::size_t& next) {
         const float value = float(decodeValue(bytes, type_, ByteOrder::Little));
-        if ((markerIsSet_ && value == marker_) || (nanIsMissing_ && std::isnan(value))) {
+        if ((markerIsSet_ && value == marker_) || std::isnan(value)) {
             if (keep) values[next++] = missingDensity();
             return;
         }
-        if (!std::isfinite(value)) {
+        if (std::isinf(value)) {
             failFile(source_, "value file",
-                     std::string("holds a non-finite value (") + (std::isnan(value) ? "NaN" : "Inf") +
+                     std::string("holds a non-finite value (") + (value > 0 ? "Inf" : "-Inf") +
                          ") at voxel (x, y, z) = " + voxelText(index, dims_) +
-                         (std::isnan(value) ? " (declare \"missing_value\": \"NaN\" if NaN marks missing data)" : ""));
+                         ": only NaN (or the declared missing_value) marks missing data");
         }
         if (keep) values[next++] = value;
         lowest_ = std::min(lowest_, value);
@@ -118,7 +118,6 @@ private:
     const RawFileSource& source_;
     glm::ivec3 dims_;
     ValueType type_;
-    bool nanIsMissing_ = false;
     bool markerIsSet_ = false;
     float marker_ = 0.0f;
     float lowest_ = std::numeric_limits<float>::infinity();

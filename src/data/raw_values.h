@@ -38,8 +38,8 @@ enum class BlockReach {
 };
 
 // Reads dims.x * dims.y * dims.z little-endian values of `type`; the file size must match exactly.
-// A value equal to `missingMarker` is missing (a NaN marker makes NaN values missing); any other
-// non-finite float32 value is an error. With `kept`, only that block's values are kept (x fastest
+// A value equal to `missingMarker` is missing, and so is NaN in float data; an infinity is an
+// error. With `kept`, only that block's values are kept (x fastest
 // within it), and memory holds the block alone; `reach` says whether the whole file is still read
 // past in chunks, so that the range and the checks cover every value as without `kept`, or only
 // the block's rows are read.

@@ -72,7 +72,7 @@ case_hang_render() {
 # Errors the readers throw come back word for word, and good files read as before.
 case_errors_and_series_unchanged() {
     "$SAMPLES_WRITER" "$SCRATCH/samples" || fail "write_reader_samples failed"
-    for file in ocean.nc classic.nc volume.nrrd bold.nii.gz nan.nc int64.nc; do
+    for file in ocean.nc classic.nc volume.nrrd bold.nii.gz nan.nc inf.nc int64.nc; do
         run_tstyles TSTYLES_READ_IN_PROCESS=1 -- info "$SCRATCH/samples/$file" --var temp
         cp "$OUT_FILE" "$SCRATCH/in_process.out"
         cp "$ERR_FILE" "$SCRATCH/in_process.err"

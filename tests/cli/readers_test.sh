@@ -9,7 +9,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/cli_test_lib.sh"
 SAMPLES_WRITER="$(dirname "$TSTYLES")/tests/write_reader_samples"
 GENERATOR="$(dirname "$TSTYLES")/tools/generate_warped_box"
 
-# The files write_reader_samples.cpp describes: ocean.nc, notime.nc, nan.nc, int64.nc, volume.nrrd,
+# The files write_reader_samples.cpp describes: ocean.nc, notime.nc, nan.nc, inf.nc, int64.nc, volume.nrrd,
 # bold.nii.gz, QCLOUDf01.bin .. QCLOUDf03.bin.
 samples() {
     S="$SCRATCH/samples"
@@ -323,16 +323,25 @@ case_time_dim_option() {
     expect_stdout_contains "rectilinear 4x3x2"
 }
 
-case_nan_data() {
+# NaN that no attribute declares is missing data (as napari, Fiji and ParaView read it): counted by
+# `info`, out of the range, transparent in the picture. Inf is never a value.
+case_nan_is_missing() {
     samples
     run_tstyles -- info "$S/nan.nc"
-    expect_exit 2
-    expect_error_line "$S/nan.nc" "" "NaN"
+    expect_exit 0
+    expect_stdout_contains "Missing values: 1 voxels without data (4.2 %)"
+    expect_stdout_contains "Value range: [0, 23]"
     write_scene "$SCRATCH/scene.json" "$S/nan.nc" "$STF"
-    run_tstyles -- render "$SCRATCH/scene.json" -o "$SCRATCH/out.png" --backend osmesa
+    run_tstyles -- render "$SCRATCH/scene.json" -o "$SCRATCH/out.png" --backend osmesa --width 64 --height 64
+    expect_exit 0
+    run_tstyles -- info "$S/inf.nc"
     expect_exit 2
-    expect_error_line "$S/nan.nc" "" "NaN"
-    expect_no_output "$SCRATCH/out.png"
+    expect_error_line "$S/inf.nc" "" "time-step 0 holds Inf at voxel (x, y, z) = (1, 0, 1): only NaN"
+    write_scene "$SCRATCH/scene.json" "$S/inf.nc" "$STF"
+    run_tstyles -- render "$SCRATCH/scene.json" -o "$SCRATCH/inf.png" --backend osmesa
+    expect_exit 2
+    expect_error_line "$S/inf.nc" "" "Inf"
+    expect_no_output "$SCRATCH/inf.png"
 }
 
 case_unsupported_type() {

@@ -102,18 +102,23 @@ EOF
     printf "$second_step" >"$folder/t01.raw"
 }
 
-case_dataset_nan() {
-    local zero='\000\000\000\000' one='\000\000\200\077' nan='\000\000\300\177'
-    # First the same dataset without the NaN, to show that the hand-written files are valid.
+# An infinity is never a value; NaN in the same place is a voxel without data and renders.
+case_dataset_inf() {
+    local zero='\000\000\000\000' one='\000\000\200\077' inf='\000\000\200\177' nan='\000\000\300\177'
+    # First the same dataset without the Inf, to show that the hand-written files are valid.
     write_float_dataset "$SCRATCH/valid" "$one$zero$one$zero$one$zero$one$zero"
     run_tstyles -- info "$SCRATCH/valid/series.json"
     expect_exit 0
     expect_stdout_contains "float32"
     # Voxel index 5 is (x, y, z) = (1, 0, 1): index = x + 2 * (y + 2 * z).
-    write_float_dataset "$SCRATCH/nan" "$one$zero$one$zero$one$nan$one$zero"
-    write_scene "$SCRATCH/scene.json" "$SCRATCH/nan/series.json"
-    render_fails "$SCRATCH/scene.json" "$SCRATCH/nan/series.json" "time_steps[1].values.file" "NaN"
+    write_float_dataset "$SCRATCH/inf" "$one$zero$one$zero$one$inf$one$zero"
+    write_scene "$SCRATCH/scene.json" "$SCRATCH/inf/series.json"
+    render_fails "$SCRATCH/scene.json" "$SCRATCH/inf/series.json" "time_steps[1].values.file" "non-finite value (Inf)"
     expect_stderr_contains "(x, y, z) = (1, 0, 1)"
+    write_float_dataset "$SCRATCH/nan" "$one$zero$one$zero$one$nan$one$zero"
+    run_tstyles -- info "$SCRATCH/nan/series.json"
+    expect_exit 0
+    expect_stdout_contains "Missing values: 1 voxels without data (6.2 %)"
 }
 
 # A beam grid whose azimuths 0 and 0.0001 degrees lie closer than the renderer's loop-free beam

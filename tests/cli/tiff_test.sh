@@ -88,6 +88,25 @@ case_info_ome() {
     expect_stdout_contains "Value range: [-7, 172.5]"
 }
 
+# NaN over land in a float OME-TIFF is missing data: counted, out of the range, NaN in what convert
+# writes, transparent in the picture (TIFF has no missing-value marker). Sizes in km and m.
+case_nan_over_land() {
+    samples
+    run_tstyles -- info "$S/ocean.ome.tif"
+    expect_exit 0
+    expect_stdout_contains "Missing values: 288 voxels without data (30.0 %)"
+    expect_stdout_contains "Value range: [14.15, 20.65]"
+    expect_stdout_contains "(2, 2, 0.005)"  # 5 m between slices, in the x size's kilometres
+    run_tstyles -- convert "$S/ocean.ome.tif" -o "$SCRATCH/out"
+    expect_exit 0
+    expect_float_at "$SCRATCH/out/t00.raw" 0 nan
+    expect_float_at "$SCRATCH/out/t00.raw" 2 nan
+    expect_float_at "$SCRATCH/out/t00.raw" 3 20.15
+    expect_float_at "$SCRATCH/out/t02.raw" 319 14.65
+    run_tstyles -- render "$S/ocean.ome.tif" -o "$SCRATCH/ocean.png" --backend osmesa --width 64 --height 64
+    expect_exit 0
+}
+
 # Three int16 channels as planes; z in nanometres becomes micrometres; times from the Planes.
 case_ome_channel_delta_t() {
     samples

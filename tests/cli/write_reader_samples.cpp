@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -77,8 +78,9 @@ void writeNoTime(const std::filesystem::path& file) {
     check(nc_close(nc), "close");
 }
 
-// temp(time 2, z 2, y 2, x 3) float with a NaN at index 7 that no attribute declares missing.
-void writeNaN(const std::filesystem::path& file) {
+// temp(time 2, z 2, y 2, x 3) float holding its index, but `odd` at index 7, which no attribute
+// declares missing: NaN there is missing data, Inf is an error.
+void writeWithOddValue(const std::filesystem::path& file, float odd) {
     int nc = 0, dims[4] = {}, variable = 0;
     check(nc_create(file.c_str(), NC_CLOBBER, &nc), file.string());
     const char* names[4] = {"time", "z", "y", "x"};
@@ -86,8 +88,9 @@ void writeNaN(const std::filesystem::path& file) {
     for (int axis = 0; axis < 4; ++axis) check(nc_def_dim(nc, names[axis], lengths[axis], &dims[axis]), names[axis]);
     check(nc_def_var(nc, "temp", NC_FLOAT, 4, dims, &variable), "temp");
     check(nc_enddef(nc), "enddef");
-    std::vector<float> values(24, 1.0f);
-    values[7] = std::nanf("");
+    std::vector<float> values(24);
+    for (std::size_t index = 0; index < values.size(); ++index) values[index] = float(index);
+    values[7] = odd;
     check(nc_put_var_float(nc, variable, values.data()), "values");
     check(nc_close(nc), "close");
 }
@@ -229,7 +232,8 @@ int main(int argc, char** argv) {
         std::filesystem::create_directories(folder);
         writeOcean(folder / "ocean.nc");
         writeNoTime(folder / "notime.nc");
-        writeNaN(folder / "nan.nc");
+        writeWithOddValue(folder / "nan.nc", std::nanf(""));
+        writeWithOddValue(folder / "inf.nc", std::numeric_limits<float>::infinity());
         writeInt64(folder / "int64.nc");
         writeNrrd(folder / "volume.nrrd");
         writeNifti(folder / "bold.nii.gz");

@@ -50,6 +50,16 @@ def slice_values(z):
     return (z * 1.5 + y * 0.25 + x * 0.125).astype(np.float32)
 
 
+def ocean_values():
+    """Sea temperature, TZYX float32 (3 x 4 x 8 x 10): 20 - 2 z + 0.1 t + 0.05 x degrees C, and NaN
+    over land (x < 3 at every depth and time): 288 of 960 voxels, as a resampled float OME-TIFF
+    carries them."""
+    t, z, y, x = np.indices((3, 4, 8, 10))
+    values = (20.0 - 2.0 * z + 0.1 * t + 0.05 * x).astype(np.float32)
+    values[x < 3] = np.nan
+    return values
+
+
 def rgb_values():
     z, y, x, s = np.indices((4, 5, 6, 3))
     return (z * 20 + y * 5 + x + s * 60).astype(np.uint8)
@@ -70,6 +80,9 @@ def write_good(folder):
     tifffile.imwrite(os.path.join(folder, "tiled.ome.tif"), tiled_values(), tile=(16, 16), compression="zlib",
                      predictor=True, metadata={"axes": "TZYX"})
     tifffile.imwrite(os.path.join(folder, "plain.tif"), plain_values(), photometric="minisblack", metadata=None)
+    tifffile.imwrite(os.path.join(folder, "ocean.ome.tif"), ocean_values(),
+                     metadata={"axes": "TZYX", "PhysicalSizeX": 2.0, "PhysicalSizeXUnit": "km", "PhysicalSizeY": 2.0,
+                               "PhysicalSizeYUnit": "km", "PhysicalSizeZ": 5.0, "PhysicalSizeZUnit": "m"})
     os.makedirs(os.path.join(folder, "steps"))
     for step, name in enumerate(("t1.tif", "t2.tif", "t10.tif")):
         tifffile.imwrite(os.path.join(folder, "steps", name), folder_step_values(step), photometric="minisblack",

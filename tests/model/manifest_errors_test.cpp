@@ -180,14 +180,14 @@ TEST(ManifestErrors, ValueFileSizeMustMatchDimsAndType) {
 TEST(ManifestErrors, NonFiniteFloatNamesTheFirstBadVoxel) {
     json manifest = baseManifest();
     manifest["time_steps"][0]["values"]["type"] = "float32";
-    const auto folder = writeBaseDataset("nan", manifest);
+    const auto folder = writeBaseDataset("inf", manifest);
     std::vector<float> values(tstyles_test::kBaseVoxels, 1.0f);
     // Index 7 in a 2 x 3 x 4 grid is x = 1, y = 0, z = 1; the later Inf must not be the one named.
-    values[7] = std::numeric_limits<float>::quiet_NaN();
+    values[7] = -std::numeric_limits<float>::infinity();
     values[20] = std::numeric_limits<float>::infinity();
     tstyles_test::writeBytes(folder / "t00.raw", tstyles_test::float32Bytes(values));
     expectMentions(loadError(folder / "series.json"), {"series.json", "time_steps[0].values.file", "t00.raw",
-                                                       "time-step 0", "NaN", "(1, 0, 1)"});
+                                                       "time-step 0", "(-Inf)", "(1, 0, 1)", "only NaN"});
 
     values[7] = 1.0f;
     tstyles_test::writeBytes(folder / "t00.raw", tstyles_test::float32Bytes(values));

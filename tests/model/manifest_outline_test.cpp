@@ -3,6 +3,7 @@
 // blocks with.
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <optional>
 #include <filesystem>
 #include <string>
@@ -101,9 +102,9 @@ TEST(ManifestBlockReading, WithoutAValueRangeABadValueOutsideTheBlockIsStillAnEr
     json manifest = baseManifest();
     manifest.erase("value_range");
     manifest["time_steps"][1]["values"]["type"] = "float32";
-    const auto folder = writeBaseDataset("block_reading_nan", manifest);
+    const auto folder = writeBaseDataset("block_reading_inf", manifest);
     std::vector<float> values(tstyles_test::kBaseVoxels, 1.0f);
-    values[0] = std::nanf("");  // node (0, 0, 0), outside the block
+    values[0] = -std::numeric_limits<float>::infinity();  // node (0, 0, 0), outside the block
     std::vector<std::uint8_t> bytes(values.size() * sizeof(float));
     std::memcpy(bytes.data(), values.data(), bytes.size());
     tstyles_test::writeBytes(folder / "t01.raw", bytes);
@@ -115,9 +116,9 @@ TEST(ManifestBlockReading, WithoutAValueRangeABadValueOutsideTheBlockIsStillAnEr
     limits.keptVoxels = 8;
     try {
         tstyles::loadSeries(folder / "series.json", limits);
-        FAIL() << "a NaN outside the block was accepted";
+        FAIL() << "an infinity outside the block was accepted";
     } catch (const tstyles::InputError& error) {
-        expectMentions(error.what(), {"t01.raw", "NaN", "(0, 0, 0)"});
+        expectMentions(error.what(), {"t01.raw", "-Inf", "(0, 0, 0)"});
     }
 }
 

@@ -223,16 +223,27 @@ TEST(Plot3D, SolutionDimsMustMatchTheGrid) {
     EXPECT_NE(message.find("has 9x7x5 in that block"), std::string::npos) << message;
 }
 
-TEST(Plot3D, NonFiniteValuesAreReported) {
+// NaN in any of a node's five values leaves the node without data, as IBLANK 0 does; an infinity
+// is an error naming the node.
+TEST(Plot3D, NaNIsMissingAndInfinitiesAreReported) {
     Plot3DOptions options = writeDataset("nan", Flavour{}, {0.0});
     std::vector<std::uint8_t> bytes = solutionBytes(Flavour{}, testBlocks(false), 0.0);
     // The third array (y-momentum) of node 7: after 3 dims, 4 reals and 2 * 315 + 7 reals.
     const std::size_t offset = 12 + 16 + (2 * 315 + 7) * 4;
-    const auto nan = std::bit_cast<std::uint32_t>(std::numeric_limits<float>::quiet_NaN());
-    for (int index = 0; index < 4; ++index) bytes[offset + std::size_t(index)] = std::uint8_t(nan >> (8 * index));
-    tstyles_test::writeBytes(options.solutionFiles[0], bytes);
+    const auto writeAtNode7 = [&](float value) {
+        const auto bits = std::bit_cast<std::uint32_t>(value);
+        for (int index = 0; index < 4; ++index) bytes[offset + std::size_t(index)] = std::uint8_t(bits >> (8 * index));
+        tstyles_test::writeBytes(options.solutionFiles[0], bytes);
+    };
+    writeAtNode7(std::numeric_limits<float>::quiet_NaN());
+    const Series series = readPlot3D(options);
+    EXPECT_TRUE(isMissing(series.steps[0].density[7]));
+    EXPECT_FALSE(isMissing(series.steps[0].density[6]));
+    EXPECT_FALSE(isMissing(series.steps[0].density[8]));
+
+    writeAtNode7(std::numeric_limits<float>::infinity());
     const std::string message = readError(options);
-    EXPECT_NE(message.find("flow0.q: non-finite y-momentum at node (7, 0, 0) of block 0"), std::string::npos)
+    EXPECT_NE(message.find("flow0.q: infinite y-momentum at node (7, 0, 0) of block 0"), std::string::npos)
         << message;
 }
 

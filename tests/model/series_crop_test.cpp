@@ -207,7 +207,7 @@ TEST(SeriesCrop, AGivenValueRangeReadsOnlyTheBlocksRows) {
     for (int z = 0; z < 4; ++z)
         for (int y = 0; y < 4; ++y)
             for (int x = 0; x < 16; ++x) values.push_back(float(x));
-    values[15] = std::numeric_limits<float>::quiet_NaN();  // node (15, 0, 0)
+    values[15] = std::numeric_limits<float>::infinity();  // node (15, 0, 0)
     step.bytes.resize(values.size() * sizeof(float));
     std::memcpy(step.bytes.data(), values.data(), step.bytes.size());
     raw.steps.push_back(std::move(step));
@@ -226,14 +226,14 @@ TEST(SeriesCrop, AGivenValueRangeReadsOnlyTheBlocksRows) {
     EXPECT_EQ(block.valueRange, (std::array<double, 2>{0.0, 15.0}));
     try {
         readBlock(Bounds{{12.0, 0.0, 0.0}, {15.0, 3.0, 3.0}});
-        ADD_FAILURE() << "the block that holds the NaN read it";
+        ADD_FAILURE() << "the block that holds the Inf read it";
     } catch (const InputError& error) {
-        EXPECT_NE(std::string(error.what()).find("non-finite value (NaN) at voxel (x, y, z) = (15, 0, 0)"),
+        EXPECT_NE(std::string(error.what()).find("non-finite value (Inf) at voxel (x, y, z) = (15, 0, 0)"),
                   std::string::npos)
             << error.what();
     }
 
-    // The same files without "value_range": the left block reads them through and finds the NaN.
+    // The same files without "value_range": the left block reads them through and finds the Inf.
     nlohmann::ordered_json manifest = nlohmann::ordered_json::parse(std::ifstream(folder / "series.json"));
     ASSERT_EQ(manifest.erase("value_range"), 1u);
     std::ofstream(folder / "series.json") << manifest.dump(2);

@@ -34,7 +34,8 @@ bool hasPlot3DGridExtension(const std::filesystem::path& path);
 
 // One time-step per solution file, all on the chosen block's grid (one shared StructuredGrid).
 // Times are the solution files' own time values when they increase, else 0, 1, 2, ... Nodes with
-// IBLANK 0 are missing data. Every problem is an InputError naming the file and what is wrong.
+// IBLANK 0, or NaN in any of their solution (or the function's) values, are missing data. Every
+// problem is an InputError naming the file and what is wrong.
 Series readPlot3D(const Plot3DOptions& options);
 
 }  // namespace tstyles

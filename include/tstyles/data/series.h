@@ -21,8 +21,8 @@ namespace tstyles {
 
 // A voxel without data (a fill value, land under a weather model's atmosphere): neither a density
 // nor zero. Readers store it as a quiet NaN in TimeStep::density; the renderer treats it as
-// transparent and leaves it out of every temporal compositor. NaN in a source file that does not
-// declare it as a missing-value marker is bad input, not missing data.
+// transparent and leaves it out of every temporal compositor. NaN in a source file's float data is
+// missing in every format, declared or not (as napari, Fiji and ParaView read it); Inf is bad input.
 inline float missingDensity() { return std::nanf(""); }
 inline bool isMissing(float density) { return std::isnan(density); }
 

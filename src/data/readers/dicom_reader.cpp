@@ -10,7 +10,7 @@
 #include "dicom_pixels.h"
 #include "dicom_series.h"
 #include "dicom_volumes.h"
-#include "finite_values.h"
+#include "infinite_values.h"
 #include "oriented_axes.h"
 #include "series_assembly.h"
 #include "tstyles/core/errors.h"
@@ -116,8 +116,7 @@ std::vector<float> readDicomStep(const DicomStepSource& source, std::size_t step
         }
         decodeDicomFrame(pixels, header, frame, values.data() + slice * sliceSize);
     }
-    requireFiniteValues(values, dims, source.volumes.steps[step].front().file, step,
-                        "a DICOM rescale must keep values finite");
+    refuseInfinities(values, dims, source.volumes.steps[step].front().file, step);
     if (source.mirrorX) mirrorAlongX(values, dims);
     return values;
 }

@@ -7,7 +7,7 @@
 
 #include "../value_decoding.h"
 #include "file_bytes.h"
-#include "finite_values.h"
+#include "infinite_values.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/core/input_limits.h"
 
@@ -126,8 +126,8 @@ SourceSeries openIsabel(const std::vector<std::filesystem::path>& paths, const s
         const auto bytes = readDataBytes(file.path, 0, count * 4, file.gzip ? DataEncoding::Gzip : DataEncoding::Raw,
                                          layout, TrailingData::Refused);
         std::vector<float> values = decodeValues(bytes.data(), count, ValueType::Float32, ByteOrder::Big);
-        // NaN or Inf was never a marker: only 1.0e35 is (and it is finite), so check first.
-        requireFiniteValues(values, gridDims, file.path, index, "only 1.0e35 marks missing data in these files");
+        // An infinity was never a marker (1.0e35 is, and it is finite); NaN is missing in every format.
+        refuseInfinities(values, gridDims, file.path, index);
         for (float& value : values)
             if (value >= kMissingThreshold) value = missingDensity();
         return values;

@@ -8,7 +8,7 @@
 #include <netcdf.h>
 
 #include "file_magic.h"
-#include "finite_values.h"
+#include "infinite_values.h"
 #include "netcdf_file.h"
 #include "series_assembly.h"
 #include "tstyles/core/errors.h"
@@ -204,7 +204,7 @@ SourceSeries openNetcdf(const std::filesystem::path& file, const ReadOptions& op
     }
     source.readStep = [nc, variable, timeDimension, dims, frames, packing](std::size_t index) {
         NetcdfVolume volume = nc->readVolume(variable, timeDimension, index, packing);
-        requireFiniteValues(volume.values, dims, nc->path(), index, "declare it with _FillValue or missing_value");
+        refuseInfinities(volume.values, dims, nc->path(), index);
         std::vector<float> values = std::move(volume.values);
         for (std::size_t voxel = 0; voxel < values.size(); ++voxel)
             if (volume.missing[voxel]) values[voxel] = missingDensity();

@@ -11,7 +11,7 @@
 #include <zlib.h>
 
 #include "../value_decoding.h"
-#include "finite_values.h"
+#include "infinite_values.h"
 #include "oriented_axes.h"
 #include "file_bytes.h"
 #include "series_assembly.h"
@@ -183,7 +183,7 @@ SourceSeries openNifti(const std::filesystem::path& file) {
             if (scaled) value = value * image->scl_slope + image->scl_inter;
             values[voxel] = float(value);
         }
-        requireFiniteValues(values, dims, dataFile, index, "NIfTI has no missing-value marker");
+        refuseInfinities(values, dims, dataFile, index);
         if (frame.mirrorX) mirrorAlongX(values, dims);
         return values;
     };

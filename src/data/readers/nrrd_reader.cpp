@@ -8,7 +8,7 @@
 #include <memory>
 #include <set>
 
-#include "finite_values.h"
+#include "infinite_values.h"
 #include "nrrd_header.h"
 #include "oriented_axes.h"
 #include "file_bytes.h"
@@ -224,7 +224,7 @@ SourceSeries openNrrd(const std::filesystem::path& file) {
                             whole->data() + (base + std::size_t(x) * sx + std::size_t(y) * sy + std::size_t(z) * sz) * valueBytes,
                             header.type, header.byteOrder));
         }
-        requireFiniteValues(values, dims, header.dataFile, index, "NRRD has no missing-value marker");
+        refuseInfinities(values, dims, header.dataFile, index);
         if (frame.mirrorX) mirrorAlongX(values, dims);
         return values;
     };

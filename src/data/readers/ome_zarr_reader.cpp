@@ -9,6 +9,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "infinite_values.h"
 #include "ome_multiscales.h"
 #include "series_assembly.h"
 #include "tstyles/core/errors.h"
@@ -205,16 +206,6 @@ void requireChunksWorthReading(const ZarrArray& array, const OmeLayout& layout, 
                             " values each, too many file look-ups; rechunk the store");
 }
 
-// NaN is the missing value where the fill value is NaN; infinities are never values.
-void requireValues(const std::vector<float>& values, const ZarrArray& array, std::size_t step) {
-    const bool nanIsMissing = std::isnan(array.fillValue);
-    for (std::size_t index = 0; index < values.size(); ++index)
-        if (std::isinf(values[index]) || (!nanIsMissing && std::isnan(values[index])))
-            throwInputError(array.metadataFile, "fill_value",
-                            "time-step " + std::to_string(step) + " holds " + (std::isnan(values[index]) ? "NaN" : "an infinity") +
-                                " at value " + std::to_string(index) + " (x fastest); only a NaN fill value makes NaN missing");
-}
-
 std::filesystem::path storeOf(const std::filesystem::path& input) {
     std::error_code error;
     if (std::filesystem::is_directory(input, error)) return input;
@@ -331,14 +322,14 @@ SourceSeries openOmeZarr(const std::filesystem::path& input, const ReadOptions& 
         source.steps.push_back(step);
     }
     auto shared = std::make_shared<const ZarrArray>(std::move(array));
-    source.readStep = [shared, layout, channel](std::size_t index) {
+    source.readStep = [shared, layout, channel, dims = grid.dims](std::size_t index) {
         ZarrVolumeSlice slice;
         slice.spaceDimensions = layout.space;
         slice.fixedIndex.assign(shared->shape.size(), 0);
         if (layout.time) slice.fixedIndex[*layout.time] = index;
         if (layout.channel) slice.fixedIndex[*layout.channel] = channel;
         std::vector<float> values = readZarrVolume(*shared, slice);
-        requireValues(values, *shared, index);
+        refuseInfinities(values, dims, shared->metadataFile, index);
         return values;
     };
     return source;

@@ -32,6 +32,9 @@ std::string normalizedLengthUnit(const std::string& unit) {
     if (lower == "pixel" || lower == "pixels" || lower == "none") return "";
     if (lower == "nanometer" || lower == "nanometre") return "nm";
     if (lower == "millimeter" || lower == "millimetre") return "mm";
+    if (lower == "centimeter" || lower == "centimetre") return "cm";
+    if (lower == "meter" || lower == "metre") return "m";
+    if (lower == "kilometer" || lower == "kilometre") return "km";
     if (lower == "å" || lower == "angstrom") return "A";
     return unit;
 }
@@ -39,7 +42,8 @@ std::string normalizedLengthUnit(const std::string& unit) {
 std::optional<double> micrometresPer(const std::string& unit) {
     static const std::map<std::string, double> lengths = {{"um", 1.0},    {"nm", 1e-3}, {"pm", 1e-6},
                                                           {"A", 1e-4},    {"mm", 1e3},  {"cm", 1e4},
-                                                          {"m", 1e6},     {"inch", 25400.0}};
+                                                          {"dm", 1e5},    {"m", 1e6},   {"km", 1e9},
+                                                          {"inch", 25400.0}};
     const auto found = lengths.find(unit);
     if (found == lengths.end()) return std::nullopt;
     return found->second;

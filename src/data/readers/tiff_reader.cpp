@@ -8,7 +8,7 @@
 #include <memory>
 
 #include "file_magic.h"
-#include "finite_values.h"
+#include "infinite_values.h"
 #include "tiff_imagej.h"
 #include "tiff_ome.h"
 #include "tiff_pages.h"
@@ -142,8 +142,7 @@ SourceSeries openTiff(const std::vector<std::filesystem::path>& inputs, const Re
     }
     source.readStep = [layout, dims, cap](std::size_t index) {
         std::vector<float> values = readVolume(*layout, index, cap);
-        requireFiniteValues(values, dims, layout->files[layout->planes[index * layout->slices].file], index,
-                            "TIFF has no missing-value marker");
+        refuseInfinities(values, dims, layout->files[layout->planes[index * layout->slices].file], index);
         return values;
     };
     return source;

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <memory>
 
-#include "finite_values.h"
+#include "infinite_values.h"
 #include "oriented_axes.h"
 #include "vtk_collection.h"
 #include "vtk_dataset.h"
@@ -192,7 +192,7 @@ SourceSeries openVtkSeries(const std::vector<std::filesystem::path>& files, cons
         const auto file = loadVtkXmlFile(source.file, false, cap);
         const VtkDataset dataset = describeVtkDataset(*file);
         std::vector<float> values = readVtkPointArray(*file, dataset, name, cap);
-        requireFiniteValues(values, dataset.whole.dims(), source.file, index, "VTK XML has no missing-value marker");
+        refuseInfinities(values, dataset.whole.dims(), source.file, index);
         if (source.mirrorX) mirrorAlongX(values, dataset.whole.dims());
         return values;
     };
