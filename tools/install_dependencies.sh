@@ -14,8 +14,8 @@ packages=(
   pybind11-dev python3-dev python3-numpy python3-xarray python3-netcdf4 python3-pytest
   libopenmpi-dev openmpi-bin
   libtiff-dev libpugixml-dev libblosc-dev libzstd-dev liblz4-dev liblzma-dev libgdcm-dev
-  python3-tifffile python3-zarr python3-pydicom python3-vtk9
-  desktop-file-utils shared-mime-info libxml2-utils dpkg-dev libx11-dev
+  python3-tifffile python3-zarr python3-pydicom python3-vtk9 dcmtk
+  desktop-file-utils shared-mime-info libxml2-utils dpkg-dev lintian libx11-dev
   python3-skbuild python3-build python3-venv python3-pip python3-wheel
 )
 

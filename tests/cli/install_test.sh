@@ -205,7 +205,8 @@ case_deb_package_contents() {
     [ -f "$deb" ] || fail "no tstyles_*.deb in $SCRATCH/deb"
     dpkg-deb -c "$deb" | awk '{print $6}' >"$SCRATCH/contents.txt"
     local path
-    for path in ./usr/bin/tstyles ./usr/share/man/man1/tstyles.1 ./usr/share/applications/tstyles.desktop \
+    for path in ./usr/bin/tstyles ./usr/share/man/man1/tstyles.1.gz ./usr/share/applications/tstyles.desktop \
+        ./usr/share/doc/tstyles/copyright ./usr/share/doc/tstyles/changelog.gz \
         ./usr/share/mime/packages/tstyles.xml ./usr/share/icons/hicolor/48x48/apps/tstyles.png \
         ./usr/share/tstyles/styles/styles.json ./usr/share/tstyles/scenes/figure1-styled-focus-step3.json \
         ./usr/share/tstyles/superellipsoid/series.json ./usr/lib/python3/dist-packages/tstyles/__init__.py; do
@@ -224,6 +225,26 @@ case_deb_package_contents() {
     local depends
     depends=$(dpkg-deb -f "$deb" Depends)
     case "$depends" in *fonts-dejavu-core*libegl1*) ;; *) fail "Depends lacks the font or libegl1: $depends" ;; esac
+}
+
+# Debian's own checker finds nothing to say of the .deb: binaries stripped, the man page
+# compressed, a machine-readable copyright, a changelog, a maintainer address of the proper form.
+# Every tag lintian prints (error, warning, info, pedantic) fails the case.
+case_deb_passes_lintian() {
+    command -v lintian >/dev/null || fail "lintian missing (tools/install_dependencies.sh installs it)"
+    "${CPACK_COMMAND:-cpack}" --config "$BUILD_DIR/CPackConfig.cmake" -G DEB -B "$SCRATCH/deb" \
+        >"$SCRATCH/cpack.log" 2>&1 || fail "cpack failed: $(tail -5 "$SCRATCH/cpack.log")"
+    local deb
+    deb=$(find "$SCRATCH/deb" -maxdepth 1 -name 'tstyles_*_*.deb')
+    [ -f "$deb" ] || fail "no tstyles_*.deb in $SCRATCH/deb"
+    lintian --display-level ">=pedantic" --tag-display-limit 0 "$deb" >"$SCRATCH/lintian.txt" 2>&1
+    # lintian warns that it runs as root (CI does); that is about the run, not the package.
+    if grep -E '^[EWIPX]: ' "$SCRATCH/lintian.txt" >"$SCRATCH/tags.txt"; then
+        fail "lintian found $(wc -l <"$SCRATCH/tags.txt") tag(s): $(head -5 "$SCRATCH/tags.txt")"
+    fi
+    # And the package is what lintian read: its maintainer has a name and an address.
+    dpkg-deb -f "$deb" Maintainer | grep -qE '^[^<>]+ <[^@<> ]+@[^@<> ]+\.[a-z]+>$' ||
+        fail "the Maintainer field is not 'Name <address>': $(dpkg-deb -f "$deb" Maintainer)"
 }
 
 "case_$CASE"

@@ -27,6 +27,12 @@ file(GLOB TSTYLES_INSTALLED_SCENES CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/data/sc
      ${CMAKE_SOURCE_DIR}/data/scenes/warped-box-*.json)
 install(FILES ${TSTYLES_INSTALLED_SCENES} DESTINATION ${TSTYLES_INSTALL_DATA_DIR}/scenes)
 
+set(TSTYLES_PACKAGING_DIR ${CMAKE_BINARY_DIR}/packaging)
+# Who answers for the package: the .deb's Maintainer, the changelog's signature and the copyright's
+# contact. A packager who builds their own sets theirs.
+set(TSTYLES_MAINTAINER "Temporal Styles developers <developers@temporal-styles.org>"
+    CACHE STRING "The package maintainer, as \"Name <address>\"")
+
 # tstyles.1 from the program's own options (the hidden `tstyles manual-page`), so it never
 # disagrees with --help; tests/cli/install_test.sh compares the two.
 set(TSTYLES_MAN_PAGE ${CMAKE_BINARY_DIR}/man/tstyles.1)
@@ -36,15 +42,37 @@ add_custom_command(OUTPUT ${TSTYLES_MAN_PAGE}
   DEPENDS tstyles
   COMMENT "Writing the man page tstyles.1 from tstyles --help"
   VERBATIM)
-add_custom_target(tstyles_manual_page ALL DEPENDS ${TSTYLES_MAN_PAGE})
-install(FILES ${TSTYLES_MAN_PAGE} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
+# Installed compressed, as Debian's policy asks (gzip -9n: no name or time stamp, so the same page
+# gives the same bytes).
+set(TSTYLES_MAN_PAGE_GZ ${TSTYLES_MAN_PAGE}.gz)
+add_custom_command(OUTPUT ${TSTYLES_MAN_PAGE_GZ}
+  COMMAND gzip -9 -n -f -k ${TSTYLES_MAN_PAGE}
+  DEPENDS ${TSTYLES_MAN_PAGE}
+  COMMENT "Compressing the man page"
+  VERBATIM)
+add_custom_target(tstyles_manual_page ALL DEPENDS ${TSTYLES_MAN_PAGE} ${TSTYLES_MAN_PAGE_GZ})
+install(FILES ${TSTYLES_MAN_PAGE_GZ} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
+
+# The package's documents where Debian looks for them: the copyright in the machine-readable
+# format (the licence is the MIT, "Expat" in Debian's words) and the changelog of this version,
+# compressed (tools/packaging/; the changelog's entry takes the project's version).
+set(TSTYLES_DOC_DIR ${CMAKE_INSTALL_DATADIR}/doc/tstyles)
+configure_file(${CMAKE_SOURCE_DIR}/tools/packaging/changelog.in ${TSTYLES_PACKAGING_DIR}/changelog @ONLY)
+configure_file(${CMAKE_SOURCE_DIR}/tools/packaging/copyright.in ${TSTYLES_PACKAGING_DIR}/copyright @ONLY)
+add_custom_command(OUTPUT ${TSTYLES_PACKAGING_DIR}/changelog.gz
+  COMMAND gzip -9 -n -f -k ${TSTYLES_PACKAGING_DIR}/changelog
+  DEPENDS ${TSTYLES_PACKAGING_DIR}/changelog
+  COMMENT "Compressing the package's changelog"
+  VERBATIM)
+add_custom_target(tstyles_changelog ALL DEPENDS ${TSTYLES_PACKAGING_DIR}/changelog.gz)
+install(FILES ${TSTYLES_PACKAGING_DIR}/changelog.gz ${TSTYLES_PACKAGING_DIR}/copyright
+        DESTINATION ${TSTYLES_DOC_DIR})
 
 # The desktop: the applications menu entry and the MIME types for the files no shared-mime-info
 # type covers, written from the format table by the hidden `tstyles packaging-file` (so that every
 # format the program reads is offered for its files; tstyles/data/format_listing.h), with the
 # package's description (tools/cmake/Packaging.cmake); and the icon (tools/packaging/icons, drawn by
 # tools/packaging/make_icons.sh from a rendered scene).
-set(TSTYLES_PACKAGING_DIR ${CMAKE_BINARY_DIR}/packaging)
 set(TSTYLES_DESKTOP_ENTRY ${TSTYLES_PACKAGING_DIR}/tstyles.desktop)
 set(TSTYLES_MIME_PACKAGE ${TSTYLES_PACKAGING_DIR}/tstyles.xml)
 set(TSTYLES_PACKAGE_DESCRIPTION ${TSTYLES_PACKAGING_DIR}/description.txt)

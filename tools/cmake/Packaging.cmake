@@ -14,7 +14,10 @@ configure_file(${CMAKE_SOURCE_DIR}/tools/packaging/cpack_description.cmake.in
 set(CPACK_PROJECT_CONFIG_FILE ${CMAKE_BINARY_DIR}/packaging/cpack_description.cmake)
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
-set(CPACK_DEBIAN_PACKAGE_MAINTAINER "Temporal Styles developers <tstyles@invalid>")
+set(CPACK_DEBIAN_PACKAGE_MAINTAINER "${TSTYLES_MAINTAINER}")  # tools/cmake/Install.cmake
+# Debian installs binaries stripped as dh_strip strips them (the build folder keeps the symbols):
+# run on the staged files before they are packed.
+set(CPACK_PRE_BUILD_SCRIPTS ${CMAKE_SOURCE_DIR}/tools/packaging/strip_binaries.cmake)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # Loaded by name, so dpkg-shlibdeps cannot see them: the legend font (src/annotate/font.cpp) and
