@@ -55,9 +55,12 @@ std::vector<ReaderOptionLine> buildLines() {
                      "axis), from 0; `info` says which", true, false,
                      [](ReadOptions& o, const auto& t, const auto&) { o.channel = std::stoi(lastGiven(t)); },
                      [](const ReadOptions& o) { return o.channel.has_value(); }});
-    lines.push_back({"series", "--series", "series", Kind::Text, "N|UID", 0, 0, false, {}, "the one with the most frames",
+    lines.push_back({"series", "--series", "series", Kind::Text, "N|N,M,...|all|UID", 0, 0, false, {},
+                     "the most frames, or phases",
                      "DICOM: which series of the folder, by its number in `tstyles info`'s list (from 1) or its "
-                     "SeriesInstanceUID (default: the one with the most frames)",
+                     "SeriesInstanceUID; several numbers (2,3,4) or all read those series as the time-steps of one "
+                     "(multi-phase CT, DCE-MR per phase). Default: the series with the most frames, or phases of "
+                     "one study where they hold more",
                      true, false, [](ReadOptions& o, const auto& t, const auto&) { o.seriesChoice = lastGiven(t); },
                      [](const ReadOptions& o) { return !o.seriesChoice.empty(); }});
     lines.push_back({"axes", "--axes", "axes", Kind::Text, "TZYX|ZTYX", 0, 0, false, {}, "TZYX",

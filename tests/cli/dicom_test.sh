@@ -68,7 +68,7 @@ case_series_choice() {
     expect_stdout_contains "Time-steps: 4"
     run_tstyles -- info "$S/cine" --series 3
     expect_exit 2
-    expect_error_line "$S/cine" "--series" "names no series here: give a number from 1 to 2 or a SeriesInstanceUID: 1 (UID 1.2.826.0.1.3680043.10.1187.1); 2 (UID 1.2.826.0.1.3680043.10.1187.5)"
+    expect_error_line "$S/cine" "--series" "names no series here: give a number from 1 to 2, numbers separated by commas, all, or a SeriesInstanceUID: 1 (UID 1.2.826.0.1.3680043.10.1187.1); 2 (UID 1.2.826.0.1.3680043.10.1187.5)"
 }
 
 case_list_of_files() {
@@ -273,6 +273,148 @@ case_series_option_elsewhere() {
     run_tstyles -- info "$DATASET" --series 1
     expect_exit 2
     expect_error_line "$DATASET" "--series"
+}
+
+# A multi-phase CT, one series per phase (dicom_samples.py write_phases): by default the three
+# phases are read as three time-steps in acquisition order (series 3, 5, 4: 0, 50 and 160 s); the
+# lung-kernel copy of the arterial phase and the scout are not phases. HU = phase_value.
+case_phases_default() {
+    samples phases
+    run_tstyles -- info "$S/phases"
+    expect_exit 0
+    expect_stdout_contains "series 3: UID 1.2.826.0.1.3680043.10.1187.15.3, number 3, \"arterial\", CT, 5 files (5 frames of 12 x 10) - taken (phases of one study: the same frame of reference, modality, grid and acquisition parameters, acquired at different times; --series 3 takes one)"
+    expect_stdout_contains "series 5: UID 1.2.826.0.1.3680043.10.1187.15.5, number 5, \"portal venous\", CT, 5 files (5 frames of 12 x 10) - taken"
+    if grep -q "arterial lung.* - taken" "$OUT_FILE"; then fail "the lung-kernel series was taken as a phase"; fi
+    expect_stdout_contains "Read: series 3,5,4 read as 3 time-steps in acquisition order, times in seconds from the first acquisition"
+    expect_stdout_contains "Time-steps: 3"
+    expect_stdout_contains "rectilinear 12x10x5"
+    expect_stdout_contains "Time: seconds"
+    grep -qE '^ +1 +50 s ' "$OUT_FILE" || fail "time-step 1 (portal venous) is not at 50 s"
+    grep -qE '^ +2 +160 s ' "$OUT_FILE" || fail "time-step 2 (delayed) is not at 160 s"
+    run_tstyles -- convert "$S/phases" -o "$SCRATCH/converted"
+    expect_exit 0
+    "$PYTHON" -c "
+import sys, numpy as np
+for phase in range(3):
+    values = np.fromfile(f'{sys.argv[1]}/t{phase:02d}.raw', '<f4').reshape(5, 10, 12)
+    z, y, x = np.indices(values.shape)
+    expected = 40 + 30 * phase + z * 5 + y * 2 + x - 12  # in the files' order (a half turn, no mirror)
+    assert np.array_equal(values, expected), (phase, np.abs(values - expected).max())
+" "$SCRATCH/converted" || fail "the converted phases differ from phase_value"
+}
+
+# Chosen by hand: any series on one grid stack (2,3: the lung kernel with the arterial phase), a
+# series on another grid is refused by name, a number given twice is refused, one number is one series.
+case_phases_chosen() {
+    samples phases
+    run_tstyles -- info "$S/phases" --series 2,3
+    expect_exit 0
+    expect_stdout_contains "Time-steps: 2"
+    run_tstyles -- info "$S/phases" --series 4
+    expect_exit 0
+    expect_stdout_contains "Time-steps: 1"
+    expect_stdout_contains "delayed"
+    run_tstyles -- info "$S/phases" --series all
+    expect_exit 2
+    expect_error_line "$S/phases" "--series" "series 2 is 12 x 10 x 5 voxels, not 8 x 8 x 3 of series 1: series read as the time-steps of one must share one grid"
+    run_tstyles -- info "$S/phases" --series 3,3
+    expect_exit 2
+    expect_error_line "$S/phases" "--series" "\"3,3\" names series 3 twice"
+    run_tstyles -- info "$S/phases" --series 3,9
+    expect_exit 2
+    expect_error_line "$S/phases" "--series" "\"3,9\" has \"9\", no series here"
+}
+
+# RT Dose as a planning system exports it: one multi-frame file, no functional groups, the frames
+# placed along the slice normal by GridFrameOffsetVector and scaled to gray by DoseGridScaling
+# (dicom_samples.py: dose = (z * 100 + y * 10 + x) / 1000 Gy, 3 mm between frames). Offsets from
+# the first frame and offsets as z coordinates read the same volume.
+case_rt_dose_frame_offsets() {
+    samples rtdose rtdose_absolute
+    run_tstyles -- info "$S/rtdose/dose.dcm"
+    expect_exit 0
+    expect_stdout_contains "Read: frames placed by GridFrameOffsetVector (3004,000C), offsets from the first frame"
+    expect_stdout_contains "DoseGridScaling applied"
+    expect_stdout_contains "Time-steps: 1"
+    expect_stdout_contains "Value range: [0, 0.479]"
+    expect_stdout_contains "rectilinear 10x8x5"
+    expect_stdout_contains "(2, 2.5, 3)"
+    grep -v "^File:\|GridFrameOffsetVector" "$OUT_FILE" >"$SCRATCH/relative.txt"
+    run_tstyles -- info "$S/rtdose_absolute/dose.dcm"
+    expect_exit 0
+    expect_stdout_contains "Read: frames placed by GridFrameOffsetVector (3004,000C), z coordinates"
+    grep -v "^File:\|GridFrameOffsetVector" "$OUT_FILE" >"$SCRATCH/absolute.txt"
+    diff "$SCRATCH/relative.txt" "$SCRATCH/absolute.txt" >&2 || fail "absolute offsets read another volume"
+    # The values as written, in the file's order: LPS into RAS is a half turn about z, not a mirror,
+    # so the turn is in the placement and the values keep their order.
+    run_tstyles -- convert "$S/rtdose/dose.dcm" -o "$SCRATCH/converted"
+    expect_exit 0
+    "$PYTHON" -c "
+import sys, numpy as np
+values = np.fromfile(sys.argv[1], '<f4').reshape(5, 8, 10)
+z, y, x = np.indices(values.shape)
+expected = (z * 100 + y * 10 + x) / 1000.0
+assert np.allclose(values, expected, rtol=0, atol=1e-6), np.abs(values - expected).max()
+" "$SCRATCH/converted/t00.raw" || fail "the converted dose differs from (z * 100 + y * 10 + x) / 1000"
+}
+
+# Offsets that are neither from the first frame (0 first) nor the z coordinates of an axial grid.
+case_rt_dose_offsets_refused() {
+    samples rtdose_oblique_absolute
+    run_tstyles -- info "$S/rtdose_oblique/dose.dcm"
+    expect_exit 2
+    expect_error_line "$S/rtdose_oblique/dose.dcm" "(3004,000C) GridFrameOffsetVector" "starts at 40"
+}
+
+# A CD export (DCMTK's dcmmkdir over the cine and the CT), every name then lower-cased as a Linux
+# mount of an ISO 9660 disc shows them: $CD holds it.
+cd_export() {
+    command -v dcmmkdir >/dev/null || fail "dcmmkdir missing (dcmtk; tools/install_dependencies.sh installs it)"
+    samples cine ct
+    CD="$SCRATCH/cd"
+    mkdir -p "$CD/CT"
+    cp -r "$S/cine/." "$CD/"
+    rm "$CD/README"
+    mv "$CD/sub" "$CD/SUB"
+    local file name
+    for file in "$S"/ct/ct*.dcm; do
+        name=$(basename "$file" .dcm)
+        cp "$file" "$CD/CT/${name^^}"
+    done
+    (cd "$CD" && dcmmkdir --recurse +I +id . >"$SCRATCH/dcmmkdir.log" 2>&1) ||
+        fail "dcmmkdir failed: $(tail -3 "$SCRATCH/dcmmkdir.log")"
+    find "$CD" -depth -mindepth 1 | while read -r file; do
+        mv "$file" "$(dirname "$file")/$(basename "$file" | tr '[:upper:]' '[:lower:]')" 2>/dev/null || true
+    done
+    [ -f "$CD/dicomdir" ] || fail "no dicomdir after lower-casing"
+}
+
+# Choosing the DICOMDIR reads the series it indexes, as choosing the folder does.
+case_dicomdir_cd_export() {
+    cd_export
+    run_tstyles -- info "$CD"
+    expect_exit 0
+    grep -v "^File:" "$OUT_FILE" >"$SCRATCH/folder.txt"
+    run_tstyles -- info "$CD/dicomdir"
+    expect_exit 0
+    expect_stdout_contains "Read: DICOMDIR: 31 files referenced by its 36 directory records"
+    expect_stdout_contains "Time-steps: 4"
+    grep -v "^File:\|^Read: DICOMDIR" "$OUT_FILE" >"$SCRATCH/dicomdir.txt"
+    diff "$SCRATCH/folder.txt" "$SCRATCH/dicomdir.txt" >&2 || fail "the DICOMDIR reads otherwise than its folder"
+    run_tstyles -- info "$CD/dicomdir" --series 2
+    expect_exit 0
+    expect_stdout_contains "\"chest\", CT, 4 files (4 frames of 10 x 8) - taken (--series 2)"
+    expect_stdout_contains "Time-steps: 1"
+    expect_stdout_contains "rectilinear 10x8x4"
+}
+
+# A DICOMDIR copied without one of its files: the record that names it, exit 2.
+case_dicomdir_file_missing() {
+    cd_export
+    rm "$CD/ct/ct2"
+    run_tstyles -- info "$CD/dicomdir"
+    expect_exit 2
+    expect_error_line "$CD/dicomdir" "" "(0004,1500) ReferencedFileID: \"CT\\CT2\" names $CD/ct/CT2, which is not there"
 }
 
 case_view_folder() {

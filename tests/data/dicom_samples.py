@@ -60,6 +60,19 @@ def enhanced_stored(t, z, y, x):
     return t * 100 + z * 20 + y * 8 + x
 
 
+# The RT Dose: one multi-frame file of 5 axial frames of 10 x 8, 32-bit stored, placed by
+# GridFrameOffsetVector 3 mm apart; dose = stored x DoseGridScaling gray.
+RTDOSE_STORAGE = "1.2.840.10008.5.1.4.1.1.481.2"
+DOSE_DIMS = (10, 8, 5)
+DOSE_ORIGIN = (-20.0, -15.0, 40.0)    # LPS mm
+DOSE_OFFSETS = (0.0, 3.0, 6.0, 9.0, 12.0)
+DOSE_SCALING = 0.001
+
+
+def dose_stored(z, y, x):
+    return z * 100 + y * 10 + x
+
+
 def ds_text(value):
     return f"{value:.10g}"
 
@@ -191,6 +204,85 @@ def write_enhanced(path):
     save(ds, path)
 
 
+# The multi-phase CT: three contrast phases of one study, each its own series of 5 axial slices of
+# 12 x 10 (0.7 mm pixels, 2 mm apart), written out of acquisition order (SeriesNumber 3 arterial at
+# 12:00:20, 4 delayed at 12:03:00, 5 portal venous at 12:01:10); HU = stored - 1024 with stored =
+# 1024 + phase_value(phase, z, y, x). Beside them: a scout (SeriesNumber 1, another grid) and the
+# arterial phase again with a lung kernel (SeriesNumber 2: another ConvolutionKernel, never a phase).
+PHASE_DIMS = (12, 10, 5)
+PHASES = ((3, "arterial", "120020", 0), (4, "delayed", "120300", 2), (5, "portal venous", "120110", 1))
+
+
+def phase_value(phase, z, y, x):
+    """HU of phase 0 (arterial), 1 (portal venous), 2 (delayed): a liver that enhances late."""
+    return 40 + 30 * phase + z * 5 + y * 2 + x - 12
+
+
+def write_phases(folder):
+    frame_of_reference = UID_ROOT + "15.0"
+    nx, ny, nz = PHASE_DIMS
+    for number, description, time, phase in PHASES + ((2, "arterial lung", "120020", 0),):
+        uid = f"{UID_ROOT}15.{number}"
+        for z in range(nz):
+            ds = new_file(CT_IMAGE, f"{uid}.{z}", uid, number, description, "CT")
+            ds.FrameOfReferenceUID = frame_of_reference
+            ds.ImagePositionPatient = ["-4", "-3.5", ds_text(100.0 + 2.0 * z)]
+            ds.ImageOrientationPatient = ["1", "0", "0", "0", "1", "0"]
+            ds.PixelSpacing = ["0.7", "0.7"]
+            ds.SliceThickness = "2"
+            ds.KVP = "120"
+            ds.ConvolutionKernel = "B70f" if number == 2 else "B30f"
+            ds.ImageType = ["ORIGINAL", "PRIMARY", "AXIAL"]
+            ds.AcquisitionDate = "20240301"
+            ds.AcquisitionTime = f"{time}.{z}"  # a tenth of a second per slice
+            ds.InstanceNumber = z + 1
+            ds.RescaleIntercept = "-1024"
+            ds.RescaleSlope = "1"
+            set_pixels(ds, [[1024 + phase_value(phase, z, y, x) for x in range(nx)] for y in range(ny)])
+            save(ds, os.path.join(folder, f"s{number}", f"im{z}"))
+    uid = UID_ROOT + "15.1"
+    for z in range(3):
+        ds = new_file(CT_IMAGE, f"{uid}.{z}", uid, 1, "scout", "CT")
+        ds.FrameOfReferenceUID = frame_of_reference
+        ds.ImagePositionPatient = ["0", "0", ds_text(z * 20.0)]
+        ds.ImageOrientationPatient = ["1", "0", "0", "0", "1", "0"]
+        ds.PixelSpacing = ["2", "2"]
+        ds.AcquisitionDate = "20240301"
+        ds.AcquisitionTime = "115900"
+        set_pixels(ds, np.full((8, 8), z + 1))
+        save(ds, os.path.join(folder, "scout", f"im{z}"))
+
+
+def write_rt_dose(path, absolute=False, orientation=("1", "0", "0", "0", "1", "0")):
+    """As a treatment planning system exports it: no functional groups, frame positions from
+    GridFrameOffsetVector, from the first frame (0, 3, ...) or, with `absolute`, as z coordinates."""
+    uid = UID_ROOT + "13"
+    nx, ny, nz = DOSE_DIMS
+    ds = new_file(RTDOSE_STORAGE, uid + ".1", uid, 3, "dose", "RTDOSE")
+    ds.NumberOfFrames = nz
+    ds.FrameIncrementPointer = 0x3004000C
+    ds.ImagePositionPatient = [ds_text(v) for v in DOSE_ORIGIN]
+    ds.ImageOrientationPatient = list(orientation)
+    ds.PixelSpacing = ["2.5", "2"]
+    ds.SliceThickness = ""
+    first = DOSE_ORIGIN[2] if absolute else 0.0
+    ds.GridFrameOffsetVector = [ds_text(first + offset) for offset in DOSE_OFFSETS]
+    ds.DoseUnits = "GY"
+    ds.DoseType = "PHYSICAL"
+    ds.DoseSummationType = "PLAN"
+    ds.DoseGridScaling = ds_text(DOSE_SCALING)
+    pixels = np.array([[[dose_stored(z, y, x) for x in range(nx)] for y in range(ny)] for z in range(nz)])
+    ds.Rows, ds.Columns = ny, nx
+    ds.SamplesPerPixel = 1
+    ds.PhotometricInterpretation = "MONOCHROME2"
+    ds.BitsAllocated = 32
+    ds.BitsStored = 32
+    ds.HighBit = 31
+    ds.PixelRepresentation = 0
+    ds.PixelData = pixels.astype("<u4").tobytes()
+    save(ds, path)
+
+
 # The head-up phantom: axial slices, feet (first slice) dark, head (last slice) bright.
 HEAD_DIMS = (16, 16, 12)
 
@@ -318,6 +410,11 @@ SAMPLES = {
     "cine_nifti": lambda out: write_cine_as_nifti(os.path.join(out, "cine.nii")),
     "fuzz_seeds": lambda out: write_fuzz_seeds(out),
     "perfusion": lambda out: write_cardiac_perfusion(os.path.join(out, "perfusion")),
+    "phases": lambda out: write_phases(os.path.join(out, "phases")),
+    "rtdose": lambda out: write_rt_dose(os.path.join(out, "rtdose", "dose.dcm")),
+    "rtdose_absolute": lambda out: write_rt_dose(os.path.join(out, "rtdose_absolute", "dose.dcm"), absolute=True),
+    "rtdose_oblique_absolute": lambda out: write_rt_dose(os.path.join(out, "rtdose_oblique", "dose.dcm"),
+                                                         absolute=True, orientation=("1", "0", "0", "0", "0.6", "0.8")),
 }
 
 if __name__ == "__main__":

@@ -5,17 +5,12 @@
 #include <algorithm>
 #include <string>
 
+#include "dicom_directory.h"
 #include "file_magic.h"
 #include "tstyles/core/errors.h"
 
 namespace tstyles {
 namespace {
-
-bool isDicomdir(const std::filesystem::path& file) {
-    std::string name = file.filename().string();
-    for (char& c : name) c = char(std::toupper(static_cast<unsigned char>(c)));
-    return name == "DICOMDIR";
-}
 
 bool isRegularFile(const std::filesystem::directory_entry& entry) {
     std::error_code error;
@@ -35,7 +30,7 @@ bool findsDicomFile(const std::filesystem::path& folder, int depth, int& budget)
     std::vector<std::filesystem::path> subfolders;
     for (const auto& entry : entries) {
         if (--budget < 0) return false;
-        if (isRegularFile(entry) && !isDicomdir(entry.path()) && hasDicomMagic(entry.path())) return true;
+        if (isRegularFile(entry) && !isDicomDirectoryFile(entry.path()) && hasDicomMagic(entry.path())) return true;
         if (isFolder(entry) && subfolders.size() < 4) subfolders.push_back(entry.path());
     }
     if (depth == 0) return false;
@@ -53,7 +48,7 @@ void collect(const std::filesystem::path& root, const std::filesystem::path& fol
     for (const auto& entry : entries) {
         if (isFolder(entry)) {
             collect(root, entry.path(), depth + 1, list);
-        } else if (isRegularFile(entry) && !isDicomdir(entry.path())) {
+        } else if (isRegularFile(entry) && !isDicomDirectoryFile(entry.path())) {
             if (!hasDicomMagic(entry.path())) {
                 ++list.skipped;
                 continue;

@@ -21,6 +21,8 @@ namespace {
 const gdcm::Tag kPixelData(0x7fe0, 0x0010);
 const gdcm::Tag kSharedGroups(0x5200, 0x9229);
 const gdcm::Tag kPerFrameGroups(0x5200, 0x9230);
+const gdcm::Tag kGridFrameOffsets(0x3004, 0x000c);
+const gdcm::Tag kDoseGridScaling(0x3004, 0x000e);
 
 // Where an enhanced frame's macros are found: its own per-frame item first, then the shared one,
 // then (for classic files, and tolerant writers) the top level.
@@ -124,7 +126,14 @@ DicomFrame readFrame(const FrameSources& sources, std::size_t index) {
     if (slope && *slope == 0.0)
         throwInputError(sources.context.file, dicomTagName(slopeTag, "RescaleSlope"),
                         "is 0: every pixel would read as the intercept; the stored values need a slope other than 0");
-    frame.rescaleSlope = slope.value_or(1.0);
+    // RT Dose scales its stored values to dose by DoseGridScaling instead.
+    const std::optional<double> doseScaling =
+        slope ? std::nullopt : dicomNumber(sources.top, kDoseGridScaling, "DoseGridScaling", sources.context);
+    if (doseScaling && !(*doseScaling > 0.0))
+        throwInputError(sources.context.file, dicomTagName(kDoseGridScaling, "DoseGridScaling"),
+                        "is " + std::to_string(*doseScaling) + ": the dose per stored value must be above 0");
+    frame.rescaleSlope = slope.value_or(doseScaling.value_or(1.0));
+    frame.slopeIsDoseScaling = doseScaling.has_value();
     frame.rescaleIntercept = intercept.value_or(0.0);
     frame.temporalPosition = frameBinary(sources, gdcm::Tag(0x0020, 0x9111), gdcm::Tag(0x0020, 0x9128),
                                          "TemporalPositionIndex", dicomUnsignedLong);
@@ -159,6 +168,44 @@ void readPixelFormat(const gdcm::DataSet& data, const DicomContext& context, Dic
     image.photometric = dicomText(data, gdcm::Tag(0x0028, 0x0004)).value_or("MONOCHROME2");
 }
 
+// RT Dose (and some NM) files place their frames along the slice normal (row x column cosines) by
+// GridFrameOffsetVector (PS3.3 C.8.8.3.2): offsets from the first frame where the first is 0,
+// else, for the axial orientation 1\0\0\0\1\0 only, the frames' z coordinates.
+void placeFramesByOffsets(const DicomFrame& first, std::size_t frames, const gdcm::DataSet& data,
+                          const DicomContext& context, DicomImageFile& image) {
+    const std::string field = dicomTagName(kGridFrameOffsets, "GridFrameOffsetVector");
+    std::vector<double> offsets = *dicomNumbers(data, kGridFrameOffsets, "GridFrameOffsetVector", frames, context);
+    if (!first.position || !first.orientation)
+        throwInputError(context.file, field,
+                        std::string("places frames from the first one's ImagePositionPatient (0020,0032) and "
+                                    "ImageOrientationPatient (0020,0037), and this file lacks ") +
+                            (first.position ? "the orientation" : "the position"));
+    const std::array<double, 6>& cosines = *first.orientation;
+    const glm::dvec3 normal = glm::normalize(
+        glm::cross(glm::dvec3(cosines[0], cosines[1], cosines[2]), glm::dvec3(cosines[3], cosines[4], cosines[5])));
+    const glm::dvec3 origin = *first.position;
+    if (offsets.front() == 0.0) {
+        image.framePlacement = "frames placed by GridFrameOffsetVector (3004,000C), offsets from the first frame";
+    } else {
+        const std::array<double, 6> axial{1, 0, 0, 0, 1, 0};
+        bool isAxial = true;
+        for (std::size_t i = 0; i < 6; ++i) isAxial = isAxial && std::abs(cosines[i] - axial[i]) < 1e-6;
+        if (!isAxial || std::abs(offsets.front() - origin.z) > 1e-3)
+            throwInputError(context.file, field,
+                            "starts at " + std::to_string(offsets.front()) +
+                                ": offsets start at 0 (from the first frame), or at the first frame's z (" +
+                                std::to_string(origin.z) + ") where the orientation is axial (1\\0\\0\\0\\1\\0)");
+        for (double& offset : offsets) offset -= origin.z;
+        image.framePlacement = "frames placed by GridFrameOffsetVector (3004,000C), z coordinates";
+    }
+    for (std::size_t index = 0; index < frames; ++index) {
+        DicomFrame frame = first;
+        frame.frameInFile = index;
+        frame.position = origin + normal * offsets[index];
+        image.frames.push_back(frame);
+    }
+}
+
 void readFrames(const gdcm::DataSet& data, const DicomContext& context, DicomImageFile& image) {
     const gdcm::Tag frameCountTag(0x0028, 0x0008);
     const double frameCount = dicomNumber(data, frameCountTag, "NumberOfFrames", context).value_or(1.0);
@@ -172,15 +219,44 @@ void readFrames(const gdcm::DataSet& data, const DicomContext& context, DicomIma
     if (!perFrame.empty() && perFrame.size() != frames)
         throwInputError(context.file, dicomTagName(kPerFrameGroups, "PerFrameFunctionalGroupsSequence"),
                         "holds " + std::to_string(perFrame.size()) + " items for " + std::to_string(frames) + " frames");
-    if (frames > 1 && perFrame.empty())
-        throwInputError(context.file, dicomTagName(kPerFrameGroups, "PerFrameFunctionalGroupsSequence"),
-                        "is missing: the " + std::to_string(frames) +
-                            " frames of this multi-frame file have no positions of their own");
+    if (frames > 1 && perFrame.empty()) {
+        if (!data.FindDataElement(kGridFrameOffsets))
+            throwInputError(context.file, dicomTagName(kPerFrameGroups, "PerFrameFunctionalGroupsSequence"),
+                            "is missing: the " + std::to_string(frames) +
+                                " frames of this multi-frame file have no positions of their own, and no "
+                                "GridFrameOffsetVector (3004,000C) places them");
+        const FrameSources sources{nullptr, shared.empty() ? nullptr : &shared.front(), data, context};
+        placeFramesByOffsets(readFrame(sources, 0), frames, data, context, image);
+        return;
+    }
     for (std::size_t index = 0; index < frames; ++index) {
         const FrameSources sources{perFrame.empty() ? nullptr : &perFrame[index],
                                    shared.empty() ? nullptr : &shared.front(), data, context};
         image.frames.push_back(readFrame(sources, index));
     }
+}
+
+// The tags that make two series different images of the patient rather than the same image taken
+// again: their texts as given (an absent tag is left out). Time tags are not among them.
+std::string acquisitionParametersOf(const gdcm::DataSet& data) {
+    struct Parameter {
+        std::uint16_t group, element;
+        const char* keyword;
+    };
+    static constexpr Parameter kParameters[] = {
+        {0x0008, 0x0008, "ImageType"},        {0x0018, 0x0020, "ScanningSequence"},
+        {0x0018, 0x0021, "SequenceVariant"},  {0x0018, 0x0024, "SequenceName"},
+        {0x0018, 0x0050, "SliceThickness"},   {0x0018, 0x0060, "KVP"},
+        {0x0018, 0x0080, "RepetitionTime"},   {0x0018, 0x0081, "EchoTime"},
+        {0x0018, 0x0082, "InversionTime"},    {0x0018, 0x0087, "MagneticFieldStrength"},
+        {0x0018, 0x1030, "ProtocolName"},     {0x0018, 0x1210, "ConvolutionKernel"},
+        {0x0018, 0x1314, "FlipAngle"},        {0x0028, 0x0030, "PixelSpacing"},
+    };
+    std::string text;
+    for (const Parameter& parameter : kParameters)
+        if (const auto value = dicomText(data, gdcm::Tag(parameter.group, parameter.element)))
+            text += std::string(text.empty() ? "" : "; ") + parameter.keyword + "=" + *value;
+    return text;
 }
 
 DicomImageFile headerOf(const gdcm::File& parsed, const std::filesystem::path& file) {
@@ -197,7 +273,11 @@ DicomImageFile headerOf(const gdcm::File& parsed, const std::filesystem::path& f
     image.seriesNumber = dicomNumber(data, gdcm::Tag(0x0020, 0x0011), "SeriesNumber", context);
     image.seriesDescription = dicomText(data, gdcm::Tag(0x0008, 0x103e)).value_or("");
     image.modality = dicomText(data, gdcm::Tag(0x0008, 0x0060)).value_or("");
+    image.frameOfReference = dicomText(data, gdcm::Tag(0x0020, 0x0052)).value_or("");
+    image.acquisitionParameters = acquisitionParametersOf(data);
     image.rescaleType = dicomText(data, gdcm::Tag(0x0028, 0x1054)).value_or("");
+    // RT Dose says its unit in DoseUnits: GY (gray), or RELATIVE (to an unstated reference: no unit).
+    if (image.rescaleType.empty() && dicomText(data, gdcm::Tag(0x3004, 0x0002)) == "GY") image.rescaleType = "Gy";
     // Rows is what every image has and nothing else: files without it (reports, DICOMDIR) hold no frames.
     if (!data.FindDataElement(gdcm::Tag(0x0028, 0x0010))) return image;
     readPixelFormat(data, context, image);

@@ -28,6 +28,7 @@ struct DicomFrame {
     std::optional<std::array<double, 2>> pixelSpacing;// PixelSpacing: between rows, then between columns (mm)
     double rescaleSlope = 1.0;
     double rescaleIntercept = 0.0;
+    bool slopeIsDoseScaling = false;         // RT Dose's DoseGridScaling (3004,000E) gave the slope
     std::optional<double> temporalPosition;  // TemporalPositionIdentifier, or TemporalPositionIndex
     std::optional<double> triggerTimeMs;     // TriggerTime, or NominalCardiacTriggerDelayTime
     std::optional<double> acquiredSeconds;   // AcquisitionDateTime, (AcquisitionDate +) AcquisitionTime, or ContentTime
@@ -40,6 +41,11 @@ struct DicomImageFile {
     std::optional<double> seriesNumber;
     std::string seriesDescription;
     std::string modality;
+    std::string frameOfReference;   // FrameOfReferenceUID: series that share it share the patient frame
+    // The acquisition parameters that tell one kind of image from another (TR, TE, flip angle,
+    // sequence; kVp, kernel; slice thickness ...), as "keyword=value" texts: series with equal ones
+    // were acquired alike, so phases of one study can be read as time-steps (dicom_phases.h).
+    std::string acquisitionParameters;
     std::string rescaleType;        // RescaleType ("HU", "US" ...), where given
     std::string photometric;        // PhotometricInterpretation
     std::string transferSyntax;     // its UID
@@ -53,6 +59,9 @@ struct DicomImageFile {
     std::uint16_t bitsStored = 0;
     std::uint16_t pixelRepresentation = 0;  // 0 unsigned, 1 two's complement
     std::vector<DicomFrame> frames;         // empty: not an image (a report, a DICOMDIR)
+    // How the frames of a multi-frame file without per-frame positions were placed (RT Dose's
+    // GridFrameOffsetVector), for `info`; empty where each frame has its own.
+    std::string framePlacement;
 };
 
 // Reads the header (everything before PixelData) through GDCM. Not a DICOM file, or a damaged or

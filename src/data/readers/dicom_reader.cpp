@@ -6,7 +6,9 @@
 #include <memory>
 #include <sstream>
 
+#include "dicom_directory.h"
 #include "dicom_files.h"
+#include "dicom_phases.h"
 #include "dicom_pixels.h"
 #include "dicom_series.h"
 #include "dicom_volumes.h"
@@ -23,6 +25,7 @@ namespace {
 struct DicomInputs {
     std::vector<DicomImageFile> headers;
     std::size_t skipped = 0;  // files in folders without the DICM magic
+    std::vector<std::string> notes;  // what a DICOMDIR referenced
 };
 
 // GDCM, named to whoever watches the reading (reading_monitor.h): a crash inside it is GDCM's.
@@ -37,6 +40,14 @@ DicomInputs readInputs(const std::vector<std::filesystem::path>& inputs, Reading
     DicomInputs read;
     for (const std::filesystem::path& input : inputs) {
         std::error_code error;
+        if (isDicomDirectoryFile(input) && !std::filesystem::is_directory(input, error)) {
+            reportStage(monitor, input, kGdcm, "reading the DICOMDIR");
+            const DicomDirectoryFiles directory = filesOfDicomDirectory(input);
+            read.notes.push_back("DICOMDIR: " + std::to_string(directory.files.size()) + " files referenced by its " +
+                                 std::to_string(directory.records) + " directory records");
+            for (const auto& file : directory.files) read.headers.push_back(headerOf(file, monitor));
+            continue;
+        }
         if (!std::filesystem::is_directory(input, error)) {
             read.headers.push_back(headerOf(input, monitor));
             continue;
@@ -76,15 +87,19 @@ std::vector<std::string> dicomReadingNotes(const std::vector<DicomSeriesEntry>& 
                                       const DicomInputs& inputs, const DicomVolumes& volumes) {
     std::vector<std::string> notes;
     for (std::size_t i = 0; i < series.size(); ++i)
-        notes.push_back("DICOM " + series[i].describe(i + 1) + (i == choice.index ? " - taken (" + choice.why + ")" : ""));
+        notes.push_back("DICOM " + series[i].describe(i + 1) + (choice.taken(i) ? " - taken (" + choice.why + ")" : ""));
+    notes.insert(notes.end(), inputs.notes.begin(), inputs.notes.end());
     if (inputs.skipped > 0)
         notes.push_back(std::to_string(inputs.skipped) + " files without the DICM magic left out");
     notes.insert(notes.end(), volumes.notes.begin(), volumes.notes.end());
-    const DicomImageFile& first = series[choice.index].files.front();
+    const DicomImageFile& first = series[choice.indices.front()].files.front();
+    if (!first.framePlacement.empty()) notes.push_back(first.framePlacement);
     notes.push_back("patient frame LPS turned to RAS (x toward the patient's right, y anterior, z superior), mm");
     std::ostringstream pixels;
     pixels << first.bitsStored << " of " << first.bitsAllocated << " bits, "
-           << (first.pixelRepresentation == 1 ? "signed" : "unsigned") << ", RescaleSlope/RescaleIntercept applied";
+           << (first.pixelRepresentation == 1 ? "signed" : "unsigned")
+           << (first.frames.front().slopeIsDoseScaling ? ", DoseGridScaling applied"
+                                                        : ", RescaleSlope/RescaleIntercept applied");
     if (first.photometric == "MONOCHROME1")
         pixels << "; MONOCHROME1 (higher values shown darker on film): values kept as stored, not inverted";
     if (first.compressed) pixels << "; compressed transfer syntax " << first.transferSyntax << " decoded by GDCM";
@@ -131,21 +146,24 @@ SourceSeries openDicom(const std::vector<std::filesystem::path>& inputs, const R
     if (series.empty())
         throwInputError(input, "", "holds no DICOM image series (" + std::to_string(fileCount) +
                                        " DICOM files, none with image pixels)");
-    const DicomSeriesChoice choice = chooseDicomSeries(series, options.seriesChoice, input);
-    const DicomSeriesEntry& chosen = series[choice.index];
-    for (const DicomImageFile& file : chosen.files) requireSupportedPixels(file);
+    DicomSeriesChoice choice = chooseDicomSeries(series, options.seriesChoice, input);
+    if (choice.indices.empty()) choice = defaultDicomChoice(series, input);
+    for (std::size_t index : choice.indices)
+        for (const DicomImageFile& file : series[index].files) requireSupportedPixels(file);
 
     auto stepSource = std::make_shared<DicomStepSource>();
-    stepSource->volumes = stackDicomVolumes(chosen, input);
+    stepSource->volumes = choice.indices.size() == 1 ? stackDicomVolumes(series[choice.indices.front()], input)
+                                                     : stackDicomPhases(series, choice, input);
     const DicomVolumes& volumes = stepSource->volumes;
     requireStepCount(input, "(0020,0100) TemporalPositionIdentifier", volumes.steps.size());
-    const OrientedAxes frame = rasFrame(volumes, chosen.files.front().file);
+    const DicomImageFile& first = series[choice.indices.front()].files.front();
+    const OrientedAxes frame = rasFrame(volumes, first.file);
     stepSource->mirrorX = frame.mirrorX;
     stepSource->memoryCap = memoryCap(options.maxMemoryBytes);
     stepSource->monitor = options.monitor;
-    for (const DicomImageFile& file : chosen.files) stepSource->headers.emplace(file.file, file);
+    for (std::size_t index : choice.indices)
+        for (const DicomImageFile& file : series[index].files) stepSource->headers.emplace(file.file, file);
 
-    const DicomImageFile& first = chosen.files.front();
     SourceSeries source;
     source.name = !first.seriesDescription.empty() ? first.seriesDescription : input.filename().string();
     source.file = input;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "tstyles/core/errors.h"
@@ -49,28 +50,63 @@ std::vector<DicomSeriesEntry> groupDicomSeries(std::vector<DicomImageFile> files
     return series;
 }
 
-DicomSeriesChoice chooseDicomSeries(const std::vector<DicomSeriesEntry>& series, const std::string& choice,
-                                    const std::filesystem::path& input) {
-    if (choice.empty()) {
-        std::size_t largest = 0;
-        for (std::size_t i = 1; i < series.size(); ++i)
-            if (series[i].frameCount() > series[largest].frameCount()) largest = i;
-        return {largest, series.size() == 1 ? "the only one" : "the largest; --series chooses another"};
-    }
-    const bool isNumber = !choice.empty() && choice.size() < 10 &&
-                          std::all_of(choice.begin(), choice.end(), [](char c) { return c >= '0' && c <= '9'; });
-    if (isNumber) {
-        const std::size_t number = std::stoul(choice);
-        if (number >= 1 && number <= series.size()) return {number - 1, "--series " + choice};
-    }
-    for (std::size_t i = 0; i < series.size(); ++i)
-        if (series[i].uid == choice) return {i, "--series " + choice};
+bool DicomSeriesChoice::taken(std::size_t index) const {
+    return std::find(indices.begin(), indices.end(), index) != indices.end();
+}
+
+std::size_t largestDicomSeries(const std::vector<DicomSeriesEntry>& series) {
+    std::size_t largest = 0;
+    for (std::size_t i = 1; i < series.size(); ++i)
+        if (series[i].frameCount() > series[largest].frameCount()) largest = i;
+    return largest;
+}
+
+namespace {
+
+std::optional<std::size_t> seriesNumberOf(const std::string& text, std::size_t count) {
+    const bool isNumber = !text.empty() && text.size() < 10 &&
+                          std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (!isNumber) return std::nullopt;
+    const std::size_t number = std::stoul(text);
+    if (number < 1 || number > count) return std::nullopt;
+    return number - 1;
+}
+
+[[noreturn]] void refuseChoice(const std::vector<DicomSeriesEntry>& series, const std::string& choice,
+                               const std::filesystem::path& input, const std::string& problem) {
     std::string available;
     for (std::size_t i = 0; i < series.size(); ++i)
         available += (i == 0 ? "" : "; ") + std::to_string(i + 1) + " (UID " + series[i].uid + ")";
     throwInputError(input, "--series",
-                    "\"" + choice + "\" names no series here: give a number from 1 to " +
-                        std::to_string(series.size()) + " or a SeriesInstanceUID: " + available);
+                    "\"" + choice + "\" " + problem + ": give a number from 1 to " + std::to_string(series.size()) +
+                        ", numbers separated by commas, all, or a SeriesInstanceUID: " + available);
+}
+
+}  // namespace
+
+DicomSeriesChoice chooseDicomSeries(const std::vector<DicomSeriesEntry>& series, const std::string& choice,
+                                    const std::filesystem::path& input) {
+    if (choice.empty()) return {};
+    if (choice == "all") {
+        DicomSeriesChoice all{{}, "--series all"};
+        for (std::size_t i = 0; i < series.size(); ++i) all.indices.push_back(i);
+        return all;
+    }
+    if (const auto number = seriesNumberOf(choice, series.size())) return {{*number}, "--series " + choice};
+    for (std::size_t i = 0; i < series.size(); ++i)
+        if (series[i].uid == choice) return {{i}, "--series " + choice};
+    if (choice.find(',') == std::string::npos) refuseChoice(series, choice, input, "names no series here");
+    DicomSeriesChoice list{{}, "--series " + choice};
+    std::size_t start = 0;
+    while (start <= choice.size()) {
+        const std::size_t end = std::min(choice.find(',', start), choice.size());
+        const auto number = seriesNumberOf(choice.substr(start, end - start), series.size());
+        if (!number) refuseChoice(series, choice, input, "has \"" + choice.substr(start, end - start) + "\", no series here");
+        if (list.taken(*number)) refuseChoice(series, choice, input, "names series " + std::to_string(*number + 1) + " twice");
+        list.indices.push_back(*number);
+        start = end + 1;
+    }
+    return list;
 }
 
 }  // namespace tstyles

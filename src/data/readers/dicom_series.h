@@ -1,5 +1,5 @@
 // The image series of a set of DICOM files, grouped by SeriesInstanceUID, listed for `info` and
-// chosen by --series (its number in the list or its UID) or, by default, the one with most frames.
+// chosen by --series (numbers in the list, a UID, or all).
 #pragma once
 
 #include <cstddef>
@@ -23,13 +23,19 @@ struct DicomSeriesEntry {
 std::vector<DicomSeriesEntry> groupDicomSeries(std::vector<DicomImageFile> files);
 
 struct DicomSeriesChoice {
-    std::size_t index = 0;  // into the list
-    std::string why;        // "--series 2", "the largest"
+    std::vector<std::size_t> indices;  // into the list; several: phases read as time-steps (dicom_phases.h)
+    std::string why;                   // "--series 2", "the largest"
+    bool taken(std::size_t index) const;
 };
 
-// `choice` is empty (the largest; the first of equals), a number from 1, or a UID. No match is an
+// `choice` is a number from 1, a UID, "all" (every series), or numbers separated by commas
+// ("2,3,4"): the series in the list that it names. Empty: nothing chosen (`indices` empty; the
+// default is dicom_phases.h's). No match, a number twice, or a number out of the list is an
 // InputError on --series naming the available series. `input` names the folder or file in messages.
 DicomSeriesChoice chooseDicomSeries(const std::vector<DicomSeriesEntry>& series, const std::string& choice,
                                     const std::filesystem::path& input);
+
+// The series with the most frames (the first of equals).
+std::size_t largestDicomSeries(const std::vector<DicomSeriesEntry>& series);
 
 }  // namespace tstyles

@@ -47,7 +47,7 @@ const std::vector<SeriesFormat>& seriesFormats() {
          {{"application/x-vtk-xml", "VTK XML data set or ParaView collection", kVtkXmlMagic}}, ".pvd .series .vti .vts", {"--var"}, hasVtkXmlSignature,
          openVtkSeries},
         // Files, lists of files, or folders (nested ones too) of one or more series; --series picks one.
-        {"DICOM", {".dcm", ".dicom"}, {{"application/dicom"}}, ".dcm .dicom, files with the DICM magic, or their folder", {"--series"},
+        {"DICOM", {".dcm", ".dicom"}, {{"application/dicom"}}, ".dcm .dicom, files with the DICM magic, their folder, or a DICOMDIR", {"--series"},
          hasDicomMagic, openDicom, isDicomFolder},
         // By name only: ".bin" alone says too little (and no MIME type: the desktop goes by names too).
         {"Hurricane Isabel raw", {}, {}, "VARIABLEfHH.bin or .bin.gz", {"--dims"}, isIsabelFileName,
