@@ -286,6 +286,7 @@ case_phases_default() {
     expect_stdout_contains "series 5: UID 1.2.826.0.1.3680043.10.1187.15.5, number 5, \"portal venous\", CT, 5 files (5 frames of 12 x 10) - taken"
     if grep -q "arterial lung.* - taken" "$OUT_FILE"; then fail "the lung-kernel series was taken as a phase"; fi
     expect_stdout_contains "Read: series 3,5,4 read as 3 time-steps in acquisition order, times in seconds from the first acquisition"
+    expect_stdout_contains "Series: arterial, portal venous, delayed"
     expect_stdout_contains "Time-steps: 3"
     expect_stdout_contains "rectilinear 12x10x5"
     expect_stdout_contains "Time: seconds"

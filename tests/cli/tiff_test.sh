@@ -88,6 +88,27 @@ case_info_ome() {
     expect_stdout_contains "Value range: [-7, 172.5]"
 }
 
+# An OME-TIFF time-lapse split over files (one per time point, the TiffData naming each by UUID
+# FileName): any one of them opens the whole series, values as written. Without one of the files,
+# the error names the TiffData.
+case_ome_across_files() {
+    samples
+    run_tstyles -- info "$S/lapse_t0.ome.tif"
+    expect_exit 0
+    expect_stdout_contains "Read: planes in 3 files named by the OME-XML's TiffData"
+    expect_stdout_contains "Time-steps: 3"
+    expect_stdout_contains "Value range: [0, 2345]"
+    expect_stdout_contains "2  2 min"
+    run_tstyles -- convert "$S/lapse_t1.ome.tif" -o "$SCRATCH/out"
+    expect_exit 0
+    expect_float_at "$SCRATCH/out/t00.raw" 0 0
+    expect_float_at "$SCRATCH/out/t01.raw" 7 1011
+    expect_float_at "$SCRATCH/out/t02.raw" 119 2345
+    rm -r "$S/lapse_t2.ome.tif" "$SCRATCH/out"
+    expect_refused "$S/lapse_t0.ome.tif" "OME-XML TiffData UUID FileName" \
+        "puts planes in \"lapse_t2.ome.tif\", which is not beside this file"
+}
+
 # NaN over land in a float OME-TIFF is missing data: counted, out of the range, NaN in what convert
 # writes, transparent in the picture (TIFF has no missing-value marker). Sizes in km and m.
 case_nan_over_land() {

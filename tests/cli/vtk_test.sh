@@ -141,6 +141,27 @@ case_structured_grid() {
     expect_image "$SCRATCH/grid.png" 64 64
 }
 
+# A RectilinearGrid (.vtr, VTK's writer): x and y even, z uneven (0, 1, 3), values as written.
+case_rectilinear_grid() {
+    samples
+    run_tstyles -- info "$S/depth.vtr"
+    expect_exit 0
+    expect_stdout_contains "Format: VTK XML RectilinearGrid"
+    expect_stdout_contains "rectilinear 5x4x3"
+    expect_stdout_contains "World bounds: (10, -2, 0) to (12, 1, 3)"
+    run_tstyles -- convert "$S/depth.vtr" -o "$SCRATCH/depth"
+    expect_exit 0
+    "$VTK_PYTHON" "$SAMPLES_WRITER" check "$SCRATCH/depth/t00.raw" temperature 0 || fail "depth.vtr's temperature differs"
+    grep -q '"z": \[0.0, 1.0, 3.0\]' "$SCRATCH/depth/series.json" || fail "the uneven z levels were not kept: $(cat "$SCRATCH/depth/series.json")"
+    run_tstyles -- render "$S/depth.vtr" -o "$SCRATCH/depth.png" --backend osmesa --width 64 --height 64
+    expect_exit 0
+    expect_image "$SCRATCH/depth.png" 64 64
+    # z coordinates that do not increase: refused, naming the field.
+    sed -e 's/^\( *\)0 1 3$/\10 3 1/' "$S/depth_ascii.vtr" >"$S/decreasing.vtr"
+    grep -q "0 3 1" "$S/decreasing.vtr" || fail "the test could not rewrite the z coordinates"
+    expect_refused "$S/decreasing.vtr" "Coordinates" "the z coordinates must increase strictly: 1 follows 3"
+}
+
 case_pieces() {
     samples
     run_tstyles -- info "$S/pieces.vti"

@@ -60,6 +60,31 @@ def ocean_values():
     return values
 
 
+def lapse_values(t):
+    """Time point t of the time-lapse split over files: ZYX uint16 (4 x 5 x 6)."""
+    z, y, x = np.indices((4, 5, 6))
+    return (t * 1000 + z * 100 + y * 10 + x).astype(np.uint16)
+
+
+def write_lapse_files(folder):
+    """An OME-TIFF time-lapse split over files, one per time point, as Bio-Formats and microscope
+    software write it: each file holds its time point's 4 planes and the whole OME-XML, whose
+    TiffData name the files by UUID FileName."""
+    names = [f"lapse_t{t}.ome.tif" for t in range(3)]
+    uuids = [f"urn:uuid:2f6a1c3e-0000-4000-8000-00000000000{t}" for t in range(3)]
+    tiff_data = "".join(f'<TiffData FirstT="{t}" IFD="0" PlaneCount="4"><UUID FileName="{names[t]}">{uuids[t]}</UUID>'
+                        "</TiffData>" for t in range(3))
+    for t in range(3):
+        xml = ('<?xml version="1.0" encoding="UTF-8"?>'
+               f'<OME xmlns="http://www.openmicroscopy.org/Schemas/OME/2016-06" UUID="{uuids[t]}">'
+               '<Image ID="Image:0" Name="lapse"><Pixels ID="Pixels:0" DimensionOrder="XYZCT" Type="uint16" '
+               'SizeX="6" SizeY="5" SizeZ="4" SizeC="1" SizeT="3" PhysicalSizeX="0.5" PhysicalSizeY="0.5" '
+               'PhysicalSizeZ="2" TimeIncrement="60" TimeIncrementUnit="s">'
+               f'<Channel ID="Channel:0:0" SamplesPerPixel="1"/>{tiff_data}</Pixels></Image></OME>')
+        tifffile.imwrite(os.path.join(folder, names[t]), lapse_values(t), photometric="minisblack",
+                         description=xml, metadata=None)
+
+
 def rgb_values():
     z, y, x, s = np.indices((4, 5, 6, 3))
     return (z * 20 + y * 5 + x + s * 60).astype(np.uint8)
@@ -80,6 +105,7 @@ def write_good(folder):
     tifffile.imwrite(os.path.join(folder, "tiled.ome.tif"), tiled_values(), tile=(16, 16), compression="zlib",
                      predictor=True, metadata={"axes": "TZYX"})
     tifffile.imwrite(os.path.join(folder, "plain.tif"), plain_values(), photometric="minisblack", metadata=None)
+    write_lapse_files(folder)
     tifffile.imwrite(os.path.join(folder, "ocean.ome.tif"), ocean_values(),
                      metadata={"axes": "TZYX", "PhysicalSizeX": 2.0, "PhysicalSizeXUnit": "km", "PhysicalSizeY": 2.0,
                                "PhysicalSizeYUnit": "km", "PhysicalSizeZ": 5.0, "PhysicalSizeZUnit": "m"})

@@ -123,6 +123,7 @@ def write_all(folder):
     write_series(folder)
     write_structured(folder)
     write_pieces(folder)
+    write_rectilinear(folder)
 
 
 def write_series(folder):
@@ -157,6 +158,24 @@ def write_structured(folder):
     grid.SetPoints(points)
     add_array(grid, "temperature", known("temperature", 0), active=True)
     write(vtk.vtkXMLStructuredGridWriter(), grid, os.path.join(folder, "grid.vts"), compressor="ZLib")
+
+
+# The rectilinear grid's coordinates: x and y even, z uneven (levels closer near the surface).
+RECT_COORDINATES = ((10.0, 10.5, 11.0, 11.5, 12.0), (-2.0, -1.0, 0.0, 1.0), (0.0, 1.0, 3.0))
+
+
+def write_rectilinear(folder):
+    """depth.vtr (appended, zlib) and depth_ascii.vtr: a RectilinearGrid with uneven z, the known
+    arrays of step 0 on its points."""
+    grid = vtk.vtkRectilinearGrid()
+    grid.SetDimensions(*DIMS)
+    for axis, values in enumerate(RECT_COORDINATES):
+        array = numpy_support.numpy_to_vtk(np.array(values, dtype=np.float64), deep=True)
+        (grid.SetXCoordinates, grid.SetYCoordinates, grid.SetZCoordinates)[axis](array)
+    add_array(grid, "pressure", known("pressure", 0))
+    add_array(grid, "temperature", known("temperature", 0), active=True)
+    write(vtk.vtkXMLRectilinearGridWriter(), grid, os.path.join(folder, "depth.vtr"), "Appended", "ZLib")
+    write(vtk.vtkXMLRectilinearGridWriter(), grid, os.path.join(folder, "depth_ascii.vtr"), "Ascii")
 
 
 def write_pieces(folder):

@@ -253,6 +253,61 @@ def write_phases(folder):
         save(ds, os.path.join(folder, "scout", f"im{z}"))
 
 
+def write_abdomen_phases(folder, size=96, slices=32):
+    """A realistic multi-phase abdominal CT for the documentation: a body with fat, muscle, spine,
+    aorta, liver, spleen and kidneys (0.8 mm pixels, 3 mm slices), scanned three times after one
+    contrast injection, one series a phase: arterial (aorta bright, 25 s), portal venous (liver and
+    spleen enhanced, 70 s), delayed (kidneys' collecting systems bright, 180 s); with noise."""
+    frame_of_reference = UID_ROOT + "17.0"
+    rng = np.random.default_rng(17)
+    z, y, x = np.indices((slices, size, size)).astype(float)
+    c = size / 2.0
+    body = ((x - c) / (0.45 * size)) ** 2 + ((y - c) / (0.34 * size)) ** 2 < 1
+    fat_rim = body & ~(((x - c) / (0.41 * size)) ** 2 + ((y - c) / (0.30 * size)) ** 2 < 1)
+    spine = ellipsoid((slices, size, size), (c, c + 0.2 * size, slices / 2), (0.07 * size, 0.07 * size, slices))
+    aorta = ellipsoid((slices, size, size), (c - 0.05 * size, c + 0.08 * size, slices / 2), (0.04 * size, 0.04 * size, slices))
+    liver = ellipsoid((slices, size, size), (c - 0.2 * size, c - 0.02 * size, slices * 0.6),
+                      (0.17 * size, 0.2 * size, slices * 0.45)) & body
+    spleen = ellipsoid((slices, size, size), (c + 0.28 * size, c + 0.05 * size, slices * 0.65),
+                       (0.07 * size, 0.09 * size, slices * 0.25)) & body
+    kidneys = (ellipsoid((slices, size, size), (c - 0.17 * size, c + 0.15 * size, slices * 0.35),
+                         (0.045 * size, 0.06 * size, slices * 0.2)) |
+               ellipsoid((slices, size, size), (c + 0.17 * size, c + 0.15 * size, slices * 0.35),
+                         (0.045 * size, 0.06 * size, slices * 0.2)))
+    collecting = kidneys & (np.abs(np.abs(x - c) - 0.17 * size) < 0.015 * size)
+    phases = ((3, "arterial", "141025", {"aorta": 320, "liver": 70, "spleen": 120, "kidney": 180, "collect": 40}),
+              (4, "portal venous", "141110", {"aorta": 160, "liver": 130, "spleen": 130, "kidney": 170, "collect": 60}),
+              (5, "delayed", "141300", {"aorta": 90, "liver": 90, "spleen": 90, "kidney": 110, "collect": 400}))
+    for number, description, time, hu in phases:
+        values = np.full(z.shape, -1000.0)
+        values[body] = 45.0
+        values[fat_rim] = -100.0
+        values[liver] = hu["liver"]
+        values[spleen] = hu["spleen"]
+        values[kidneys] = hu["kidney"]
+        values[collecting] = hu["collect"]
+        values[aorta] = hu["aorta"]
+        values[spine] = 600.0
+        values += rng.normal(0.0, 12.0, values.shape) * body
+        uid = f"{UID_ROOT}17.{number}"
+        for k in range(slices):
+            ds = new_file(CT_IMAGE, f"{uid}.{k}", uid, number, description, "CT")
+            ds.FrameOfReferenceUID = frame_of_reference
+            ds.ImagePositionPatient = [ds_text(-0.4 * size), ds_text(-0.4 * size), ds_text(-60.0 + 3.0 * k)]
+            ds.ImageOrientationPatient = ["1", "0", "0", "0", "1", "0"]
+            ds.PixelSpacing = ["0.8", "0.8"]
+            ds.SliceThickness = "3"
+            ds.KVP = "120"
+            ds.ConvolutionKernel = "B30f"
+            ds.AcquisitionDate = "20240301"
+            ds.AcquisitionTime = f"{time}.{k:02d}"
+            ds.InstanceNumber = k + 1
+            ds.RescaleIntercept = "-1024"
+            ds.RescaleSlope = "1"
+            set_pixels(ds, np.clip(np.round(values[k] + 1024), 0, 4095), bits_stored=12)
+            save(ds, os.path.join(folder, f"series{number}", f"im{k:03d}"))
+
+
 def write_rt_dose(path, absolute=False, orientation=("1", "0", "0", "0", "1", "0")):
     """As a treatment planning system exports it: no functional groups, frame positions from
     GridFrameOffsetVector, from the first frame (0, 3, ...) or, with `absolute`, as z coordinates."""
@@ -411,6 +466,7 @@ SAMPLES = {
     "fuzz_seeds": lambda out: write_fuzz_seeds(out),
     "perfusion": lambda out: write_cardiac_perfusion(os.path.join(out, "perfusion")),
     "phases": lambda out: write_phases(os.path.join(out, "phases")),
+    "abdomen_phases": lambda out: write_abdomen_phases(os.path.join(out, "abdomen")),
     "rtdose": lambda out: write_rt_dose(os.path.join(out, "rtdose", "dose.dcm")),
     "rtdose_absolute": lambda out: write_rt_dose(os.path.join(out, "rtdose_absolute", "dose.dcm"), absolute=True),
     "rtdose_oblique_absolute": lambda out: write_rt_dose(os.path.join(out, "rtdose_oblique", "dose.dcm"),
@@ -419,5 +475,5 @@ SAMPLES = {
 
 if __name__ == "__main__":
     out = sys.argv[1]
-    for name in sys.argv[2:] or [name for name in SAMPLES if name not in ("perfusion", "fuzz_seeds")]:
+    for name in sys.argv[2:] or [name for name in SAMPLES if name not in ("perfusion", "abdomen_phases", "fuzz_seeds")]:
         SAMPLES[name](out)

@@ -105,7 +105,7 @@ DicomSeriesChoice defaultDicomChoice(const std::vector<DicomSeriesEntry>& series
     return best;
 }
 
-DicomVolumes stackDicomPhases(const std::vector<DicomSeriesEntry>& series, const DicomSeriesChoice& choice,
+DicomVolumes stackDicomPhases(const std::vector<DicomSeriesEntry>& series, DicomSeriesChoice& choice,
                               const std::filesystem::path& input) {
     struct Phase {
         std::size_t index;
@@ -146,6 +146,7 @@ DicomVolumes stackDicomPhases(const std::vector<DicomSeriesEntry>& series, const
         stacked.times.push_back(distinct ? *phases[step].moment - *phases.front().moment : double(step));
         order.push_back(phases[step].index);
     }
+    choice.indices = order;
     stacked.timeUnit = distinct ? TimeUnit::Seconds : TimeUnit::None;
     stacked.notes.push_back(
         "series " + seriesNumbersText(order) + " read as " + std::to_string(phases.size()) + " time-steps " +

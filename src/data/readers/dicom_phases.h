@@ -19,8 +19,8 @@ DicomSeriesChoice defaultDicomChoice(const std::vector<DicomSeriesEntry>& series
 // The chosen series' volumes as time-steps in acquisition order (the list's order where a series
 // has no acquisition time), their times in seconds since the first. Each must be one volume on the
 // first's grid (dims, position, orientation, spacing, slice positions); else an InputError on
-// --series names the series and what differs.
-DicomVolumes stackDicomPhases(const std::vector<DicomSeriesEntry>& series, const DicomSeriesChoice& choice,
+// --series names the series and what differs. `choice.indices` is put in that order.
+DicomVolumes stackDicomPhases(const std::vector<DicomSeriesEntry>& series, DicomSeriesChoice& choice,
                               const std::filesystem::path& input);
 
 }  // namespace tstyles

@@ -166,6 +166,15 @@ SourceSeries openDicom(const std::vector<std::filesystem::path>& inputs, const R
 
     SourceSeries source;
     source.name = !first.seriesDescription.empty() ? first.seriesDescription : input.filename().string();
+    if (choice.indices.size() > 1) {
+        // Phases: every phase's description, in time order ("arterial, portal venous, delayed").
+        std::string names;
+        for (std::size_t index : choice.indices) {
+            const std::string& description = series[index].files.front().seriesDescription;
+            if (!description.empty()) names += (names.empty() ? "" : ", ") + description;
+        }
+        if (!names.empty()) source.name = names;
+    }
     source.file = input;
     source.format = "DICOM";
     const AxisDirection directions[3] = {AxisDirection::Right, AxisDirection::Anterior, AxisDirection::Superior};

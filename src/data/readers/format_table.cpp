@@ -43,8 +43,8 @@ const std::vector<SeriesFormat>& seriesFormats() {
         {"NRRD", {".nrrd", ".nhdr"}, {{"application/x-nrrd", "NRRD volume", kNrrdMagic}}, ".nrrd .nhdr", {}, startsWithNrrdMagic,
          stackedFiles([](const std::filesystem::path& file, const ReadOptions&) { return openNrrd(file); })},
         // ParaView's time series: a collection (.pvd, .series) or the data sets themselves.
-        {"VTK XML", {".pvd", ".series", ".vti", ".vts"},
-         {{"application/x-vtk-xml", "VTK XML data set or ParaView collection", kVtkXmlMagic}}, ".pvd .series .vti .vts", {"--var"}, hasVtkXmlSignature,
+        {"VTK XML", {".pvd", ".series", ".vti", ".vtr", ".vts"},
+         {{"application/x-vtk-xml", "VTK XML data set or ParaView collection", kVtkXmlMagic}}, ".pvd .series .vti .vtr .vts", {"--var"}, hasVtkXmlSignature,
          openVtkSeries},
         // Files, lists of files, or folders (nested ones too) of one or more series; --series picks one.
         {"DICOM", {".dcm", ".dicom"}, {{"application/dicom"}}, ".dcm .dicom, files with the DICM magic, their folder, or a DICOMDIR", {"--series"},

@@ -1,6 +1,7 @@
 // OME-XML through pugixml: only the attributes that place and time the planes are read.
 #include "ome_xml.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -148,43 +149,65 @@ std::size_t omePlaneIndex(const OmeImage& image, std::size_t z, std::size_t c, s
     return index;
 }
 
-std::vector<std::size_t> omePlaneIfds(const OmeImage& image, std::size_t ifdCount, std::size_t firstIfd,
-                                      const std::filesystem::path& file) {
+std::vector<std::string> omeFileNames(const OmeImage& image, const std::filesystem::path& file) {
+    std::vector<std::string> names{file.filename().string()};
+    for (const OmeTiffData& data : image.tiffData)
+        if (!data.fileName.empty() && std::find(names.begin(), names.end(), data.fileName) == names.end()) {
+            if (data.fileName.find('/') != std::string::npos || data.fileName.find('\\') != std::string::npos ||
+                data.fileName == "." || data.fileName == "..")
+                throwInputError(file, "OME-XML TiffData UUID FileName",
+                                "\"" + data.fileName + "\" is not a file name beside this file");
+            names.push_back(data.fileName);
+        }
+    return names;
+}
+
+std::vector<OmePlaneRef> omePlaneRefs(const OmeImage& image, const std::vector<std::size_t>& ifdCounts,
+                                      std::size_t firstIfd, const std::filesystem::path& file) {
     const std::string& order = image.dimensionOrder;
     if (order.size() != 5 || order.compare(0, 2, "XY") != 0 || order.find('Z') == std::string::npos ||
         order.find('C') == std::string::npos || order.find('T') == std::string::npos)
         throwInputError(file, "OME-XML Pixels DimensionOrder", "\"" + order + "\" is not XY followed by Z, C and T");
     if (image.sizeC % image.samplesPerPixel != 0)
         throwInputError(file, "OME-XML Pixels SizeC", "is not a multiple of the Channel's SamplesPerPixel");
+    const std::vector<std::string> names = omeFileNames(image, file);
+    double ifdTotal = 0.0;
+    for (std::size_t count : ifdCounts) ifdTotal += double(count);
     const double planes = double(image.sizeZ) * double(planeChannels(image)) * double(image.sizeT);
-    if (planes > double(ifdCount))
+    if (planes > ifdTotal)
         throwInputError(file, "OME-XML Pixels",
-                        "SizeZ x SizeC x SizeT = " + std::to_string(std::uint64_t(planes)) +
-                            " planes, the file has only " + std::to_string(ifdCount) + " IFDs");
+                        "SizeZ x SizeC x SizeT = " + std::to_string(std::uint64_t(planes)) + " planes, the file" +
+                            (names.size() > 1 ? "s have" : " has") + " only " +
+                            std::to_string(std::uint64_t(ifdTotal)) + " IFDs");
     constexpr std::size_t kUnmapped = std::size_t(-1);
-    std::vector<std::size_t> ifds(std::size_t(planes), image.tiffData.empty() ? 0 : kUnmapped);
+    std::vector<OmePlaneRef> refs(std::size_t(planes), OmePlaneRef{0, image.tiffData.empty() ? 0 : kUnmapped});
     if (image.tiffData.empty())
-        for (std::size_t plane = 0; plane < ifds.size(); ++plane) ifds[plane] = firstIfd + plane;
+        for (std::size_t plane = 0; plane < refs.size(); ++plane) refs[plane].ifd = firstIfd + plane;
     for (const OmeTiffData& data : image.tiffData) {
-        if (!data.fileName.empty() && data.fileName != file.filename().string())
-            throwInputError(file, "OME-XML TiffData UUID FileName",
-                            "puts planes in \"" + data.fileName + "\": OME-TIFF data split over several files is not read");
+        const std::size_t fileIndex = data.fileName.empty()
+                                          ? 0
+                                          : std::size_t(std::find(names.begin(), names.end(), data.fileName) -
+                                                        names.begin());
+        const std::size_t ifdCount = ifdCounts[fileIndex];
         if (data.firstZ >= image.sizeZ || data.firstC >= planeChannels(image) || data.firstT >= image.sizeT)
             throwInputError(file, "OME-XML TiffData", "FirstZ, FirstC or FirstT is past the Pixels' sizes");
         const std::size_t start = omePlaneIndex(image, data.firstZ, data.firstC, data.firstT);
         const std::size_t ifd = data.ifd.value_or(0);
-        const std::size_t planeCount = data.planeCount.value_or(data.ifd ? 1 : ifds.size() - start);
-        if (planeCount > ifds.size() - start || ifd + planeCount > ifdCount)
+        // A TiffData that names another file without IFD or PlaneCount is that file's one plane.
+        const std::size_t planeCount =
+            data.planeCount.value_or(data.ifd || fileIndex != 0 ? 1 : refs.size() - start);
+        if (planeCount > refs.size() - start || ifd + planeCount > ifdCount)
             throwInputError(file, "OME-XML TiffData",
                             "IFD " + std::to_string(ifd) + " PlaneCount " + std::to_string(planeCount) +
-                                " runs past the planes or past the file's " + std::to_string(ifdCount) + " IFDs");
-        for (std::size_t k = 0; k < planeCount; ++k) ifds[start + k] = ifd + k;
+                                " runs past the planes or past the " + std::to_string(ifdCount) + " IFDs of " +
+                                names[fileIndex]);
+        for (std::size_t k = 0; k < planeCount; ++k) refs[start + k] = {fileIndex, ifd + k};
     }
-    for (std::size_t plane = 0; plane < ifds.size(); ++plane)
-        if (ifds[plane] >= ifdCount)
+    for (std::size_t plane = 0; plane < refs.size(); ++plane)
+        if (refs[plane].ifd >= ifdCounts[refs[plane].file])  // unmapped, or past the IFDs there are
             throwInputError(file, "OME-XML TiffData",
-                            "no IFD for plane " + std::to_string(plane) + " of " + std::to_string(ifds.size()));
-    return ifds;
+                            "no IFD for plane " + std::to_string(plane) + " of " + std::to_string(refs.size()));
+    return refs;
 }
 
 }  // namespace tstyles

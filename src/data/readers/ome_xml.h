@@ -45,11 +45,21 @@ bool looksLikeOmeXml(const std::string& description);
 // an InputError naming `file` and the attribute.
 std::vector<OmeImage> parseOmeXml(const std::string& xml, const std::filesystem::path& file);
 
-// The IFD of each plane of `image` (planes in DimensionOrder, the first letter after XY fastest),
-// from its TiffData; without TiffData the planes are IFDs `firstIfd`, `firstIfd` + 1, ... A plane
-// no TiffData names, an IFD past `ifdCount` or planes in another file are InputErrors.
-std::vector<std::size_t> omePlaneIfds(const OmeImage& image, std::size_t ifdCount, std::size_t firstIfd,
-                                      const std::filesystem::path& file);
+// The files an Image's planes lie in: `file` itself first, then each other UUID FileName its
+// TiffData names (OME-TIFF split over files, one per time point say), in the order first named.
+std::vector<std::string> omeFileNames(const OmeImage& image, const std::filesystem::path& file);
+
+struct OmePlaneRef {
+    std::size_t file = 0;  // into omeFileNames
+    std::size_t ifd = 0;
+};
+
+// The file and IFD of each plane of `image` (planes in DimensionOrder, the first letter after XY
+// fastest), from its TiffData; without TiffData the planes are IFDs `firstIfd`, `firstIfd` + 1, ...
+// of `file`. `ifdCounts` holds each of omeFileNames' IFD count. A plane no TiffData names or an
+// IFD past its file's count are InputErrors naming `file`.
+std::vector<OmePlaneRef> omePlaneRefs(const OmeImage& image, const std::vector<std::size_t>& ifdCounts,
+                                      std::size_t firstIfd, const std::filesystem::path& file);
 
 // The index of plane (z, c, t) in the DimensionOrder.
 std::size_t omePlaneIndex(const OmeImage& image, std::size_t z, std::size_t c, std::size_t t);

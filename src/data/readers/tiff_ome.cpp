@@ -62,7 +62,7 @@ void setOmeTimes(const OmeImage& image, std::size_t planeChannel, TiffLayout& la
 }  // namespace
 
 TiffLayout omeLayout(TiffFile& tiff, std::vector<TiffPage> pages, const std::vector<OmeImage>& images,
-                     const ReadOptions& options) {
+                     const ReadOptions& options, std::uint64_t cap) {
     const std::filesystem::path& file = tiff.path();
     const std::size_t chosen = chooseImage(images, file);
     const OmeImage& image = images[chosen];
@@ -70,16 +70,33 @@ TiffLayout omeLayout(TiffFile& tiff, std::vector<TiffPage> pages, const std::vec
     std::size_t firstIfd = 0;
     for (std::size_t index = 0; index < chosen; ++index)
         firstIfd += images[index].sizeZ * images[index].sizeT * std::max<std::size_t>(1, images[index].sizeC / images[index].samplesPerPixel);
-    const std::vector<std::size_t> ifds = omePlaneIfds(image, pages.size(), firstIfd, file);
-    requireStepCount(file, "OME-XML Pixels SizeT", image.sizeT);
-
+    // The planes may lie in other files beside this one (one per time point, say): their pages too.
+    const std::vector<std::string> names = omeFileNames(image, file);
     TiffLayout layout;
     layout.format = "OME-TIFF";
     layout.files = {file};
+    layout.pages = {std::move(pages)};
+    for (std::size_t index = 1; index < names.size(); ++index) {
+        const std::filesystem::path other = file.parent_path() / names[index];
+        std::error_code error;
+        if (!std::filesystem::is_regular_file(other, error))
+            throwInputError(file, "OME-XML TiffData UUID FileName",
+                            "puts planes in \"" + names[index] + "\", which is not beside this file");
+        TiffFile otherFile(other, cap);
+        layout.files.push_back(other);
+        layout.pages.push_back(otherFile.readPages());
+    }
+    std::vector<std::size_t> ifdCounts;
+    for (const auto& filePages : layout.pages) ifdCounts.push_back(filePages.size());
+    const std::vector<OmePlaneRef> refs = omePlaneRefs(image, ifdCounts, firstIfd, file);
+    requireStepCount(file, "OME-XML Pixels SizeT", image.sizeT);
+    if (names.size() > 1)
+        layout.notes.push_back("planes in " + std::to_string(names.size()) + " files named by the OME-XML's TiffData");
+
     if (images.size() > 1)
         layout.notes.push_back("Image " + std::to_string(chosen) + " of " + std::to_string(images.size()) + " (ID \"" +
                                image.id + "\", \"" + image.name + "\"): the first that is a volume over time");
-    const TiffPage& firstPage = pages[ifds.front()];
+    const TiffPage& firstPage = layout.pages[refs.front().file][refs.front().ifd];
     if (firstPage.samplesPerPixel != image.samplesPerPixel)
         throwInputError(file, "OME-XML Channel SamplesPerPixel",
                         "is " + std::to_string(image.samplesPerPixel) + ", the TIFF pages have " +
@@ -87,17 +104,18 @@ TiffLayout omeLayout(TiffFile& tiff, std::vector<TiffPage> pages, const std::vec
     if (firstPage.width != image.sizeX || firstPage.height != image.sizeY)
         throwInputError(file, "OME-XML Pixels SizeX",
                         "SizeX x SizeY = " + std::to_string(image.sizeX) + " x " + std::to_string(image.sizeY) +
-                            ", the page (IFD " + std::to_string(ifds.front()) + ") is " + std::to_string(firstPage.width) +
+                            ", the page (IFD " + std::to_string(refs.front().ifd) + ") is " + std::to_string(firstPage.width) +
                             " x " + std::to_string(firstPage.height));
     const ChannelChoice channel =
         chooseChannel(options, image.sizeC / image.samplesPerPixel, image.samplesPerPixel, file, layout.notes);
-    layout.pages = {std::move(pages)};
     layout.sample = channel.sample;
     layout.slices = image.sizeZ;
     layout.steps = image.sizeT;
     for (std::size_t t = 0; t < image.sizeT; ++t)
-        for (std::size_t z = 0; z < image.sizeZ; ++z)
-            layout.planes.push_back({0, ifds[omePlaneIndex(image, z, channel.planeChannel, t)]});
+        for (std::size_t z = 0; z < image.sizeZ; ++z) {
+            const OmePlaneRef& ref = refs[omePlaneIndex(image, z, channel.planeChannel, t)];
+            layout.planes.push_back({ref.file, ref.ifd});
+        }
     requireVolumeShape(layout, file, "OME-XML Pixels SizeZ");
     requireSameLayout(layout);
     layout.notes.push_back("OME-XML: " + std::to_string(image.sizeZ) + " z x " + std::to_string(image.sizeC) + " c x " +

@@ -48,7 +48,7 @@ TiffLayout oneFileLayout(const std::filesystem::path& file, const ReadOptions& o
     const std::string description = tiff.firstDescription();
     if (looksLikeOmeXml(description)) {
         refusePageOptions(file, options, "OME-TIFF");
-        return omeLayout(tiff, std::move(pages), parseOmeXml(description, file), options);
+        return omeLayout(tiff, std::move(pages), parseOmeXml(description, file), options, cap);
     }
     if (isImageJDescription(description)) {
         refusePageOptions(file, options, "ImageJ");

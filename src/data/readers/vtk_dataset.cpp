@@ -10,6 +10,7 @@
 
 #include "tstyles/core/errors.h"
 #include "tstyles/core/input_limits.h"
+#include "tstyles/core/interval.h"
 
 namespace tstyles {
 namespace {
@@ -135,6 +136,15 @@ std::vector<float> assemble(const VtkXmlFile& file, const VtkDataset& dataset, s
 
 }  // namespace
 
+const char* toString(VtkGridKind kind) {
+    switch (kind) {
+        case VtkGridKind::Image: return "ImageData";
+        case VtkGridKind::Rectilinear: return "RectilinearGrid";
+        case VtkGridKind::Structured: return "StructuredGrid";
+    }
+    return "ImageData";
+}
+
 glm::ivec3 VtkExtent::dims() const {
     return {int(bounds[1] - bounds[0] + 1), int(bounds[3] - bounds[2] + 1), int(bounds[5] - bounds[4] + 1)};
 }
@@ -146,7 +156,10 @@ std::uint64_t VtkExtent::pointCount() const {
 
 VtkDataset describeVtkDataset(const VtkXmlFile& file) {
     VtkDataset dataset;
-    dataset.structured = std::string(file.dataset.name()) == "StructuredGrid";
+    const std::string element = file.dataset.name();
+    dataset.kind = element == "StructuredGrid"    ? VtkGridKind::Structured
+                   : element == "RectilinearGrid" ? VtkGridKind::Rectilinear
+                                                  : VtkGridKind::Image;
     dataset.whole = extentIn(file, file.dataset, "WholeExtent");
     // Each axis fits an int and the point count a double exactly; the memory cap decides the rest.
     double points = 1.0;
@@ -162,7 +175,7 @@ VtkDataset describeVtkDataset(const VtkXmlFile& file) {
         throwInputError(file.path, "WholeExtent",
                         "a volume needs at least 2 samples along x, y and z, found " + std::to_string(dims.x) + " x " +
                             std::to_string(dims.y) + " x " + std::to_string(dims.z));
-    if (!dataset.structured) describeFrame(file, dataset);
+    if (dataset.kind == VtkGridKind::Image) describeFrame(file, dataset);
     for (const pugi::xml_node& node : file.dataset.children("Piece"))
         dataset.pieces.push_back(describePiece(file, dataset, node));
     if (dataset.pieces.empty()) throwInputError(file.path, "Piece", "the file has no <Piece>: there is no data");
@@ -192,6 +205,54 @@ std::vector<float> readVtkPointArray(const VtkXmlFile& file, const VtkDataset& d
         throwInputError(file.path, "Piece (line " + std::to_string(lineOf(file, piece.node)) + ")",
                         "has no point array '" + name + "' though the first piece has");
     });
+}
+
+std::array<std::vector<double>, 3> readVtkCoordinates(const VtkXmlFile& file, const VtkDataset& dataset,
+                                                      std::uint64_t memoryCap) {
+    const glm::ivec3 dims = dataset.whole.dims();
+    std::array<std::vector<double>, 3> coordinates;
+    std::array<std::vector<bool>, 3> covered;
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+        coordinates[axis].assign(std::size_t(dims[int(axis)]), 0.0);
+        covered[axis].assign(std::size_t(dims[int(axis)]), false);
+    }
+    for (const VtkPiece& piece : dataset.pieces) {
+        const std::string where = "Coordinates (line " + std::to_string(lineOf(file, piece.node)) + ")";
+        const std::vector<VtkDataArray> arrays = describeArrays(file, piece.node.child("Coordinates"));
+        if (arrays.size() != 3 || arrays[0].components != 1 || arrays[1].components != 1 || arrays[2].components != 1)
+            throwInputError(file.path, where, "a rectilinear grid's piece needs three one-component DataArrays: x, y, z");
+        const glm::ivec3 size = piece.extent.dims();
+        for (std::size_t axis = 0; axis < 3; ++axis) {
+            const std::vector<float> values = readPointValues(file, arrays[axis], std::uint64_t(size[int(axis)]), memoryCap);
+            const std::size_t start = std::size_t(piece.extent.bounds[2 * axis] - dataset.whole.bounds[2 * axis]);
+            for (std::size_t index = 0; index < values.size(); ++index) {
+                const double value = values[index];
+                if (!std::isfinite(value))
+                    throwInputError(file.path, where, std::string(1, "xyz"[axis]) + " coordinate " +
+                                                          std::to_string(index) + " is not finite");
+                double& kept = coordinates[axis][start + index];
+                if (covered[axis][start + index] && kept != value)
+                    throwInputError(file.path, where,
+                                    std::string("the pieces disagree on ") + "xyz"[axis] + " coordinate " +
+                                        std::to_string(start + index) + " of the WholeExtent");
+                kept = value;
+                covered[axis][start + index] = true;
+            }
+        }
+    }
+    for (std::size_t axis = 0; axis < 3; ++axis)
+        for (std::size_t index = 0; index < coordinates[axis].size(); ++index) {
+            if (!covered[axis][index])
+                throwInputError(file.path, "Piece",
+                                std::string("the pieces do not cover the WholeExtent: no piece gives ") + "xyz"[axis] +
+                                    " coordinate " + std::to_string(index));
+            if (index > 0 && !(coordinates[axis][index] > coordinates[axis][index - 1]))
+                throwInputError(file.path, "Coordinates",
+                                std::string("the ") + "xyz"[axis] + " coordinates must increase strictly: " +
+                                    formatNumber(coordinates[axis][index]) + " follows " +
+                                    formatNumber(coordinates[axis][index - 1]));
+        }
+    return coordinates;
 }
 
 std::vector<glm::vec3> readVtkPoints(const VtkXmlFile& file, const VtkDataset& dataset, std::uint64_t memoryCap) {

@@ -1,6 +1,7 @@
-// One .vti (ImageData) or .vts (StructuredGrid) file as a volume: its extent and pieces, its frame
-// (origin, spacing, direction) and its point arrays; the values of one array, or the grid's points,
-// assembled from the pieces that cover the extent.
+// One .vti (ImageData), .vtr (RectilinearGrid) or .vts (StructuredGrid) file as a volume: its
+// extent and pieces, its frame (origin, spacing, direction) and its point arrays; the values of one
+// array, the rectilinear grid's coordinates or the structured grid's points, assembled from the
+// pieces that cover the extent.
 #pragma once
 
 #include <array>
@@ -27,8 +28,13 @@ struct VtkPiece {
     std::vector<VtkDataArray> pointArrays;
 };
 
+enum class VtkGridKind { Image, Rectilinear, Structured };
+
+// "ImageData", "RectilinearGrid", "StructuredGrid": the element VTK names it by.
+const char* toString(VtkGridKind kind);
+
 struct VtkDataset {
-    bool structured = false;  // StructuredGrid (.vts) rather than ImageData (.vti)
+    VtkGridKind kind = VtkGridKind::Image;
     VtkExtent whole;
     glm::dvec3 origin{0.0};
     glm::dvec3 spacing{1.0};
@@ -50,6 +56,11 @@ const VtkDataArray& pointArrayNamed(const VtkXmlFile& file, const VtkDataset& da
 // magnitudes). The pieces must cover the extent.
 std::vector<float> readVtkPointArray(const VtkXmlFile& file, const VtkDataset& dataset, const std::string& name,
                                      std::uint64_t memoryCap);
+
+// A rectilinear grid's x, y and z coordinates over the whole extent, from its pieces' <Coordinates>
+// (pieces that share a line must agree on it); each must increase strictly.
+std::array<std::vector<double>, 3> readVtkCoordinates(const VtkXmlFile& file, const VtkDataset& dataset,
+                                                      std::uint64_t memoryCap);
 
 // A structured grid's node positions over the whole extent, x fastest.
 std::vector<glm::vec3> readVtkPoints(const VtkXmlFile& file, const VtkDataset& dataset, std::uint64_t memoryCap);

@@ -3,6 +3,7 @@
 #include "vtk_reader.h"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include "infinite_values.h"
@@ -115,6 +116,28 @@ OrientedAxes imageFrame(const VtkXmlFile& file, const VtkDataset& dataset) {
     return orientAxes(first, axes, dataset.whole.dims(), file.path, "Spacing and Direction");
 }
 
+// A rectilinear grid's coordinates as a grid with uneven axes where they are uneven: the first
+// node at the placement's origin, the axes along x, y and z.
+void placeRectilinear(const std::array<std::vector<double>, 3>& coordinates, const glm::ivec3& dims, SourceStep& step) {
+    RectilinearGrid grid;
+    grid.dims = dims;
+    Placement placement;
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+        const std::vector<double>& values = coordinates[axis];
+        const double extent = values.back() - values.front();
+        placement.origin[int(axis)] = values.front();
+        grid.spacing[int(axis)] = extent / double(values.size() - 1);
+        // Even within what float32 coordinates can say of the extent.
+        bool even = true;
+        for (std::size_t index = 1; index < values.size(); ++index)
+            even = even && std::abs(values[index] - values[index - 1] - grid.spacing[int(axis)]) <= 1e-5 * extent;
+        if (!even)
+            for (double value : values) grid.axisPositions[axis].push_back(value - values.front());
+    }
+    step.grid = grid;
+    step.placement = placement;
+}
+
 struct StepSource {
     std::filesystem::path file;
     bool mirrorX = false;
@@ -130,7 +153,12 @@ SourceStep describeStep(const VtkCollectionEntry& entry, const std::string& arra
     const auto header = loadVtkXmlFile(entry.file, true, memoryCap);
     const VtkDataset dataset = describeVtkDataset(*header);
     pointArrayNamed(*header, dataset, arrayName);
-    if (dataset.structured) {
+    if (dataset.kind == VtkGridKind::Rectilinear) {
+        const auto file = loadVtkXmlFile(entry.file, false, memoryCap);
+        placeRectilinear(readVtkCoordinates(*file, dataset, memoryCap), dataset.whole.dims(), step);
+        return step;
+    }
+    if (dataset.kind == VtkGridKind::Structured) {
         const auto file = loadVtkXmlFile(entry.file, false, memoryCap);
         StructuredGrid grid = makeStructuredGrid(dataset.whole.dims(), readVtkPoints(*file, dataset, memoryCap), entry.file);
         if (const auto problem = findGridProblem(grid)) throwInputError(entry.file, "Points", *problem);
@@ -150,7 +178,7 @@ SourceStep describeStep(const VtkCollectionEntry& entry, const std::string& arra
 void describeSeries(SourceSeries& series, const std::vector<std::filesystem::path>& files,
                     const VtkCollection& collection, const VtkXmlFile& first, const VtkDataset& dataset,
                     const ArrayChoice& choice) {
-    const std::string kind = dataset.structured ? "StructuredGrid" : "ImageData";
+    const std::string kind = toString(dataset.kind);
     series.name = files.front().stem().string() + " (" + choice.name + ")";
     series.file = files.front();
     series.format = "VTK XML " + kind;

@@ -67,9 +67,10 @@ void findDataset(VtkXmlFile& file) {
     const std::string type = file.root.attribute("type").as_string();
     if (type == "Collection")
         throwInputError(file.path, "type", "is a collection: name it with the .pvd extension");
-    if (type != "ImageData" && type != "StructuredGrid")
+    if (type != "ImageData" && type != "RectilinearGrid" && type != "StructuredGrid")
         throwInputError(file.path, "type",
-                        "VTK XML '" + type + "' data is not read (only ImageData, .vti, and StructuredGrid, .vts)");
+                        "VTK XML '" + type +
+                            "' data is not read (only ImageData, .vti; RectilinearGrid, .vtr; StructuredGrid, .vts)");
     file.dataset = file.root.child(type.c_str());
     if (!file.dataset) throwInputError(file.path, type, "the <" + type + "> element is missing");
 }
