@@ -432,7 +432,9 @@ def write_cine_as_nifti(path):
 
 def write_fuzz_seeds(folder):
     """Seeds of tests/fuzz/corpus/dicom (each under 16 KiB): the enhanced file, an RLE-compressed
-    and a deflated 2-frame enhanced file, and one classic CT slice."""
+    and a deflated 2-frame enhanced file, one classic CT slice, and an RT Dose file placed by
+    GridFrameOffsetVector."""
+    write_rt_dose(os.path.join(folder, "seed-rtdose.dcm"))
     from pydicom.uid import DeflatedExplicitVRLittleEndian, RLELossless
     os.makedirs(folder, exist_ok=True)
     write_enhanced(os.path.join(folder, "seed-enhanced.dcm"))

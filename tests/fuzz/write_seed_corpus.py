@@ -164,6 +164,12 @@ def tiff_seeds():
                      metadata=None)
     tifffile.imwrite(folder / "seed-tiled.tif", (np.arange(3 * 20 * 18, dtype=np.int16) - 300).reshape(3, 20, 18),
                      tile=(16, 16), compression="lzma", metadata=None)
+    # Float data with NaN over "land" (missing data, not an error) and OME sizes in km and m.
+    sea = (np.arange(2 * 2 * 4 * 5, dtype=np.float32) * 0.25).reshape(2, 2, 4, 5)
+    sea[:, :, :, :2] = np.nan
+    tifffile.imwrite(folder / "seed-nan-sea.ome.tif", sea,
+                     metadata={"axes": "TZYX", "PhysicalSizeX": 2.0, "PhysicalSizeXUnit": "km",
+                               "PhysicalSizeZ": 5.0, "PhysicalSizeZUnit": "m"})
 
 
 def main():

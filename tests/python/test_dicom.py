@@ -111,3 +111,38 @@ def test_the_enhanced_multiframe_file_comes_back_as_written(written):
     expected = LPS_TO_RAS @ np.column_stack([(0, 1, 0), (0, 0, -1), (-1, 0, 0)])
     assert rotation_matrix(*step["rotation"]) == pytest.approx(expected, abs=1e-9)
     assert step["origin"] == pytest.approx((0.0, -10.0, 40.0), abs=1e-12)
+
+
+def test_phases_of_one_study_are_time_steps(tmp_path):
+    """The multi-phase CT: found by default (series 3, 5, 4 in acquisition order), or chosen with
+    series="3,4"; the HU of each phase as written."""
+    samples.SAMPLES["phases"](str(tmp_path))
+    series = tstyles.open(tmp_path / "phases")
+    assert series.name == "arterial, portal venous, delayed"
+    assert list(series.times) == [0.0, 50.0, 160.0] and series.time_units == "seconds"
+    assert series.value_unit == "HU"
+    nx, ny, nz = samples.PHASE_DIMS
+    low, high = series.value_range
+    for phase in range(3):
+        expected = np.array([[[samples.phase_value(phase, z, y, x) for x in range(nx)] for y in range(ny)]
+                             for z in range(nz)])
+        assert np.array_equal(series.density(phase), normalised(expected, low, high))
+    chosen = tstyles.open(tmp_path / "phases", series="3,4")
+    assert chosen.name == "arterial, delayed" and list(chosen.times) == [0.0, 160.0]
+    with pytest.raises(ValueError, match="series 2 is 12 x 10 x 5 voxels, not 8 x 8 x 3 of series 1"):
+        tstyles.open(tmp_path / "phases", series="all")
+
+
+def test_rt_dose_is_placed_by_its_frame_offsets_in_gray(tmp_path):
+    samples.SAMPLES["rtdose"](str(tmp_path))
+    series = tstyles.open(tmp_path / "rtdose" / "dose.dcm")
+    assert series.value_unit == "Gy" and len(series) == 1
+    step = series.step(0)
+    assert step["dims"] == samples.DOSE_DIMS and step["spacing"] == (2.0, 2.5, 3.0)
+    nx, ny, nz = samples.DOSE_DIMS
+    expected = np.array([[[samples.dose_stored(z, y, x) * samples.DOSE_SCALING for x in range(nx)] for y in range(ny)]
+                         for z in range(nz)])
+    low, high = series.value_range
+    # Values are decoded to float32 (stored x DoseGridScaling), so the range is the float32 of each end.
+    assert (low, high) == (float(np.float32(expected.min())), float(np.float32(expected.max())))
+    assert np.allclose(series.density(0), normalised(expected, low, high), rtol=0, atol=1e-6)
