@@ -416,6 +416,15 @@ case_dicomdir_file_missing() {
     run_tstyles -- info "$CD/dicomdir"
     expect_exit 2
     expect_error_line "$CD/dicomdir" "" "(0004,1500) ReferencedFileID: \"CT\\CT2\" names $CD/ct/CT2, which is not there"
+    # A record that climbs out of the disc's folder is refused before anything is opened there.
+    "$PYTHON" -W ignore -c "
+import sys, pydicom
+ds = pydicom.dcmread(sys.argv[1])
+next(r for r in ds.DirectoryRecordSequence if 'ReferencedFileID' in r).ReferencedFileID = ['..', 'etc', 'passwd']
+ds.save_as(sys.argv[1])" "$CD/dicomdir" || fail "could not rewrite the DICOMDIR"
+    run_tstyles -- info "$CD/dicomdir"
+    expect_exit 2
+    expect_error_line "$CD/dicomdir" "" "\"..\\etc\\passwd\" is not a path inside the DICOMDIR's folder"
 }
 
 case_view_folder() {
