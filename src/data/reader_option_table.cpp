@@ -68,9 +68,9 @@ std::vector<ReaderOptionLine> buildLines() {
                      [](ReadOptions& o, const auto& t, const auto&) { o.pageAxes = lastGiven(t); },
                      [](const ReadOptions& o) { return !o.pageAxes.empty(); }});
     lines.push_back({"level", "--level", "level", Kind::WholeNumber, "N", 0, kLargestWholeNumber, false, {},
-                     "the finest that fits",
-                     "OME-Zarr: the resolution level, 0 the finest (default: the finest that fits the memory limits; "
-                     "`info` says which)",
+                     "the finest that fits (OME-Zarr), 0 (OME-TIFF)",
+                     "OME-Zarr, OME-TIFF pyramids (SubIFDs): the resolution level, 0 the finest (default: OME-Zarr, "
+                     "the finest that fits the memory limits; OME-TIFF, 0; `info` says which)",
                      true, false, [](ReadOptions& o, const auto& t, const auto&) { o.level = std::stoi(lastGiven(t)); },
                      [](const ReadOptions& o) { return o.level.has_value(); }});
     lines.push_back({"precision", "--precision", "precision", Kind::Choice, "BITS", 0, 0, false, {"8", "16", "32"}, "16",

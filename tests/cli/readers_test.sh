@@ -368,7 +368,7 @@ case_option_values_outside_their_bounds() {
     expect_stderr_contains '--precision: must be 8, 16 or 32; got "12"'
     run_tstyles -- info "$DATASET" --level 1
     expect_exit 2
-    expect_error_line "$DATASET" "--level" "applies to the files a reader reads (OME-Zarr), not to a tstyles manifest"
+    expect_error_line "$DATASET" "--level" "applies to the files a reader reads (OME-Zarr, TIFF), not to a tstyles manifest"
 }
 
 case_solution_on_netcdf() {

@@ -109,6 +109,32 @@ case_ome_across_files() {
         "puts planes in \"lapse_t2.ome.tif\", which is not beside this file"
 }
 
+# An OME-TIFF pyramid (tifffile, SubIFDs): the full resolution by default, --level 1 and 2 read the
+# halved and quartered planes with the spacing grown to match; a level past the pyramid, or --level
+# on a TIFF without one, is refused.
+case_ome_pyramid_level() {
+    samples
+    run_tstyles -- info "$S/pyramid.ome.tif"
+    expect_exit 0
+    expect_stdout_contains "Read: resolution level 0 of 3 (SubIFDs): 20 x 16 pixels a plane (the full resolution; --level chooses another)"
+    expect_stdout_contains "rectilinear 20x16x3"
+    run_tstyles -- info "$S/pyramid.ome.tif" --level 2
+    expect_exit 0
+    expect_stdout_contains "Read: resolution level 2 of 3 (SubIFDs): 5 x 4 pixels a plane (--level)"
+    expect_stdout_contains "rectilinear 5x4x3"
+    expect_stdout_contains "(1, 1, 1)"
+    run_tstyles -- convert "$S/pyramid.ome.tif" --level 1 -o "$SCRATCH/out"
+    expect_exit 0
+    # Level 1 is every other pixel: its (x, y) = (3, 2) is the full (6, 4): t 1, z 2 gives 1000 + 200 + 20 + 6.
+    expect_float_at "$SCRATCH/out/t01.raw" $((3 + 10 * (2 + 8 * 2))) 1226
+    run_tstyles -- info "$S/pyramid.ome.tif" --level 3
+    expect_exit 2
+    expect_error_line "$S/pyramid.ome.tif" "--level" "is 3: this OME-TIFF has 3 resolution levels (0 to 2, in its planes' SubIFDs)"
+    run_tstyles -- info "$S/hyperstack.tif" --level 1
+    expect_exit 2
+    expect_error_line "$S/hyperstack.tif" "--level" "chooses a level of an OME-TIFF pyramid (SubIFDs); this ImageJ file has one resolution"
+}
+
 # NaN over land in a float OME-TIFF is missing data: counted, out of the range, NaN in what convert
 # writes, transparent in the picture (TIFF has no missing-value marker). Sizes in km and m.
 case_nan_over_land() {

@@ -85,6 +85,23 @@ def write_lapse_files(folder):
                          description=xml, metadata=None)
 
 
+def pyramid_values():
+    """The full resolution of the pyramid: TZYX uint16 (2 x 3 x 16 x 20), t * 1000 + z * 100 + y * 5 + x."""
+    t, z, y, x = np.indices((2, 3, 16, 20))
+    return (t * 1000 + z * 100 + y * 5 + x).astype(np.uint16)
+
+
+def write_pyramid(path):
+    """An OME-TIFF pyramid as tifffile writes one: the full planes, each with two SubIFDs holding
+    it at a half and a quarter of the size (every other pixel of the level above)."""
+    full = pyramid_values()
+    with tifffile.TiffWriter(path, ome=True) as tif:
+        tif.write(full, subifds=2, metadata={"axes": "TZYX", "PhysicalSizeX": 0.25, "PhysicalSizeY": 0.25,
+                                             "PhysicalSizeZ": 1.0})
+        tif.write(full[:, :, ::2, ::2], subfiletype=1)
+        tif.write(full[:, :, ::4, ::4], subfiletype=1)
+
+
 def rgb_values():
     z, y, x, s = np.indices((4, 5, 6, 3))
     return (z * 20 + y * 5 + x + s * 60).astype(np.uint8)
@@ -106,6 +123,7 @@ def write_good(folder):
                      predictor=True, metadata={"axes": "TZYX"})
     tifffile.imwrite(os.path.join(folder, "plain.tif"), plain_values(), photometric="minisblack", metadata=None)
     write_lapse_files(folder)
+    write_pyramid(os.path.join(folder, "pyramid.ome.tif"))
     tifffile.imwrite(os.path.join(folder, "ocean.ome.tif"), ocean_values(),
                      metadata={"axes": "TZYX", "PhysicalSizeX": 2.0, "PhysicalSizeXUnit": "km", "PhysicalSizeY": 2.0,
                                "PhysicalSizeYUnit": "km", "PhysicalSizeZ": 5.0, "PhysicalSizeZUnit": "m"})

@@ -111,7 +111,7 @@ TEST(ReaderOptionTable, TheOpenerRefusesFromTheTable) {
         openSeries(manifest, options);
         FAIL() << "a manifest took --level";
     } catch (const InputError& error) {
-        EXPECT_NE(std::string(error.what()).find("--level: applies to the files a reader reads (OME-Zarr), not to a "
+        EXPECT_NE(std::string(error.what()).find("--level: applies to the files a reader reads (OME-Zarr, TIFF), not to a "
                                                  "tstyles manifest"),
                   std::string::npos)
             << error.what();

@@ -40,7 +40,7 @@ struct ReadOptions {
     std::optional<int> channel;                    // TIFF, OME-Zarr: which channel of a multi-channel image (--channel)
     std::string seriesChoice;                      // DICOM: the series, by instance UID or number in `info` (--series)
     std::string pageAxes;                          // plain TIFF: what the pages are, slowest first, e.g. TZYX (--axes)
-    std::optional<int> level;                      // OME-Zarr: the resolution level, 0 the finest (--level)
+    std::optional<int> level;                      // OME-Zarr, OME-TIFF: the resolution level, 0 the finest (--level)
     std::optional<std::uint64_t> maxMemoryBytes;   // --max-memory
     MemoryFit fit = MemoryFit::Refuse;             // --fit
     DensityPrecision precision = DensityPrecision::Bits16;  // --precision

@@ -66,7 +66,7 @@ const std::vector<SeriesFormat>& seriesFormats() {
          isOmeZarrFolder},
         // Microscopy: one file, a list of files or a folder of them, read as pages (tiff_reader.h).
         {"TIFF", {".tif", ".tiff"}, {{"image/tiff"}}, ".tif .tiff (ImageJ, OME-TIFF, plain pages), or a folder of them",
-         {"--channel", "--dims", "--axes"}, hasTiffSignature, openTiff, isTiffFolder},
+         {"--channel", "--dims", "--axes", "--level"}, hasTiffSignature, openTiff, isTiffFolder},
         // Last: its content sniff reads the whole file to find a layout that fits. No MIME type: its
         // names (.xyz, .x, .g) are other formats' too, and its files have no magic.
         {kPlot3DFormatName, {".xyz", ".x", ".g", ".grd"}, {}, ".xyz .x .g .grd, with --solution",

@@ -144,6 +144,31 @@ void checkPage(TIFF* tiff, const TiffPage& page, const std::filesystem::path& fi
                         "is " + std::to_string(page.compression) + ", a compression this libtiff cannot decode");
 }
 
+// The current directory's description (its tags as they are, not yet checked).
+TiffPage describeCurrentPage(TIFF* tiff) {
+    TiffPage page;
+    page.ifdOffset = TIFFCurrentDirOffset(tiff);
+    TIFFGetField(tiff, TIFFTAG_IMAGEWIDTH, &page.width);
+    TIFFGetField(tiff, TIFFTAG_IMAGELENGTH, &page.height);
+    TIFFGetFieldDefaulted(tiff, TIFFTAG_SAMPLESPERPIXEL, &page.samplesPerPixel);
+    TIFFGetFieldDefaulted(tiff, TIFFTAG_BITSPERSAMPLE, &page.bitsPerSample);
+    TIFFGetFieldDefaulted(tiff, TIFFTAG_SAMPLEFORMAT, &page.sampleFormat);
+    std::uint16_t planar = PLANARCONFIG_CONTIG;
+    TIFFGetFieldDefaulted(tiff, TIFFTAG_PLANARCONFIG, &planar);
+    page.planarSeparate = planar == PLANARCONFIG_SEPARATE && page.samplesPerPixel > 1;
+    page.tiled = TIFFIsTiled(tiff) != 0;
+    TIFFGetFieldDefaulted(tiff, TIFFTAG_COMPRESSION, &page.compression);
+    float resolution = 0.0f;
+    if (TIFFGetField(tiff, TIFFTAG_XRESOLUTION, &resolution) == 1) page.xResolution = resolution;
+    if (TIFFGetField(tiff, TIFFTAG_YRESOLUTION, &resolution) == 1) page.yResolution = resolution;
+    TIFFGetFieldDefaulted(tiff, TIFFTAG_RESOLUTIONUNIT, &page.resolutionUnit);
+    std::uint16_t subIfdCount = 0;
+    std::uint64_t* subIfds = nullptr;
+    if (TIFFGetField(tiff, TIFFTAG_SUBIFD, &subIfdCount, &subIfds) == 1 && subIfds != nullptr)
+        page.subIfds.assign(subIfds, subIfds + subIfdCount);
+    return page;
+}
+
 }  // namespace
 
 std::vector<TiffPage> TiffFile::readPages() {
@@ -151,22 +176,7 @@ std::vector<TiffPage> TiffFile::readPages() {
     std::vector<TiffPage> pages;
     if (TIFFSetDirectory(tiff, 0) == 0) fail(pageField(0), "cannot be read");
     do {
-        TiffPage page;
-        page.ifdOffset = TIFFCurrentDirOffset(tiff);
-        TIFFGetField(tiff, TIFFTAG_IMAGEWIDTH, &page.width);
-        TIFFGetField(tiff, TIFFTAG_IMAGELENGTH, &page.height);
-        TIFFGetFieldDefaulted(tiff, TIFFTAG_SAMPLESPERPIXEL, &page.samplesPerPixel);
-        TIFFGetFieldDefaulted(tiff, TIFFTAG_BITSPERSAMPLE, &page.bitsPerSample);
-        TIFFGetFieldDefaulted(tiff, TIFFTAG_SAMPLEFORMAT, &page.sampleFormat);
-        std::uint16_t planar = PLANARCONFIG_CONTIG;
-        TIFFGetFieldDefaulted(tiff, TIFFTAG_PLANARCONFIG, &planar);
-        page.planarSeparate = planar == PLANARCONFIG_SEPARATE && page.samplesPerPixel > 1;
-        page.tiled = TIFFIsTiled(tiff) != 0;
-        TIFFGetFieldDefaulted(tiff, TIFFTAG_COMPRESSION, &page.compression);
-        float resolution = 0.0f;
-        if (TIFFGetField(tiff, TIFFTAG_XRESOLUTION, &resolution) == 1) page.xResolution = resolution;
-        if (TIFFGetField(tiff, TIFFTAG_YRESOLUTION, &resolution) == 1) page.yResolution = resolution;
-        TIFFGetFieldDefaulted(tiff, TIFFTAG_RESOLUTIONUNIT, &page.resolutionUnit);
+        TiffPage page = describeCurrentPage(tiff);
         checkPage(tiff, page, file_, pages.size());
         pages.push_back(page);
         diagnostics_->lastError.clear();
@@ -174,6 +184,19 @@ std::vector<TiffPage> TiffFile::readPages() {
     // The end of the chain and a damaged directory both stop the loop; only the second complains.
     if (!diagnostics_->lastError.empty()) fail(pageField(pages.size()), "cannot be read");
     return pages;
+}
+
+TiffPage TiffFile::readSubPage(const TiffPage& page, std::size_t level, std::size_t index) {
+    TIFF* tiff = asTiff(tiff_);
+    diagnostics_->lastError.clear();
+    if (level == 0 || level > page.subIfds.size())
+        fail(pageField(index) + " SubIFDs", "has no level " + std::to_string(level));
+    if (TIFFSetSubDirectory(tiff, page.subIfds[level - 1]) == 0)
+        fail(pageField(index) + " SubIFD " + std::to_string(level - 1), "cannot be read");
+    TiffPage sub = describeCurrentPage(tiff);
+    checkPage(tiff, sub, file_, index);
+    sub.subIfds.clear();
+    return sub;
 }
 
 std::string TiffFile::firstDescription() {

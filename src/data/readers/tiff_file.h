@@ -17,6 +17,8 @@ namespace tstyles {
 // sample type we read.
 struct TiffPage {
     std::uint64_t ifdOffset = 0;  // where its directory is, to come back to it directly
+    // Its SubIFDs: the same plane at coarser resolutions (an OME-TIFF pyramid), finest first.
+    std::vector<std::uint64_t> subIfds;
     std::uint32_t width = 0;
     std::uint32_t height = 0;
     std::uint16_t samplesPerPixel = 1;
@@ -48,6 +50,8 @@ public:
     const std::filesystem::path& path() const { return file_; }
     // Every page (IFD) in file order, each checked (sample type, compression, photometric).
     std::vector<TiffPage> readPages();
+    // `page`'s reduced-resolution copy at pyramid `level` (1: its first SubIFD), checked like a page.
+    TiffPage readSubPage(const TiffPage& page, std::size_t level, std::size_t index);
     // The first page's ImageDescription (ImageJ or OME metadata live there); empty when none.
     std::string firstDescription();
     bool byteSwapped() const;

@@ -3,6 +3,10 @@
 #include "tiff_ome.h"
 
 #include <algorithm>
+#include <limits>
+#include <memory>
+#include <set>
+#include <utility>
 
 #include "series_assembly.h"
 #include "tstyles/core/errors.h"
@@ -59,6 +63,39 @@ void setOmeTimes(const OmeImage& image, std::size_t planeChannel, TiffLayout& la
                                  : std::string("no DeltaT or TimeIncrement: time-steps are numbered 0, 1, 2, ..."));
 }
 
+// A pyramid's level (SubIFDs of every plane, finest first): --level, else the full resolution.
+// The chosen planes' pages become that level's, and x and y spacing grow by the downsampling.
+void chooseLevel(const ReadOptions& options, std::vector<TiffFile*> files, TiffLayout& layout,
+                 const std::filesystem::path& file) {
+    std::size_t levels = std::numeric_limits<std::size_t>::max();
+    for (const TiffPlaneRef& plane : layout.planes)
+        levels = std::min(levels, 1 + layout.pages[plane.file][plane.page].subIfds.size());
+    if (options.level && std::size_t(*options.level) >= levels)
+        throwInputError(file, "--level",
+                        "is " + std::to_string(*options.level) + ": this OME-TIFF has " + std::to_string(levels) +
+                            (levels == 1 ? " resolution level (0: no SubIFDs)"
+                                         : " resolution levels (0 to " + std::to_string(levels - 1) +
+                                               ", in its planes' SubIFDs)"));
+    const std::size_t level = std::size_t(options.level.value_or(0));
+    const TiffPage full = layout.firstPage();
+    if (level > 0) {
+        std::set<std::pair<std::size_t, std::size_t>> done;
+        for (const TiffPlaneRef& plane : layout.planes)
+            if (done.insert({plane.file, plane.page}).second) {
+                TiffPage& page = layout.pages[plane.file][plane.page];
+                page = files[plane.file]->readSubPage(page, level, plane.page);
+            }
+        const TiffPage& reduced = layout.firstPage();
+        layout.spacing.x *= double(full.width) / double(reduced.width);
+        layout.spacing.y *= double(full.height) / double(reduced.height);
+    }
+    if (levels > 1)
+        layout.notes.push_back("resolution level " + std::to_string(level) + " of " + std::to_string(levels) +
+                               " (SubIFDs): " + std::to_string(layout.firstPage().width) + " x " +
+                               std::to_string(layout.firstPage().height) + " pixels a plane" +
+                               (options.level ? " (--level)" : " (the full resolution; --level chooses another)"));
+}
+
 }  // namespace
 
 TiffLayout omeLayout(TiffFile& tiff, std::vector<TiffPage> pages, const std::vector<OmeImage>& images,
@@ -76,15 +113,16 @@ TiffLayout omeLayout(TiffFile& tiff, std::vector<TiffPage> pages, const std::vec
     layout.format = "OME-TIFF";
     layout.files = {file};
     layout.pages = {std::move(pages)};
+    std::vector<std::unique_ptr<TiffFile>> otherFiles;
     for (std::size_t index = 1; index < names.size(); ++index) {
         const std::filesystem::path other = file.parent_path() / names[index];
         std::error_code error;
         if (!std::filesystem::is_regular_file(other, error))
             throwInputError(file, "OME-XML TiffData UUID FileName",
                             "puts planes in \"" + names[index] + "\", which is not beside this file");
-        TiffFile otherFile(other, cap);
+        otherFiles.push_back(std::make_unique<TiffFile>(other, cap));
         layout.files.push_back(other);
-        layout.pages.push_back(otherFile.readPages());
+        layout.pages.push_back(otherFiles.back()->readPages());
     }
     std::vector<std::size_t> ifdCounts;
     for (const auto& filePages : layout.pages) ifdCounts.push_back(filePages.size());
@@ -122,6 +160,10 @@ TiffLayout omeLayout(TiffFile& tiff, std::vector<TiffPage> pages, const std::vec
                            std::to_string(image.sizeT) + " t, DimensionOrder " + image.dimensionOrder);
     setOmeSpacing(image, layout);
     setOmeTimes(image, channel.planeChannel, layout);
+    std::vector<TiffFile*> files{&tiff};
+    for (const auto& other : otherFiles) files.push_back(other.get());
+    chooseLevel(options, files, layout, file);
+    requireVolumeShape(layout, file, "--level");
     return layout;
 }
 

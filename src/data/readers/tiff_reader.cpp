@@ -42,6 +42,13 @@ void refusePageOptions(const std::filesystem::path& file, const ReadOptions& opt
                         "applies to plain TIFF pages; this " + format + " file says its own layout");
 }
 
+// --level reads an OME-TIFF pyramid's SubIFDs; other TIFF layouts have one resolution.
+void refuseLevel(const std::filesystem::path& file, const ReadOptions& options, const std::string& format) {
+    if (options.level)
+        throwInputError(file, "--level",
+                        "chooses a level of an OME-TIFF pyramid (SubIFDs); this " + format + " has one resolution");
+}
+
 TiffLayout oneFileLayout(const std::filesystem::path& file, const ReadOptions& options, std::uint64_t cap) {
     TiffFile tiff(file, cap);
     std::vector<TiffPage> pages = tiff.readPages();
@@ -52,13 +59,16 @@ TiffLayout oneFileLayout(const std::filesystem::path& file, const ReadOptions& o
     }
     if (isImageJDescription(description)) {
         refusePageOptions(file, options, "ImageJ");
+        refuseLevel(file, options, "ImageJ file");
         return imagejLayout(tiff, std::move(pages), parseImageJDescription(description, file), options);
     }
+    refuseLevel(file, options, "TIFF of plain pages");
     return pageLayout({file}, {std::move(pages)}, nullptr, options);
 }
 
 // Every file's pages as slices; the first file's ImageJ description, if any, for the spacing.
 TiffLayout listLayout(const std::vector<std::filesystem::path>& files, const ReadOptions& options, std::uint64_t cap) {
+    refuseLevel(files.front(), options, "list of TIFF files");
     std::vector<std::vector<TiffPage>> pages;
     std::optional<ImageJDescription> imagej;
     for (const auto& file : files) {
