@@ -163,7 +163,9 @@ TiffLayout omeLayout(TiffFile& tiff, std::vector<TiffPage> pages, const std::vec
     std::vector<TiffFile*> files{&tiff};
     for (const auto& other : otherFiles) files.push_back(other.get());
     chooseLevel(options, files, layout, file);
+    // A level's pages are checked as the full ones were: every plane the size and type of the first.
     requireVolumeShape(layout, file, "--level");
+    requireSameLayout(layout);
     return layout;
 }
 
