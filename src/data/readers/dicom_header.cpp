@@ -14,6 +14,7 @@
 #include "dicom_elements.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/core/input_limits.h"
+#include "tstyles/core/interval.h"
 
 namespace tstyles {
 namespace {
@@ -131,7 +132,7 @@ DicomFrame readFrame(const FrameSources& sources, std::size_t index) {
         slope ? std::nullopt : dicomNumber(sources.top, kDoseGridScaling, "DoseGridScaling", sources.context);
     if (doseScaling && !(*doseScaling > 0.0))
         throwInputError(sources.context.file, dicomTagName(kDoseGridScaling, "DoseGridScaling"),
-                        "is " + std::to_string(*doseScaling) + ": the dose per stored value must be above 0");
+                        "is " + formatNumber(*doseScaling) + ": the dose per stored value must be above 0");
     frame.rescaleSlope = slope.value_or(doseScaling.value_or(1.0));
     frame.slopeIsDoseScaling = doseScaling.has_value();
     frame.rescaleIntercept = intercept.value_or(0.0);
@@ -192,9 +193,9 @@ void placeFramesByOffsets(const DicomFrame& first, std::size_t frames, const gdc
         for (std::size_t i = 0; i < 6; ++i) isAxial = isAxial && std::abs(cosines[i] - axial[i]) < 1e-6;
         if (!isAxial || std::abs(offsets.front() - origin.z) > 1e-3)
             throwInputError(context.file, field,
-                            "starts at " + std::to_string(offsets.front()) +
+                            "starts at " + formatNumber(offsets.front()) +
                                 ": offsets start at 0 (from the first frame), or at the first frame's z (" +
-                                std::to_string(origin.z) + ") where the orientation is axial (1\\0\\0\\0\\1\\0)");
+                                formatNumber(origin.z) + ") where the orientation is axial (1\\0\\0\\0\\1\\0)");
         for (double& offset : offsets) offset -= origin.z;
         image.framePlacement = "frames placed by GridFrameOffsetVector (3004,000C), z coordinates";
     }
