@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <utility>
 
 #include "tstyles/core/errors.h"
+#include "tstyles/data/axis_nodes.h"
 
 namespace tstyles {
 namespace {
@@ -58,14 +60,10 @@ CfSpatialAxis cfSpatialAxis(const std::string& name, const CfAttributes& attribu
     for (std::size_t index = 1; index < values.size(); ++index)
         if (!(values[index] > values[index - 1]))
             throwInputError(source, name, "coordinate variable is not strictly monotonic");
-    frame.origin = values.front();
-    const double extent = values.back() - values.front();
-    frame.spacing = extent / double(values.size() - 1);
-    bool even = true;
-    for (std::size_t index = 1; index < values.size(); ++index)
-        even = even && std::abs((values[index] - values[index - 1]) - frame.spacing) <= 1e-6 * frame.spacing;
-    if (!even)
-        for (double value : values) frame.positions.push_back(value - values.front());
+    AxisNodes nodes = axisNodesOf(values, 1e-6);
+    frame.origin = nodes.origin;
+    frame.spacing = nodes.spacing;
+    frame.positions = std::move(nodes.positions);
     return frame;
 }
 

@@ -3,7 +3,6 @@
 #include "vtk_reader.h"
 
 #include <algorithm>
-#include <cmath>
 #include <memory>
 
 #include "infinite_values.h"
@@ -13,6 +12,7 @@
 #include "tstyles/core/ascii_case.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/core/input_limits.h"
+#include "tstyles/data/axis_nodes.h"
 
 namespace tstyles {
 namespace {
@@ -123,16 +123,11 @@ void placeRectilinear(const std::array<std::vector<double>, 3>& coordinates, con
     grid.dims = dims;
     Placement placement;
     for (std::size_t axis = 0; axis < 3; ++axis) {
-        const std::vector<double>& values = coordinates[axis];
-        const double extent = values.back() - values.front();
-        placement.origin[int(axis)] = values.front();
-        grid.spacing[int(axis)] = extent / double(values.size() - 1);
-        // Even within what float32 coordinates can say of the extent.
-        bool even = true;
-        for (std::size_t index = 1; index < values.size(); ++index)
-            even = even && std::abs(values[index] - values[index - 1] - grid.spacing[int(axis)]) <= 1e-5 * extent;
-        if (!even)
-            for (double value : values) grid.axisPositions[axis].push_back(value - values.front());
+        // Even within what float32 coordinates can say: 1e-5 of the extent, (count - 1) mean gaps.
+        AxisNodes nodes = axisNodesOf(coordinates[axis], 1e-5 * double(coordinates[axis].size() - 1));
+        placement.origin[int(axis)] = nodes.origin;
+        grid.spacing[int(axis)] = nodes.spacing;
+        grid.axisPositions[axis] = std::move(nodes.positions);
     }
     step.grid = grid;
     step.placement = placement;
