@@ -9,7 +9,8 @@
 # Runs under nice: the machine is shared. docs/testing.md, "Fuzzing".
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-targets_all=(manifest scene nrrd netcdf netcdf_header nifti isabel plot3d style_image zarr vtk tiff dicom)
+targets_all=(manifest scene nrrd netcdf netcdf_header nifti isabel plot3d style_image zarr vtk vtk_legacy vtk_parallel tiff dicom
+             dicomdir)
 if [[ $# -ne 2 || ! $2 =~ ^[0-9]+$ ]]; then
     echo "usage: tools/fuzz.sh TARGET|all SECONDS   (targets: ${targets_all[*]})" >&2
     exit 2
@@ -24,7 +25,7 @@ seconds=$2
 # The targets that read through a reader process, as the program reads NetCDF-4 and DICOM (a fork
 # for each input, tests/fuzz/fuzz_series_file.h), run a tenth of the N inputs: 20 000 forks of an
 # instrumented fuzzer took 262 s for NetCDF and over 13 minutes for DICOM on 2 cores.
-forking_targets=" netcdf dicom "
+forking_targets=" netcdf dicom dicomdir "
 build="$root/build-fuzz"
 
 launcher=()

@@ -21,7 +21,7 @@ std::vector<ReaderOptionLine> buildLines() {
     std::vector<ReaderOptionLine> lines;
     lines.push_back({"var", "--var", "var", Kind::Text, "NAME", 0, 0, false, {}, "",
                      "NetCDF: the variable to read; Plot3D: density, x-momentum, y-momentum, z-momentum, energy, "
-                     "momentum-magnitude, pressure, or function-K for function (.f) files; VTK XML: the point-data "
+                     "momentum-magnitude, pressure, or function-K for function (.f) files; VTK: the point-data "
                      "array (a vector is read as its magnitude)",
                      true, false, [](ReadOptions& o, const auto& t, const auto&) { o.variable = lastGiven(t); },
                      [](const ReadOptions& o) { return !o.variable.empty(); }});

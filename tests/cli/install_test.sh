@@ -219,7 +219,7 @@ case_deb_package_contents() {
     local description
     description=$(dpkg-deb -f "$deb" Description)
     local format
-    for format in NetCDF NIfTI "VTK XML" DICOM OME-Zarr TIFF Plot3D; do
+    for format in NetCDF NIfTI VTK DICOM OME-Zarr TIFF Plot3D; do
         case "$description" in *"$format"*) ;; *) fail "the description lacks $format: $description" ;; esac
     done
     local depends

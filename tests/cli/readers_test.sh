@@ -382,7 +382,7 @@ case_option_for_another_format() {
     samples
     run_tstyles -- info "$S/volume.nrrd" --var temp
     expect_exit 2
-    expect_error_line "$S/volume.nrrd" "--var" "does not apply to NRRD files (only to NetCDF and VTK XML and Plot3D)"
+    expect_error_line "$S/volume.nrrd" "--var" "does not apply to NRRD files (only to NetCDF and VTK and Plot3D)"
     run_tstyles -- info "$S/ocean.nc" --var temp --dims 6x5x4
     expect_exit 2
     expect_error_line "$S/ocean.nc" "--dims" "only to Hurricane Isabel raw"

@@ -268,4 +268,124 @@ case_bad_lists() {
     expect_error_line "$S/plume.pvd" "" "a .pvd or .series file is a whole series: give it alone"
 }
 
+# VTK's parallel writers: a .pvti, .pvtr and .pvts, each listing a file per piece. The image reads
+# the values whole.vti holds, the rectilinear grid the known temperature and its uneven z levels,
+# the structured grid (the same analytic source on points) the values of whole.vti again.
+case_parallel_files() {
+    samples
+    local P="$S/parallel"
+    run_tstyles -- info "$P/pieces.pvti"
+    expect_exit 0
+    expect_stdout_contains "Format: VTK XML ImageData"
+    expect_stdout_contains "pieces.pvti is parallel: 3 pieces in 3 files, assembled into its WholeExtent"
+    run_tstyles -- convert "$P/pieces.pvti" -o "$SCRATCH/pvti"
+    expect_exit 0
+    run_tstyles -- convert "$S/whole.vti" -o "$SCRATCH/whole"
+    expect_exit 0
+    cmp -s "$SCRATCH/pvti/t00.raw" "$SCRATCH/whole/t00.raw" || fail "pieces.pvti and whole.vti read differently"
+    run_tstyles -- info "$P/depth.pvtr"
+    expect_exit 0
+    expect_stdout_contains "depth.pvtr is parallel: 2 pieces in 2 files"
+    expect_stdout_contains "World bounds: (10, -2, 0) to (12, 1, 3)"
+    run_tstyles -- convert "$P/depth.pvtr" -o "$SCRATCH/pvtr"
+    expect_exit 0
+    "$VTK_PYTHON" "$SAMPLES_WRITER" check "$SCRATCH/pvtr/t00.raw" temperature 0 || fail "depth.pvtr's temperature differs"
+    grep -q '"z": \[0.0, 1.0, 3.0\]' "$SCRATCH/pvtr/series.json" || fail "depth.pvtr's uneven z levels were not kept"
+    run_tstyles -- info "$P/pieces.pvts"
+    expect_exit 0
+    expect_stdout_contains "Format: VTK XML StructuredGrid"
+    expect_stdout_contains "structured 10x8x6"
+    run_tstyles -- convert "$P/pieces.pvts" -o "$SCRATCH/pvts"
+    expect_exit 0
+    cmp -s "$SCRATCH/pvts/t00.raw" "$SCRATCH/whole/t00.raw" || fail "pieces.pvts and whole.vti read different values"
+    run_tstyles -- render "$P/pieces.pvti" -o "$SCRATCH/pvti.png" --backend osmesa --width 64 --height 64
+    expect_exit 0
+    expect_image "$SCRATCH/pvti.png" 64 64
+}
+
+# A parallel file whose piece file is missing, or of another frame: refused, naming the piece.
+case_parallel_refusals() {
+    samples
+    local P="$S/parallel"
+    local line
+    line=$(grep -n 'Source="pieces_1.vti"' "$P/pieces.pvti" | cut -d: -f1)
+    mv "$P/pieces_1.vti" "$P/moved.vti"
+    expect_refused "$P/pieces.pvti" "Piece (line $line)" "Source 'pieces_1.vti': the file '$P/pieces_1.vti' does not exist"
+    # The piece file is what is wrong: the message names it.
+    sed -e 's/Origin="0 0 0"/Origin="0.5 0 0"/' "$P/moved.vti" >"$P/pieces_1.vti"
+    run_tstyles -- info "$P/pieces.pvti"
+    expect_exit 2
+    expect_error_line "$P/pieces_1.vti" "Origin" "differs from the Origin of pieces.pvti: the pieces of one image share its frame"
+    sed -e 's/ImageData/RectilinearGrid/g' "$P/moved.vti" >"$P/pieces_1.vti"
+    run_tstyles -- info "$P/pieces.pvti"
+    expect_exit 2
+    expect_error_line "$P/pieces_1.vti" "type" "a piece of pieces.pvti must be ImageData data, not RectilinearGrid"
+}
+
+# Legacy .vtk files written by VTK's legacy writers: the known arrays come back exactly from ASCII
+# and BINARY files of versions 5.1 and 4.2, the FIELD arrays by --var, the rectilinear grid's uneven
+# levels and the structured grid's points are kept.
+case_legacy_files() {
+    samples
+    for variant in legacy_ascii legacy_binary legacy_binary_42; do
+        converted_values_equal "$variant" temperature 0 -- "$S/$variant.vtk"
+        converted_values_equal "$variant-pressure" pressure 0 -- "$S/$variant.vtk" --var pressure
+        converted_values_equal "$variant-velocity" velocity-magnitude 0 -- "$S/$variant.vtk" --var velocity
+    done
+    run_tstyles -- info "$S/legacy_binary.vtk"
+    expect_exit 0
+    expect_stdout_contains "Format: VTK legacy STRUCTURED_POINTS"
+    expect_stdout_contains "point array 'temperature' (Float32, the active Scalars array); the others, for --var: pressure, label, velocity (3 components)"
+    expect_stdout_contains "data of legacy_binary.vtk: BINARY (big-endian)"
+    run_tstyles -- info "$S/legacy_depth.vtk"
+    expect_exit 0
+    expect_stdout_contains "Format: VTK legacy RECTILINEAR_GRID"
+    expect_stdout_contains "World bounds: (10, -2, 0) to (12, 1, 3)"
+    run_tstyles -- convert "$S/legacy_depth.vtk" -o "$SCRATCH/legacy_depth"
+    expect_exit 0
+    "$VTK_PYTHON" "$SAMPLES_WRITER" check "$SCRATCH/legacy_depth/t00.raw" temperature 0 || fail "legacy_depth.vtk's temperature differs"
+    grep -q '"z": \[0.0, 1.0, 3.0\]' "$SCRATCH/legacy_depth/series.json" || fail "legacy_depth.vtk's uneven z levels were not kept"
+    run_tstyles -- info "$S/legacy_grid.vtk"
+    expect_exit 0
+    expect_stdout_contains "Format: VTK legacy STRUCTURED_GRID"
+    expect_stdout_contains "structured 5x4x3"
+    # The same data as legacy and as XML: the same picture.
+    run_tstyles -- render "$S/legacy_grid.vtk" -o "$SCRATCH/legacy_grid.png" --backend osmesa --width 64 --height 64
+    expect_exit 0
+    run_tstyles -- render "$S/grid.vts" -o "$SCRATCH/grid.png" --backend osmesa --width 64 --height 64
+    expect_exit 0
+    cmp -s "$SCRATCH/legacy_grid.png" "$SCRATCH/grid.png" || fail "legacy_grid.vtk and grid.vts render differently"
+}
+
+# A series of numbered legacy files, listed in a .pvd or given as a list: one time-step each.
+case_legacy_series() {
+    samples
+    run_tstyles -- info "$S/legacy.pvd"
+    expect_exit 0
+    expect_stdout_contains "Time-steps: 3"
+    expect_stdout_contains "3 STRUCTURED_POINTS file(s) listed in legacy.pvd"
+    converted_values_equal legacy-pvd temperature 2 -- "$S/legacy.pvd"
+    run_tstyles -- info "$S"/legacy_series/flow_*.vtk
+    expect_exit 0
+    expect_stdout_contains "one time-step each, times 0, 1, 2, ... in the order given"
+    converted_values_equal legacy-list temperature 1 -- "$S"/legacy_series/flow_*.vtk
+    # Numbered files out of number order: read as given, and said.
+    run_tstyles -- info "$S/legacy_series/flow_0002.vtk" "$S/legacy_series/flow_0000.vtk"
+    expect_exit 0
+    expect_stdout_contains "the files are numbered (flow_#.vtk) but not given in number order: flow_0000.vtk comes after flow_0002.vtk; the time-steps follow the order given"
+}
+
+# Damaged and unsupported legacy files: one line naming the file and the keyword, exit 2.
+case_legacy_refusals() {
+    samples
+    head -c 300 "$S/legacy_binary.vtk" >"$S/legacy_cut.vtk"
+    expect_refused "$S/legacy_cut.vtk" "SCALARS temperature" "is truncated"
+    sed -e 's/^DATASET STRUCTURED_POINTS/DATASET POLYDATA/' "$S/legacy_ascii.vtk" >"$S/legacy_poly.vtk"
+    expect_refused "$S/legacy_poly.vtk" "DATASET" "'POLYDATA' is not read: only STRUCTURED_POINTS, STRUCTURED_GRID and RECTILINEAR_GRID"
+    sed -e '/^Z_COORDINATES/{n;s/^0 1 3 *$/0 3 1/}' "$S/legacy_depth.vtk" >"$S/legacy_decreasing.vtk"
+    grep -q "^0 3 1" "$S/legacy_decreasing.vtk" || fail "the test could not rewrite the z coordinates"
+    expect_refused "$S/legacy_decreasing.vtk" "Z_COORDINATES" "the z coordinates must increase strictly: 1 follows 3"
+    expect_refused "$S/legacy_ascii.vtk" "--var" "no point array named 'nope'; the point arrays are: temperature, pressure, label, velocity (3 components)" --var nope
+}
+
 run_case

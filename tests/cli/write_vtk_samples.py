@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""VTK XML files for the vtk reader's tests, written by VTK's own writers (python3-vtk9), and a
-check of the raw values `tstyles convert` wrote against the values the files hold.
+"""VTK XML and legacy (.vtk) files for the vtk readers' tests, written by VTK's own writers
+(python3-vtk9), and a check of the raw values `tstyles convert` wrote against the values the files hold.
 
   write_vtk_samples.py write FOLDER
   write_vtk_samples.py check RAW_FILE ARRAY STEP [mirror-x]   (exits 1 naming the first difference)
@@ -18,6 +18,7 @@ import sys
 import numpy as np
 import vtk
 from vtk.util import numpy_support
+from vtkmodules.util.vtkAlgorithm import VTKPythonAlgorithmBase
 
 DIMS = (5, 4, 3)  # x, y, z
 
@@ -124,6 +125,8 @@ def write_all(folder):
     write_structured(folder)
     write_pieces(folder)
     write_rectilinear(folder)
+    write_legacy(folder)
+    write_parallel(folder)
 
 
 def write_series(folder):
@@ -146,8 +149,8 @@ def write_series(folder):
         json.dump({"file-series-version": "1.0", "files": [{"name": n, "time": t} for t, n in entries]}, series)
 
 
-def write_structured(folder):
-    """grid.vts: a sheared but valid curvilinear grid (x leans with y), temperature on its points."""
+def sheared_grid():
+    """A sheared but valid curvilinear grid (x leans with y), temperature on its points."""
     grid = vtk.vtkStructuredGrid()
     grid.SetDimensions(*DIMS)
     points = vtk.vtkPoints()
@@ -157,16 +160,20 @@ def write_structured(folder):
                 points.InsertNextPoint(i + 0.25 * j, j, 2.0 * k)
     grid.SetPoints(points)
     add_array(grid, "temperature", known("temperature", 0), active=True)
-    write(vtk.vtkXMLStructuredGridWriter(), grid, os.path.join(folder, "grid.vts"), compressor="ZLib")
+    return grid
+
+
+def write_structured(folder):
+    """grid.vts: the sheared grid."""
+    write(vtk.vtkXMLStructuredGridWriter(), sheared_grid(), os.path.join(folder, "grid.vts"), compressor="ZLib")
 
 
 # The rectilinear grid's coordinates: x and y even, z uneven (levels closer near the surface).
 RECT_COORDINATES = ((10.0, 10.5, 11.0, 11.5, 12.0), (-2.0, -1.0, 0.0, 1.0), (0.0, 1.0, 3.0))
 
 
-def write_rectilinear(folder):
-    """depth.vtr (appended, zlib) and depth_ascii.vtr: a RectilinearGrid with uneven z, the known
-    arrays of step 0 on its points."""
+def depth_grid():
+    """A RectilinearGrid with uneven z, the known arrays of step 0 on its points."""
     grid = vtk.vtkRectilinearGrid()
     grid.SetDimensions(*DIMS)
     for axis, values in enumerate(RECT_COORDINATES):
@@ -174,8 +181,51 @@ def write_rectilinear(folder):
         (grid.SetXCoordinates, grid.SetYCoordinates, grid.SetZCoordinates)[axis](array)
     add_array(grid, "pressure", known("pressure", 0))
     add_array(grid, "temperature", known("temperature", 0), active=True)
+    return grid
+
+
+def write_rectilinear(folder):
+    """depth.vtr (appended, zlib) and depth_ascii.vtr: the depth grid."""
+    grid = depth_grid()
     write(vtk.vtkXMLRectilinearGridWriter(), grid, os.path.join(folder, "depth.vtr"), "Appended", "ZLib")
     write(vtk.vtkXMLRectilinearGridWriter(), grid, os.path.join(folder, "depth_ascii.vtr"), "Ascii")
+
+
+def write_legacy_file(writer, data, path, binary=True, version=None):
+    writer.SetFileName(path)
+    writer.SetInputData(data)
+    if version:
+        writer.SetFileVersion(version)
+    if binary:
+        writer.SetFileTypeToBinary()
+    else:
+        writer.SetFileTypeToASCII()
+    if writer.Write() != 1:
+        raise SystemExit(f"VTK could not write {path}")
+
+
+def write_legacy(folder):
+    """Legacy .vtk files: the known arrays of step 0 as ASCII and BINARY STRUCTURED_POINTS (version
+    5.1, VTK 9's default, and 4.2), a STRUCTURED_GRID and a RECTILINEAR_GRID, and a series of three
+    with legacy.pvd. The legacy writers put the active scalars (temperature) in SCALARS and the other
+    point arrays in a FIELD."""
+    for name, binary, version in (("legacy_ascii", False, None), ("legacy_binary", True, None),
+                                  ("legacy_binary_42", True, 42)):
+        write_legacy_file(vtk.vtkStructuredPointsWriter(), image(0), os.path.join(folder, name + ".vtk"), binary,
+                          version)
+    write_legacy_file(vtk.vtkStructuredGridWriter(), sheared_grid(), os.path.join(folder, "legacy_grid.vtk"))
+    write_legacy_file(vtk.vtkRectilinearGridWriter(), depth_grid(), os.path.join(folder, "legacy_depth.vtk"), False)
+    os.makedirs(os.path.join(folder, "legacy_series"), exist_ok=True)
+    times = [0.5, 1.5, 4.0]
+    with open(os.path.join(folder, "legacy.pvd"), "w") as pvd:
+        pvd.write('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1" byte_order="LittleEndian">\n'
+                  "  <Collection>\n")
+        for step, time in enumerate(times):
+            name = f"legacy_series/flow_{step:04d}.vtk"
+            write_legacy_file(vtk.vtkStructuredPointsWriter(), image(step, origin=(0.25 * step, 1.0, 2.0)),
+                              os.path.join(folder, name))
+            pvd.write(f'    <DataSet timestep="{time}" group="" part="0" file="{name}"/>\n')
+        pvd.write("  </Collection>\n</VTKFile>\n")
 
 
 def write_pieces(folder):
@@ -190,6 +240,60 @@ def write_pieces(folder):
         writer.SetDataModeToBinary()
         if writer.Write() != 1:
             raise SystemExit(f"VTK could not write {name}")
+
+
+class RectilinearSource(VTKPythonAlgorithmBase):
+    """The depth grid of write_rectilinear as a streaming source: it makes any sub-extent asked for,
+    as a simulation's processes each make theirs, so VTK's parallel writer can split it."""
+
+    def __init__(self):
+        VTKPythonAlgorithmBase.__init__(self, nInputPorts=0, nOutputPorts=1, outputType="vtkRectilinearGrid")
+
+    def RequestInformation(self, request, in_info, out_info):
+        info = out_info.GetInformationObject(0)
+        info.Set(vtk.vtkStreamingDemandDrivenPipeline.WHOLE_EXTENT(), (0, DIMS[0] - 1, 0, DIMS[1] - 1, 0, DIMS[2] - 1), 6)
+        info.Set(vtk.vtkAlgorithm.CAN_PRODUCE_SUB_EXTENT(), 1)
+        return 1
+
+    def RequestData(self, request, in_info, out_info):
+        info = out_info.GetInformationObject(0)
+        x0, x1, y0, y1, z0, z1 = info.Get(vtk.vtkStreamingDemandDrivenPipeline.UPDATE_EXTENT())
+        grid = vtk.vtkRectilinearGrid.GetData(out_info)
+        grid.SetExtent(x0, x1, y0, y1, z0, z1)
+        for axis, (start, end) in enumerate(((x0, x1), (y0, y1), (z0, z1))):
+            values = np.array(RECT_COORDINATES[axis][start:end + 1], dtype=np.float64)
+            (grid.SetXCoordinates, grid.SetYCoordinates, grid.SetZCoordinates)[axis](
+                numpy_support.numpy_to_vtk(values, deep=True))
+        temperature = known("temperature", 0)[z0:z1 + 1, y0:y1 + 1, x0:x1 + 1]
+        add_array(grid, "temperature", temperature, active=True)
+        return 1
+
+
+def write_parallel(folder):
+    """parallel/: VTK's parallel writers (one file per piece, listed by a .pvti, .pvtr or .pvts):
+    the analytic source of write_pieces in 3 pieces (compare whole.vti), the depth grid in 2, and
+    a structured grid of the analytic source in 3."""
+    os.makedirs(os.path.join(folder, "parallel"), exist_ok=True)
+
+    def write_parallel_file(writer, port, name, pieces):
+        writer.SetFileName(os.path.join(folder, "parallel", name))
+        writer.SetInputConnection(port)
+        writer.SetNumberOfPieces(pieces)
+        writer.SetStartPiece(0)
+        writer.SetEndPiece(pieces - 1)
+        writer.SetDataModeToAppended()
+        writer.SetCompressorTypeToZLib()
+        if writer.Write() != 1:
+            raise SystemExit(f"VTK could not write {name}")
+
+    source = vtk.vtkRTAnalyticSource()
+    source.SetWholeExtent(0, 9, 0, 7, 0, 5)
+    write_parallel_file(vtk.vtkXMLPImageDataWriter(), source.GetOutputPort(), "pieces.pvti", 3)
+    depth = RectilinearSource()  # kept: the pipeline holds no reference to a Python algorithm
+    write_parallel_file(vtk.vtkXMLPRectilinearGridWriter(), depth.GetOutputPort(), "depth.pvtr", 2)
+    points = vtk.vtkImageDataToPointSet()
+    points.SetInputConnection(source.GetOutputPort())
+    write_parallel_file(vtk.vtkXMLPStructuredGridWriter(), points.GetOutputPort(), "pieces.pvts", 3)
 
 
 def check(raw_file, array, step, order="as-written"):

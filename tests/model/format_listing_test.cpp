@@ -69,7 +69,7 @@ TEST(FormatListing, TheDescriptionNamesEveryFormatInLinesOfAtMost79Characters) {
     EXPECT_EQ(seriesFormatNames().substr(0, 14), "NetCDF, NIfTI,");
 }
 
-// How prose names a format: "Isabel" for "Hurricane Isabel raw", "VTK" for "VTK XML".
+// How prose names a format: "Isabel" for "Hurricane Isabel raw", and "VTK" (the row's own name).
 std::string shortName(const std::string& name) {
     if (name.find("Isabel") != std::string::npos) return "Isabel";
     if (name.rfind("VTK", 0) == 0) return "VTK";

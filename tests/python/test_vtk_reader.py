@@ -1,5 +1,5 @@
-"""tstyles.open of ParaView time series (.pvd, .series, .vti, .vts) that VTK's own XML writers made
-(python3-vtk9): times, frames and values come back as written."""
+"""tstyles.open of ParaView time series (.pvd, .series, .vti, .vts, a parallel .pvtr, legacy .vtk)
+that VTK's own writers made (python3-vtk9): times, frames and values come back as written."""
 
 import os
 import sys
@@ -60,3 +60,21 @@ def test_a_structured_grid_keeps_its_points(samples):
 def test_an_unknown_array_is_an_input_error_listing_the_arrays(samples):
     with pytest.raises(Exception, match="no point array named 'nope'; the point arrays are: pressure, label"):
         tstyles.open(str(samples / "ascii.vti"), var="nope")
+
+
+def test_legacy_files_in_a_pvd_keep_their_times_origins_and_values(samples):
+    series = tstyles.open(str(samples / "legacy.pvd"))
+    assert series.source_format == "VTK legacy STRUCTURED_POINTS"
+    assert list(series.times) == [0.5, 1.5, 4.0]
+    assert series.value_range == (0.0, 228.0)
+    for index in range(3):
+        step = series.step(index)
+        assert step["dims"] == (5, 4, 3) and step["origin"] == (0.25 * index, 1.0, 2.0)
+        assert np.array_equal(series.density(index), normalised(known("temperature", index), 0.0, 228.0))
+
+
+def test_a_parallel_rectilinear_grid_is_assembled_from_its_piece_files(samples):
+    series = tstyles.open(str(samples / "parallel" / "depth.pvtr"))
+    assert series.source_format == "VTK XML RectilinearGrid"
+    assert series.step(0)["dims"] == (5, 4, 3)
+    assert np.array_equal(series.density(0), normalised(known("temperature", 0), 0.0, 28.0))

@@ -22,7 +22,7 @@ struct FormatMimeType {
 };
 
 struct FormatListing {
-    std::string name;                     // "NetCDF", "VTK XML"
+    std::string name;                     // "NetCDF", "VTK"
     std::vector<std::string> extensions;  // lower case, with the dot
     std::vector<FormatMimeType> mimeTypes;
     std::string spelling;  // how its files look: ".nii .nii.gz", "a .zarr store folder, or its zarr.json"

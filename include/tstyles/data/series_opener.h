@@ -1,5 +1,5 @@
 // Opening a series from whatever the user has: our manifest (a .json or its folder), NetCDF, NIfTI,
-// NRRD, Plot3D, the Hurricane Isabel raw files, TIFF, OME-Zarr, DICOM or VTK XML. The format comes
+// NRRD, Plot3D, the Hurricane Isabel raw files, TIFF, OME-Zarr, DICOM or VTK (XML and legacy). The format comes
 // from the extension, else from a folder's claim or the file's first bytes. docs/readers.md
 // describes each reader and the options.
 #pragma once

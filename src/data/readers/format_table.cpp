@@ -26,8 +26,9 @@ bool startsWithNrrdMagic(const std::filesystem::path& file) { return hasMagicAt(
 constexpr const char* kNiftiMagic =
     R"(<match type="string" offset="344" value="n+1"/><match type="string" offset="4" value="n+2"/>)";
 constexpr const char* kNrrdMagic = R"(<match type="string" offset="0" value="NRRD000"/>)";
-// The root element of a VTK XML file, after the XML declaration.
+// The root element of a VTK XML file, after the XML declaration; a legacy VTK file's first line.
 constexpr const char* kVtkXmlMagic = R"(<match type="string" offset="0:256" value="&lt;VTKFile"/>)";
+constexpr const char* kVtkLegacyMagic = R"(<match type="string" offset="0" value="# vtk DataFile Version"/>)";
 
 }  // namespace
 
@@ -42,10 +43,12 @@ const std::vector<SeriesFormat>& seriesFormats() {
          stackedFiles([](const std::filesystem::path& file, const ReadOptions&) { return openNifti(file); })},
         {"NRRD", {".nrrd", ".nhdr"}, {{"application/x-nrrd", "NRRD volume", kNrrdMagic}}, ".nrrd .nhdr", {}, startsWithNrrdMagic,
          stackedFiles([](const std::filesystem::path& file, const ReadOptions&) { return openNrrd(file); })},
-        // ParaView's time series: a collection (.pvd, .series) or the data sets themselves.
-        {"VTK XML", {".pvd", ".series", ".vti", ".vtr", ".vts"},
-         {{"application/x-vtk-xml", "VTK XML data set or ParaView collection", kVtkXmlMagic}}, ".pvd .series .vti .vtr .vts", {"--var"}, hasVtkXmlSignature,
-         openVtkSeries},
+        // ParaView's time series: a collection (.pvd, .series) or the data sets themselves, XML
+        // (serial or parallel) or legacy.
+        {"VTK", {".pvd", ".series", ".vti", ".vtr", ".vts", ".pvti", ".pvtr", ".pvts", ".vtk"},
+         {{"application/x-vtk-xml", "VTK XML data set or ParaView collection", kVtkXmlMagic},
+          {"application/x-vtk", "VTK legacy data set", kVtkLegacyMagic}},
+         ".pvd .series .vti .vtr .vts .pvti .pvtr .pvts .vtk", {"--var"}, hasVtkSignature, openVtkSeries},
         // Files, lists of files, or folders (nested ones too) of one or more series; --series picks one.
         {"DICOM", {".dcm", ".dicom"}, {{"application/dicom"}}, ".dcm .dicom, files with the DICM magic, their folder, or a DICOMDIR", {"--series"},
          hasDicomMagic, openDicom, isDicomFolder},

@@ -79,7 +79,5 @@ private:
     void* tiff_ = nullptr;                     // TIFF*, kept out of this header
 };
 
-// Natural order of names: "t2.tif" before "t10.tif" (digit runs compare as numbers).
-bool naturalLess(const std::string& a, const std::string& b);
 
 }  // namespace tstyles

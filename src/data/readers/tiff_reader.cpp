@@ -15,6 +15,7 @@
 #include "tstyles/core/ascii_case.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/core/input_limits.h"
+#include "tstyles/core/natural_order.h"
 
 namespace tstyles {
 namespace {

@@ -30,26 +30,6 @@ std::string arrayField(const VtkXmlFile& file, const VtkDataArray& array) {
     return "DataArray '" + array.name + "' (line " + std::to_string(lineOf(file, array.node)) + ")";
 }
 
-double decodeOne(const std::uint8_t* bytes, const VtkValueType& type, bool bigEndian) {
-    std::uint64_t bits = 0;
-    for (std::size_t index = 0; index < type.bytes; ++index)
-        bits |= std::uint64_t(bytes[bigEndian ? type.bytes - 1 - index : index]) << (8 * index);
-    if (type.kind == VtkValueKind::Float) {
-        if (type.bytes == 4) {
-            float value;
-            const auto narrow = std::uint32_t(bits);
-            std::memcpy(&value, &narrow, 4);
-            return value;
-        }
-        double value;
-        std::memcpy(&value, &bits, 8);
-        return value;
-    }
-    if (type.kind == VtkValueKind::Unsigned) return double(bits);
-    const unsigned shift = unsigned(64 - 8 * type.bytes);  // sign-extend from the type's width
-    return double(std::int64_t(bits << shift) >> shift);
-}
-
 std::vector<float> readAscii(const VtkXmlFile& file, const VtkDataArray& array, std::uint64_t count) {
     const std::string_view text = array.node.text().get();
     // Each number takes a character and a separator: a count beyond that is not in the file.
@@ -101,7 +81,7 @@ std::vector<float> readBinary(const VtkXmlFile& file, const VtkDataArray& array,
         readVtkArrayBytes(stream, file.layout, count * array.type.bytes, file.path, arrayField(file, array));
     std::vector<float> values(count);
     for (std::uint64_t index = 0; index < count; ++index)
-        values[index] = float(decodeOne(bytes.data() + index * array.type.bytes, array.type, file.layout.bigEndian));
+        values[index] = float(decodeVtkValue(bytes.data() + index * array.type.bytes, array.type, file.layout.bigEndian));
     return values;
 }
 
@@ -115,6 +95,26 @@ std::vector<float> readComponents(const VtkXmlFile& file, const VtkDataArray& ar
 }
 
 }  // namespace
+
+double decodeVtkValue(const std::uint8_t* bytes, const VtkValueType& type, bool bigEndian) {
+    std::uint64_t bits = 0;
+    for (std::size_t index = 0; index < type.bytes; ++index)
+        bits |= std::uint64_t(bytes[bigEndian ? type.bytes - 1 - index : index]) << (8 * index);
+    if (type.kind == VtkValueKind::Float) {
+        if (type.bytes == 4) {
+            float value;
+            const auto narrow = std::uint32_t(bits);
+            std::memcpy(&value, &narrow, 4);
+            return value;
+        }
+        double value;
+        std::memcpy(&value, &bits, 8);
+        return value;
+    }
+    if (type.kind == VtkValueKind::Unsigned) return double(bits);
+    const unsigned shift = unsigned(64 - 8 * type.bytes);  // sign-extend from the type's width
+    return double(std::int64_t(bits << shift) >> shift);
+}
 
 std::vector<VtkDataArray> describeArrays(const VtkXmlFile& file, const pugi::xml_node& parent) {
     std::vector<VtkDataArray> arrays;

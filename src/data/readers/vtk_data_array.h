@@ -38,6 +38,10 @@ std::vector<VtkDataArray> describeArrays(const VtkXmlFile& file, const pugi::xml
 // (UInt32, Int64, UInt64 become floats, as every value does on the way to density).
 ValueType seriesValueType(const VtkValueType& type);
 
+// One value of `type` from its bytes in the given byte order (VTK XML says which; legacy files are
+// big-endian), as a double: exact for every type but 64-bit integers beyond 2^53.
+double decodeVtkValue(const std::uint8_t* bytes, const VtkValueType& type, bool bigEndian);
+
 // `tuples` values, one per point: the single component, or the Euclidean magnitude of all of them.
 // The size is checked against the data (ascii: the count of numbers; binary: the headers) and
 // against `memoryCap` before anything is allocated.

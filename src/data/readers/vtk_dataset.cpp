@@ -1,10 +1,12 @@
-// Extents, pieces and frames of VTK ImageData and StructuredGrid files, and the assembly of a
-// whole-extent array from the pieces that hold it (the parallel writers split a volume this way).
+// Extents, pieces and frames of VTK ImageData, RectilinearGrid and StructuredGrid files (serial or
+// parallel), and the assembly of a whole-extent array from the pieces that hold it (the parallel
+// writers split a volume this way, within one file or in a file per piece).
 #include "vtk_dataset.h"
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <limits>
 
@@ -154,36 +156,116 @@ std::uint64_t VtkExtent::pointCount() const {
     return std::uint64_t(size.x) * std::uint64_t(size.y) * std::uint64_t(size.z);
 }
 
-VtkDataset describeVtkDataset(const VtkXmlFile& file) {
-    VtkDataset dataset;
-    const std::string element = file.dataset.name();
-    dataset.kind = element == "StructuredGrid"    ? VtkGridKind::Structured
-                   : element == "RectilinearGrid" ? VtkGridKind::Rectilinear
-                                                  : VtkGridKind::Image;
-    dataset.whole = extentIn(file, file.dataset, "WholeExtent");
+namespace {
+
+VtkGridKind gridKindOf(const VtkXmlFile& file) {
+    std::string element = file.dataset.name();
+    if (file.parallel) element.erase(0, 1);  // PImageData, PRectilinearGrid, PStructuredGrid
+    return element == "StructuredGrid"    ? VtkGridKind::Structured
+           : element == "RectilinearGrid" ? VtkGridKind::Rectilinear
+                                          : VtkGridKind::Image;
+}
+
+VtkExtent wholeExtentOf(const VtkXmlFile& file, bool volume) {
+    const VtkExtent whole = extentIn(file, file.dataset, "WholeExtent");
     // Each axis fits an int and the point count a double exactly; the memory cap decides the rest.
     double points = 1.0;
     for (std::size_t axis = 0; axis < 3; ++axis) {
-        const std::int64_t size = dataset.whole.bounds[2 * axis + 1] - dataset.whole.bounds[2 * axis] + 1;
+        const std::int64_t size = whole.bounds[2 * axis + 1] - whole.bounds[2 * axis] + 1;
         if (size > std::int64_t(std::numeric_limits<std::int32_t>::max()))
             throwInputError(file.path, "WholeExtent", std::string("the extent along ") + "xyz"[axis] + " is too large");
         points *= double(size);
     }
     if (points > 9.0e15) throwInputError(file.path, "WholeExtent", "the extent holds too many points to be read");
-    const glm::ivec3 dims = dataset.whole.dims();
-    if (dims.x < 2 || dims.y < 2 || dims.z < 2)
+    const glm::ivec3 dims = whole.dims();
+    if (volume && (dims.x < 2 || dims.y < 2 || dims.z < 2))
         throwInputError(file.path, "WholeExtent",
                         "a volume needs at least 2 samples along x, y and z, found " + std::to_string(dims.x) + " x " +
                             std::to_string(dims.y) + " x " + std::to_string(dims.z));
+    return whole;
+}
+
+bool sameNumber(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)}); }
+
+// A piece file of a .pvti must place its points as the .pvti does.
+void requireSameFrame(const VtkXmlFile& parallel, const VtkDataset& dataset, const VtkXmlFile& pieceFile,
+                      const VtkDataset& piece) {
+    const auto differs = [&](const char* field) {
+        throwInputError(pieceFile.path, field,
+                        std::string("differs from the ") + field + " of " + parallel.path.filename().string() +
+                            ": the pieces of one image share its frame");
+    };
+    for (int axis = 0; axis < 3; ++axis) {
+        if (!sameNumber(dataset.origin[axis], piece.origin[axis])) differs("Origin");
+        if (!sameNumber(dataset.spacing[axis], piece.spacing[axis])) differs("Spacing");
+    }
+    for (std::size_t index = 0; index < 9; ++index)
+        if (!sameNumber(dataset.direction[index], piece.direction[index])) differs("Direction");
+}
+
+VtkDataset describeDataset(const VtkXmlFile& file, std::uint64_t memoryCap, bool volume);
+
+// A parallel file's <Piece Extent Source>: each Source a serial file of the same kind beside it,
+// whose own pieces join the dataset's.
+void describePieceFiles(const VtkXmlFile& file, VtkDataset& dataset, std::uint64_t memoryCap) {
+    for (const pugi::xml_node& node : file.dataset.children("Piece")) {
+        const std::string where = "Piece (line " + std::to_string(lineOf(file, node)) + ")";
+        const std::string source = node.attribute("Source").as_string();
+        if (source.empty())
+            throwInputError(file.path, where, "has no Source: a parallel file's pieces are files of their own");
+        const std::filesystem::path path = file.path.parent_path() / source;
+        std::error_code error;
+        if (!std::filesystem::is_regular_file(path, error))
+            throwInputError(file.path, where, "Source '" + source + "': the file '" + path.string() + "' does not exist");
+        std::shared_ptr<const VtkXmlFile> pieceFile = loadVtkXmlFile(path, file.headerOnly, memoryCap);
+        if (pieceFile->parallel || gridKindOf(*pieceFile) != dataset.kind)
+            throwInputError(path, "type",
+                            std::string("a piece of ") + file.path.filename().string() + " must be " +
+                                toString(dataset.kind) + " data, not " + pieceFile->dataset.name());
+        const VtkDataset pieceDataset = describeDataset(*pieceFile, memoryCap, false);
+        if (dataset.kind == VtkGridKind::Image) requireSameFrame(file, dataset, *pieceFile, pieceDataset);
+        for (VtkPiece piece : pieceDataset.pieces) {
+            if (!contains(dataset.whole, piece.extent))
+                throwInputError(path, "Piece Extent",
+                                "the piece reaches outside the WholeExtent of " + file.path.filename().string());
+            piece.source = pieceFile;
+            dataset.pieces.push_back(std::move(piece));
+        }
+        ++dataset.pieceFiles;
+    }
+}
+
+VtkDataset describeDataset(const VtkXmlFile& file, std::uint64_t memoryCap, bool volume) {
+    VtkDataset dataset;
+    dataset.kind = gridKindOf(file);
+    dataset.whole = wholeExtentOf(file, volume);
     if (dataset.kind == VtkGridKind::Image) describeFrame(file, dataset);
-    for (const pugi::xml_node& node : file.dataset.children("Piece"))
-        dataset.pieces.push_back(describePiece(file, dataset, node));
+    const char* pointData = file.parallel ? "PPointData" : "PointData";
+    const char* cellData = file.parallel ? "PCellData" : "CellData";
+    const char* arrayElement = file.parallel ? "PDataArray" : "DataArray";
+    pugi::xml_node described = file.dataset;  // where the PointData and CellData elements are
+    if (file.parallel) {
+        describePieceFiles(file, dataset, memoryCap);
+    } else {
+        for (const pugi::xml_node& node : file.dataset.children("Piece"))
+            dataset.pieces.push_back(describePiece(file, dataset, node));
+        if (!dataset.pieces.empty()) described = dataset.pieces.front().node;
+    }
     if (dataset.pieces.empty()) throwInputError(file.path, "Piece", "the file has no <Piece>: there is no data");
-    const pugi::xml_node pointData = dataset.pieces.front().node.child("PointData");
-    dataset.activeScalars = pointData.attribute("Scalars").as_string();
-    for (const pugi::xml_node& array : dataset.pieces.front().node.child("CellData").children("DataArray"))
+    dataset.activeScalars = described.child(pointData).attribute("Scalars").as_string();
+    for (const pugi::xml_node& array : described.child(cellData).children(arrayElement))
         dataset.cellArrays.push_back(array.attribute("Name").as_string());
     return dataset;
+}
+
+}  // namespace
+
+const VtkXmlFile& fileOf(const VtkXmlFile& described, const VtkPiece& piece) {
+    return piece.source ? *piece.source : described;
+}
+
+VtkDataset describeVtkDataset(const VtkXmlFile& file, std::uint64_t memoryCap) {
+    return describeDataset(file, memoryCap, true);
 }
 
 const VtkDataArray& pointArrayNamed(const VtkXmlFile& file, const VtkDataset& dataset, const std::string& name) {
@@ -201,8 +283,9 @@ std::vector<float> readVtkPointArray(const VtkXmlFile& file, const VtkDataset& d
                                      std::uint64_t memoryCap) {
     return assemble(file, dataset, 1, memoryCap, [&](const VtkPiece& piece) {
         for (const VtkDataArray& array : piece.pointArrays)
-            if (array.name == name) return readPointValues(file, array, piece.extent.pointCount(), memoryCap);
-        throwInputError(file.path, "Piece (line " + std::to_string(lineOf(file, piece.node)) + ")",
+            if (array.name == name)
+                return readPointValues(fileOf(file, piece), array, piece.extent.pointCount(), memoryCap);
+        throwInputError(fileOf(file, piece).path, "Piece (line " + std::to_string(lineOf(fileOf(file, piece), piece.node)) + ")",
                         "has no point array '" + name + "' though the first piece has");
     });
 }
@@ -217,22 +300,24 @@ std::array<std::vector<double>, 3> readVtkCoordinates(const VtkXmlFile& file, co
         covered[axis].assign(std::size_t(dims[int(axis)]), false);
     }
     for (const VtkPiece& piece : dataset.pieces) {
-        const std::string where = "Coordinates (line " + std::to_string(lineOf(file, piece.node)) + ")";
-        const std::vector<VtkDataArray> arrays = describeArrays(file, piece.node.child("Coordinates"));
+        const VtkXmlFile& holder = fileOf(file, piece);
+        const std::string where = "Coordinates (line " + std::to_string(lineOf(holder, piece.node)) + ")";
+        const std::vector<VtkDataArray> arrays = describeArrays(holder, piece.node.child("Coordinates"));
         if (arrays.size() != 3 || arrays[0].components != 1 || arrays[1].components != 1 || arrays[2].components != 1)
-            throwInputError(file.path, where, "a rectilinear grid's piece needs three one-component DataArrays: x, y, z");
+            throwInputError(holder.path, where, "a rectilinear grid's piece needs three one-component DataArrays: x, y, z");
         const glm::ivec3 size = piece.extent.dims();
         for (std::size_t axis = 0; axis < 3; ++axis) {
-            const std::vector<float> values = readPointValues(file, arrays[axis], std::uint64_t(size[int(axis)]), memoryCap);
+            const std::vector<float> values =
+                readPointValues(holder, arrays[axis], std::uint64_t(size[int(axis)]), memoryCap);
             const std::size_t start = std::size_t(piece.extent.bounds[2 * axis] - dataset.whole.bounds[2 * axis]);
             for (std::size_t index = 0; index < values.size(); ++index) {
                 const double value = values[index];
                 if (!std::isfinite(value))
-                    throwInputError(file.path, where, std::string(1, "xyz"[axis]) + " coordinate " +
+                    throwInputError(holder.path, where, std::string(1, "xyz"[axis]) + " coordinate " +
                                                           std::to_string(index) + " is not finite");
                 double& kept = coordinates[axis][start + index];
                 if (covered[axis][start + index] && kept != value)
-                    throwInputError(file.path, where,
+                    throwInputError(holder.path, where,
                                     std::string("the pieces disagree on ") + "xyz"[axis] + " coordinate " +
                                         std::to_string(start + index) + " of the WholeExtent");
                 kept = value;
@@ -257,11 +342,12 @@ std::array<std::vector<double>, 3> readVtkCoordinates(const VtkXmlFile& file, co
 
 std::vector<glm::vec3> readVtkPoints(const VtkXmlFile& file, const VtkDataset& dataset, std::uint64_t memoryCap) {
     const std::vector<float> coordinates = assemble(file, dataset, 3, memoryCap, [&](const VtkPiece& piece) {
-        const std::vector<VtkDataArray> arrays = describeArrays(file, piece.node.child("Points"));
+        const VtkXmlFile& holder = fileOf(file, piece);
+        const std::vector<VtkDataArray> arrays = describeArrays(holder, piece.node.child("Points"));
         if (arrays.size() != 1 || arrays.front().components != 3)
-            throwInputError(file.path, "Points (line " + std::to_string(lineOf(file, piece.node)) + ")",
+            throwInputError(holder.path, "Points (line " + std::to_string(lineOf(holder, piece.node)) + ")",
                             "a structured grid's piece needs one <Points> DataArray of 3 components");
-        return readPointComponents(file, arrays.front(), piece.extent.pointCount(), memoryCap);
+        return readPointComponents(holder, arrays.front(), piece.extent.pointCount(), memoryCap);
     });
     std::vector<glm::vec3> points(coordinates.size() / 3);
     for (std::size_t point = 0; point < points.size(); ++point)

@@ -1,11 +1,13 @@
-// One .vti (ImageData), .vtr (RectilinearGrid) or .vts (StructuredGrid) file as a volume: its
-// extent and pieces, its frame (origin, spacing, direction) and its point arrays; the values of one
-// array, the rectilinear grid's coordinates or the structured grid's points, assembled from the
-// pieces that cover the extent.
+// One .vti (ImageData), .vtr (RectilinearGrid) or .vts (StructuredGrid) file as a volume, or a
+// parallel .pvti, .pvtr or .pvts whose pieces are files of their own: its extent and pieces, its
+// frame (origin, spacing, direction) and its point arrays; the values of one array, the rectilinear
+// grid's coordinates or the structured grid's points, assembled from the pieces that cover the
+// extent.
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -26,7 +28,12 @@ struct VtkPiece {
     pugi::xml_node node;
     VtkExtent extent;
     std::vector<VtkDataArray> pointArrays;
+    // The file that holds the piece, for a parallel file's <Piece Source>; null: the file described.
+    std::shared_ptr<const VtkXmlFile> source;
 };
+
+// The file whose node and arrays `piece` refers to.
+const VtkXmlFile& fileOf(const VtkXmlFile& described, const VtkPiece& piece);
 
 enum class VtkGridKind { Image, Rectilinear, Structured };
 
@@ -42,11 +49,14 @@ struct VtkDataset {
     std::string activeScalars;  // <PointData Scalars="...">, may be empty
     std::vector<VtkPiece> pieces;
     std::vector<std::string> cellArrays;  // named only: they are not read
+    std::size_t pieceFiles = 0;           // of a parallel file: how many files hold its pieces
 };
 
 // Checks the extents (a volume of at least 2 points along each axis; pieces inside the whole
-// extent) and the frame's numbers; arrays are described, not read.
-VtkDataset describeVtkDataset(const VtkXmlFile& file);
+// extent) and the frame's numbers; arrays are described, not read. A parallel file's piece files
+// are loaded (as far as `file` was: header only or whole) and must be serial files of the same kind
+// with the same frame; `memoryCap` bounds what they take.
+VtkDataset describeVtkDataset(const VtkXmlFile& file, std::uint64_t memoryCap);
 
 // The first piece's point array named `name` (the same name in every piece), or an InputError that
 // lists the arrays there are.

@@ -3,16 +3,19 @@
 #include "vtk_reader.h"
 
 #include <algorithm>
+#include <iterator>
 #include <memory>
 
 #include "infinite_values.h"
 #include "oriented_axes.h"
+#include "vtk_legacy_file.h"
+#include "vtk_xml_file.h"
 #include "vtk_collection.h"
-#include "vtk_dataset.h"
+#include "vtk_series_file.h"
 #include "tstyles/core/ascii_case.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/core/input_limits.h"
-#include "tstyles/data/axis_nodes.h"
+#include "tstyles/core/natural_order.h"
 
 namespace tstyles {
 namespace {
@@ -22,20 +25,39 @@ bool isListFile(const std::filesystem::path& file) {
     return extension == ".pvd" || extension == ".series";
 }
 
+// Whether the files are one numbered series (flow_0000.vtk, flow_0001.vtk, ...: one name pattern
+// with its numbers apart).
+bool isNumberedSeries(const std::vector<std::filesystem::path>& files) {
+    if (files.size() < 2) return false;
+    const std::string pattern = numberPattern(files.front().filename().string());
+    if (pattern.find('#') == std::string::npos) return false;
+    return std::all_of(files.begin(), files.end(), [&](const std::filesystem::path& file) {
+        return numberPattern(file.filename().string()) == pattern;
+    });
+}
+
 VtkCollection entriesOf(const std::vector<std::filesystem::path>& files) {
     if (files.size() == 1 && lowercaseExtension(files.front()) == ".pvd") return readPvdCollection(files.front());
     if (files.size() == 1 && lowercaseExtension(files.front()) == ".series") return readFileSeries(files.front());
     VtkCollection collection;
-    for (const std::filesystem::path& file : files) {
+    for (const std::filesystem::path& file : files)
         if (isListFile(file))
             throwInputError(file, "", "a .pvd or .series file is a whole series: give it alone, not in a list");
-        collection.entries.push_back({double(collection.entries.size()), file, ""});
+    if (isNumberedSeries(files)) {
+        const auto byNumber = [](const std::filesystem::path& a, const std::filesystem::path& b) {
+            return naturalLess(a.filename().string(), b.filename().string());
+        };
+        // A shell's glob sorts flow_10 before flow_2: say so, but the order given is the user's.
+        const auto unordered = std::is_sorted_until(files.begin(), files.end(), byNumber);
+        if (unordered != files.end())
+            collection.notes.push_back("the files are numbered (" + numberPattern(files.front().filename().string()) +
+                                       ") but not given in number order: " + unordered->filename().string() +
+                                       " comes after " + std::prev(unordered)->filename().string() +
+                                       "; the time-steps follow the order given");
     }
+    for (const std::filesystem::path& file : files)
+        collection.entries.push_back({double(collection.entries.size()), file, ""});
     return collection;
-}
-
-std::string arrayText(const VtkDataArray& array) {
-    return array.name + (array.components > 1 ? " (" + std::to_string(array.components) + " components)" : "");
 }
 
 struct ArrayChoice {
@@ -45,34 +67,34 @@ struct ArrayChoice {
 };
 
 // --var, else the active Scalars, else the first single-component array.
-ArrayChoice chooseArray(const VtkXmlFile& file, const VtkDataset& dataset, const std::string& variable) {
-    const auto& arrays = dataset.pieces.front().pointArrays;
-    const VtkDataArray* chosen = nullptr;
+ArrayChoice chooseArray(const VtkSeriesFile& file, const std::string& variable) {
+    const auto& arrays = file.pointArrays();
+    const VtkArraySummary* chosen = nullptr;
     std::string why;
     if (!variable.empty()) {
-        chosen = &pointArrayNamed(file, dataset, variable);
+        chosen = &file.pointArray(variable);
         why = "asked for with --var";
-    } else if (!dataset.activeScalars.empty()) {
-        chosen = &pointArrayNamed(file, dataset, dataset.activeScalars);
+    } else if (!file.activeScalars().empty()) {
+        chosen = &file.pointArray(file.activeScalars());
         why = "the active Scalars array";
     } else {
         const auto single = std::find_if(arrays.begin(), arrays.end(),
-                                         [](const VtkDataArray& array) { return array.components == 1; });
+                                         [](const VtkArraySummary& array) { return array.components == 1; });
         if (single == arrays.end()) {
             std::string problem = "no point array of one component to show; name one with --var (a vector is read "
                                   "as its magnitude)";
             std::string list;
-            for (const VtkDataArray& array : arrays) list += (list.empty() ? ": " : ", ") + arrayText(array);
-            if (arrays.empty()) list = dataset.cellArrays.empty() ? ": the file has no arrays"
-                                                                  : ": the file has only cell arrays, which are not read";
-            throwInputError(file.path, "PointData", problem + list);
+            for (const VtkArraySummary& array : arrays) list += (list.empty() ? ": " : ", ") + arrayText(array);
+            if (arrays.empty()) list = file.cellArrays().empty() ? ": the file has no arrays"
+                                                                 : ": the file has only cell arrays, which are not read";
+            throwInputError(file.path(), "PointData", problem + list);
         }
         chosen = &*single;
         why = "the first array of one component";
     }
     ArrayChoice choice{chosen->name, seriesValueType(chosen->type), {}};
     std::string others;
-    for (const VtkDataArray& array : arrays)
+    for (const VtkArraySummary& array : arrays)
         if (&array != chosen) others += (others.empty() ? "" : ", ") + arrayText(array);
     choice.notes.push_back("point array '" + chosen->name + "' (" + chosen->type.name + ", " + why + ")" +
                            (others.empty() ? "" : "; the others, for --var: " + others));
@@ -83,58 +105,15 @@ ArrayChoice chooseArray(const VtkXmlFile& file, const VtkDataset& dataset, const
     } else if (choice.type == ValueType::Float64 && chosen->type.name != "Float64") {
         choice.notes.push_back(chosen->type.name + " values are kept as Float64");
     }
-    if (!dataset.cellArrays.empty())
-        choice.notes.push_back(std::to_string(dataset.cellArrays.size()) +
+    if (!file.cellArrays().empty())
+        choice.notes.push_back(std::to_string(file.cellArrays().size()) +
                                " cell array(s) not read: only point data is (values at the grid's points)");
     return choice;
 }
 
-std::string encodingText(const VtkXmlFile& file, const VtkDataset& dataset, const std::string& name) {
-    const VtkDataArray& array = pointArrayNamed(file, dataset, name);
-    std::string text = array.format;
-    if (array.format == "appended")
-        text += file.appendedEncoding == VtkByteStream::Encoding::Raw ? " (raw)" : " (base64)";
-    if (array.format != "ascii") {
-        if (file.layout.compressor != VtkCompressor::None) text += ", compressed by " + toString(file.layout.compressor);
-        text += file.layout.headerBytes == 8 ? ", UInt64 headers" : ", UInt32 headers";
-        text += file.layout.bigEndian ? ", big-endian" : ", little-endian";
-    }
-    return text;
-}
-
-// The ImageData frame: VTK places point (i, j, k) at Origin + Direction * ((i, j, k) * Spacing),
-// counting i, j, k from 0 even when the extent starts elsewhere.
-OrientedAxes imageFrame(const VtkXmlFile& file, const VtkDataset& dataset) {
-    const auto& d = dataset.direction;
-    std::array<glm::dvec3, 3> axes{};
-    for (int column = 0; column < 3; ++column)
-        axes[std::size_t(column)] = glm::dvec3(d[std::size_t(column)], d[std::size_t(3 + column)],
-                                               d[std::size_t(6 + column)]) *
-                                    dataset.spacing[column];
-    const glm::dvec3 first = dataset.origin + axes[0] * double(dataset.whole.bounds[0]) +
-                             axes[1] * double(dataset.whole.bounds[2]) + axes[2] * double(dataset.whole.bounds[4]);
-    return orientAxes(first, axes, dataset.whole.dims(), file.path, "Spacing and Direction");
-}
-
-// A rectilinear grid's coordinates as a grid with uneven axes where they are uneven: the first
-// node at the placement's origin, the axes along x, y and z.
-void placeRectilinear(const std::array<std::vector<double>, 3>& coordinates, const glm::ivec3& dims, SourceStep& step) {
-    RectilinearGrid grid;
-    grid.dims = dims;
-    Placement placement;
-    for (std::size_t axis = 0; axis < 3; ++axis) {
-        // Even within what float32 coordinates can say: 1e-5 of the extent, (count - 1) mean gaps.
-        AxisNodes nodes = axisNodesOf(coordinates[axis], 1e-5 * double(coordinates[axis].size() - 1));
-        placement.origin[int(axis)] = nodes.origin;
-        grid.spacing[int(axis)] = nodes.spacing;
-        grid.axisPositions[axis] = std::move(nodes.positions);
-    }
-    step.grid = grid;
-    step.placement = placement;
-}
-
 struct StepSource {
     std::filesystem::path file;
+    glm::ivec3 dims{0};
     bool mirrorX = false;
 };
 
@@ -145,38 +124,19 @@ SourceStep describeStep(const VtkCollectionEntry& entry, const std::string& arra
     step.type = type;
     step.file = entry.file;
     source.file = entry.file;
-    const auto header = loadVtkXmlFile(entry.file, true, memoryCap);
-    const VtkDataset dataset = describeVtkDataset(*header);
-    pointArrayNamed(*header, dataset, arrayName);
-    if (dataset.kind == VtkGridKind::Rectilinear) {
-        const auto file = loadVtkXmlFile(entry.file, false, memoryCap);
-        placeRectilinear(readVtkCoordinates(*file, dataset, memoryCap), dataset.whole.dims(), step);
-        return step;
-    }
-    if (dataset.kind == VtkGridKind::Structured) {
-        const auto file = loadVtkXmlFile(entry.file, false, memoryCap);
-        StructuredGrid grid = makeStructuredGrid(dataset.whole.dims(), readVtkPoints(*file, dataset, memoryCap), entry.file);
-        if (const auto problem = findGridProblem(grid)) throwInputError(entry.file, "Points", *problem);
-        step.grid = std::move(grid);
-        return step;
-    }
-    const OrientedAxes frame = imageFrame(*header, dataset);
-    RectilinearGrid grid;
-    grid.dims = dataset.whole.dims();
-    grid.spacing = frame.spacing;
-    step.grid = grid;
-    step.placement = frame.placement;
-    source.mirrorX = frame.mirrorX;
+    const VtkSeriesFile file(entry.file, memoryCap);
+    file.pointArray(arrayName);
+    file.placeStep(step, source.mirrorX);
+    source.dims = gridDims(step.grid);
     return step;
 }
 
 void describeSeries(SourceSeries& series, const std::vector<std::filesystem::path>& files,
-                    const VtkCollection& collection, const VtkXmlFile& first, const VtkDataset& dataset,
-                    const ArrayChoice& choice) {
-    const std::string kind = toString(dataset.kind);
+                    const VtkCollection& collection, const VtkSeriesFile& first, const ArrayChoice& choice) {
+    const std::string& kind = first.kindName();
     series.name = files.front().stem().string() + " (" + choice.name + ")";
     series.file = files.front();
-    series.format = "VTK XML " + kind;
+    series.format = first.format();
     for (int axis = 0; axis < 3; ++axis)
         series.axes[std::size_t(axis)] = {std::string(1, char('x' + axis)), "", AxisDirection::Unknown};
     series.time.unit = TimeUnit::None;
@@ -188,11 +148,9 @@ void describeSeries(SourceSeries& series, const std::vector<std::filesystem::pat
                                    : count > 1 ? ", one time-step each, times 0, 1, 2, ... in the order given" : ""));
     series.notes.insert(series.notes.end(), collection.notes.begin(), collection.notes.end());
     series.notes.insert(series.notes.end(), choice.notes.begin(), choice.notes.end());
-    series.notes.push_back("data of " + first.path.filename().string() + ": " +
-                           encodingText(first, dataset, choice.name));
-    if (dataset.pieces.size() > 1)
-        series.notes.push_back(first.path.filename().string() + " holds " + std::to_string(dataset.pieces.size()) +
-                               " pieces, assembled into its WholeExtent");
+    series.notes.push_back("data of " + first.path().filename().string() + ": " + first.encoding(choice.name));
+    const std::vector<std::string> layout = first.layoutNotes();
+    series.notes.insert(series.notes.end(), layout.begin(), layout.end());
 }
 
 }  // namespace
@@ -200,28 +158,25 @@ void describeSeries(SourceSeries& series, const std::vector<std::filesystem::pat
 SourceSeries openVtkSeries(const std::vector<std::filesystem::path>& files, const ReadOptions& options) {
     const std::uint64_t cap = memoryCap(options.maxMemoryBytes);
     const VtkCollection collection = entriesOf(files);
-    const auto first = loadVtkXmlFile(collection.entries.front().file, true, cap);
-    const VtkDataset firstDataset = describeVtkDataset(*first);
-    const ArrayChoice choice = chooseArray(*first, firstDataset, options.variable);
+    const VtkSeriesFile first(collection.entries.front().file, cap);
+    const ArrayChoice choice = chooseArray(first, options.variable);
 
     SourceSeries series;
-    describeSeries(series, files, collection, *first, firstDataset, choice);
+    describeSeries(series, files, collection, first, choice);
     auto sources = std::make_shared<std::vector<StepSource>>(collection.entries.size());
     for (std::size_t index = 0; index < collection.entries.size(); ++index)
         series.steps.push_back(describeStep(collection.entries[index], choice.name, choice.type, cap, (*sources)[index]));
     const std::string name = choice.name;
     series.readStep = [sources, name, cap](std::size_t index) {
         const StepSource& source = (*sources)[index];
-        const auto file = loadVtkXmlFile(source.file, false, cap);
-        const VtkDataset dataset = describeVtkDataset(*file);
-        std::vector<float> values = readVtkPointArray(*file, dataset, name, cap);
-        refuseInfinities(values, dataset.whole.dims(), source.file, index);
-        if (source.mirrorX) mirrorAlongX(values, dataset.whole.dims());
+        std::vector<float> values = readVtkSeriesValues(source.file, name, cap);
+        refuseInfinities(values, source.dims, source.file, index);
+        if (source.mirrorX) mirrorAlongX(values, source.dims);
         return values;
     };
     return series;
 }
 
-bool hasVtkXmlSignature(const std::filesystem::path& file) { return looksLikeVtkXml(file); }
+bool hasVtkSignature(const std::filesystem::path& file) { return looksLikeVtkXml(file) || looksLikeVtkLegacy(file); }
 
 }  // namespace tstyles

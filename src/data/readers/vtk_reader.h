@@ -13,7 +13,7 @@ namespace tstyles {
 // `options.variable` (--var) picks the point array; a vector array is read as its magnitude.
 SourceSeries openVtkSeries(const std::vector<std::filesystem::path>& files, const ReadOptions& options);
 
-// Whether the file starts like a VTK XML file, whatever its name.
-bool hasVtkXmlSignature(const std::filesystem::path& file);
+// Whether the file starts like a VTK XML or legacy VTK file, whatever its name.
+bool hasVtkSignature(const std::filesystem::path& file);
 
 }  // namespace tstyles

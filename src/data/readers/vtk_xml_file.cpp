@@ -67,11 +67,15 @@ void findDataset(VtkXmlFile& file) {
     const std::string type = file.root.attribute("type").as_string();
     if (type == "Collection")
         throwInputError(file.path, "type", "is a collection: name it with the .pvd extension");
-    if (type != "ImageData" && type != "RectilinearGrid" && type != "StructuredGrid")
+    const bool parallel = type.size() > 1 && type[0] == 'P';
+    const std::string serial = parallel ? type.substr(1) : type;
+    if (serial != "ImageData" && serial != "RectilinearGrid" && serial != "StructuredGrid")
         throwInputError(file.path, "type",
                         "VTK XML '" + type +
-                            "' data is not read (only ImageData, .vti; RectilinearGrid, .vtr; StructuredGrid, .vts)");
+                            "' data is not read (only ImageData, .vti; RectilinearGrid, .vtr; StructuredGrid, .vts; "
+                            "and their parallel forms .pvti, .pvtr, .pvts)");
     file.dataset = file.root.child(type.c_str());
+    file.parallel = parallel;
     if (!file.dataset) throwInputError(file.path, type, "the <" + type + "> element is missing");
 }
 
@@ -98,6 +102,7 @@ std::unique_ptr<VtkXmlFile> loadVtkXmlFile(const std::filesystem::path& path, bo
                                            std::uint64_t memoryCap) {
     auto file = std::make_unique<VtkXmlFile>();
     file->path = path;
+    file->headerOnly = headerOnly;
     file->text = readText(path, headerOnly, memoryCap);
     const std::size_t xmlEnd = splitAppendedData(*file, headerOnly);
     std::string xml = file->text.substr(0, xmlEnd);

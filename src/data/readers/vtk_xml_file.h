@@ -1,4 +1,4 @@
-// A VTK XML file (.vti, .vts) as text: the XML parsed with pugixml, and the appended data block,
+// A VTK XML file (.vti, .vtr, .vts, or the parallel .pvti, .pvtr, .pvts) as text: the XML parsed with pugixml, and the appended data block,
 // which is raw bytes no XML parser can read, set apart before parsing.
 #pragma once
 
@@ -19,7 +19,9 @@ struct VtkXmlFile {
     std::string text;  // the file's bytes (only the XML before the appended data when headerOnly)
     pugi::xml_document document;
     pugi::xml_node root;     // <VTKFile>
-    pugi::xml_node dataset;  // <ImageData> or <StructuredGrid>
+    pugi::xml_node dataset;  // <ImageData>, <RectilinearGrid>, <StructuredGrid> or a parallel <P...>
+    bool parallel = false;   // a .pvti, .pvtr or .pvts: its pieces are in files of their own
+    bool headerOnly = false;
     VtkBinaryLayout layout;
     // The appended data after its '_' marker (empty when the file has none, or headerOnly).
     std::string_view appended;
