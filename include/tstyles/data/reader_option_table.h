@@ -42,9 +42,8 @@ struct ReaderOptionLine {
     std::vector<std::string_view> choices;  // Choice: the values allowed
     std::string_view defaultText;           // how the default reads, "" where the help says it
     std::string_view help;
-    // Taken only by the formats whose row names it (format_table.cpp); else by every reader (and
-    // refused for a tstyles manifest where `forManifest` is false).
-    bool formatOnly = false;
+    // Taken by a tstyles manifest too (else refused there); which formats take it is said by their
+    // rows (format_table.cpp), isFormatOnly().
     bool forManifest = false;
     // Sets the field from the given texts (checked against the line already); `spelling` names the
     // option in a message.
@@ -52,6 +51,10 @@ struct ReaderOptionLine {
     // Whether `options` holds a value given for it (not the default).
     bool (*given)(const ReadOptions& options) = nullptr;
 };
+
+// Whether only some formats take the option: those whose rows name it (format_table.cpp); the
+// others refuse it. An option no row names is every format's.
+bool isFormatOnly(const ReaderOptionLine& line);
 
 // Every reader option, in the order of the help.
 const std::vector<ReaderOptionLine>& readerOptionLines();

@@ -74,7 +74,7 @@ void rejectReadingOptions(const std::filesystem::path& manifest, const ReadOptio
     for (const ReaderOptionLine* line : readerOptionsGiven(options))
         if (!line->forManifest) {
             std::string takers;
-            if (line->formatOnly)
+            if (isFormatOnly(*line))
                 for (const SeriesFormat& format : seriesFormats())
                     if (std::find(format.options.begin(), format.options.end(), line->cli) != format.options.end())
                         takers += (takers.empty() ? "" : ", ") + format.name;
@@ -88,7 +88,7 @@ void rejectReadingOptions(const std::filesystem::path& manifest, const ReadOptio
 std::vector<std::string> formatOnlyOptionsGiven(const ReadOptions& options) {
     std::vector<std::string> given;
     for (const ReaderOptionLine* line : readerOptionsGiven(options))
-        if (line->formatOnly) given.emplace_back(line->cli);
+        if (isFormatOnly(*line)) given.emplace_back(line->cli);
     return given;
 }
 
