@@ -1,5 +1,6 @@
 // tstyles._native.Series: a loaded series, shared with the renderers that show it, and the ways to
 // make one (arrays, files). The friendly argument handling lives in python/tstyles/series.py.
+#include <cmath>
 #include <map>
 #include <memory>
 
@@ -15,6 +16,7 @@
 #include "tstyles/data/reader_option_table.h"
 #include "tstyles/data/series_opener.h"
 #include "tstyles/data/series_summary.h"
+#include "tstyles/data/temporal_probe.h"
 
 namespace py = pybind11;
 
@@ -214,7 +216,14 @@ void bindSeries(py::module_& module) {
             if (!step.mask) return py::none();
             return stepView(self, *step.mask, step.dims());
         })
-        .def("describe", [](const SeriesHandle& s) { return describeSeries(*s.series); });
+        .def("describe", [](const SeriesHandle& s) { return describeSeries(*s.series); })
+        .def("values_at", [](const SeriesHandle& s, double x, double y, double z) {
+            // NaN where a time-step's grid does not reach the place or has no data there.
+            std::vector<double> values;
+            for (const auto& value : TemporalProbe(*s.series).valuesAt({x, y, z}))
+                values.push_back(value ? *value : std::nan(""));
+            return values;
+        });
 
     module.def("build_series", [](const py::dict& spec) { return SeriesHandle{buildSeries(spec)}; });
     module.def("reader_options", &readerOptionTable);

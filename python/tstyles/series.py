@@ -89,6 +89,20 @@ class Series:
         """What `tstyles info` prints about the series."""
         return self._native.describe()
 
+    def at(self, x, y, z):
+        """The values at world place (x, y, z) over time, each time-step sampled in its own grid
+        (docs/probe.md): as an xarray DataArray over "time" when xarray is there, else a tuple of
+        numpy arrays (times, values). Values are in the data's own unit (the density mapping
+        undone); NaN where a time-step's grid does not reach the place or has no data there."""
+        values = np.array(self._native.values_at(float(x), float(y), float(z)))
+        try:
+            import xarray
+        except ImportError:
+            return self.times, values
+        dates = self.dates
+        return xarray.DataArray(values, dims=["time"], coords={"time": dates if dates is not None else self.times},
+                                name=self.name, attrs={"units": self.value_unit, "place": (x, y, z)})
+
 
 def _steps_text(steps):
     if steps is None or isinstance(steps, str):

@@ -58,6 +58,7 @@ struct Command {
 
 Command addRenderCommand(CLI::App& app);
 Command addInfoCommand(CLI::App& app);
+Command addProbeCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);
 Command addViewCommand(CLI::App& app);
 Command addConvertCommand(CLI::App& app);

@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", [] { return cli::versionText(); },
                          "Print the version, the OpenGL renderer `render` would use and where the bundled data is");
     const std::vector<cli::Command> commands = {cli::addRenderCommand(app), cli::addInfoCommand(app),
-                                                cli::addBenchCommand(app), cli::addViewCommand(app),
+                                                cli::addProbeCommand(app), cli::addBenchCommand(app), cli::addViewCommand(app),
                                                 cli::addConvertCommand(app), cli::addSceneCommand(app),
                                                 cli::addAnimateCommand(app), cli::addCompareCommand(app),
                                                 cli::addCheckCommand(app), cli::addManualPageCommand(app),
