@@ -11,11 +11,14 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "image_size_text.h"
+#include "tstyles/annotate/probe_plot.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/core/interval.h"
 #include "tstyles/data/format_listing.h"
 #include "tstyles/data/temporal_probe.h"
 #include "tstyles/data/time_axis.h"
+#include "tstyles/image/image_io.h"
 
 namespace tstyles::cli {
 namespace {
@@ -27,6 +30,8 @@ struct ProbeOptions {
     std::size_t points = 50;
     bool json = false;
     bool csv = false;
+    std::filesystem::path plot;  // -o: the picture of the table
+    std::string plotSize = "800x450";
 };
 
 // "X,Y,Z" as three finite numbers, or an InputError naming the option.
@@ -205,6 +210,20 @@ void writeText(const Series& series, const ProbePlaces& places, const std::vecto
     }
 }
 
+ProbeTable tableOf(const Series& series, const ProbePlaces& places, const std::vector<std::string>& labels,
+                   const std::vector<std::vector<std::optional<double>>>& values) {
+    ProbeTable table;
+    table.title = series.name + (places.line ? " along " + pointText(places.points.front()) + " to " +
+                                                   pointText(places.points.back())
+                                             : " at " + pointText(places.points.front()));
+    table.unit = series.valueUnit;
+    for (const TimeStep& step : series.steps) table.times.push_back(step.time);
+    table.timeLabels = labels;
+    table.distances = places.distances;
+    table.values = values;
+    return table;
+}
+
 }  // namespace
 
 Command addProbeCommand(CLI::App& app) {
@@ -221,12 +240,17 @@ Command addProbeCommand(CLI::App& app) {
     command->add_option("--points", options->points, "Places along --along, both ends included (default 50)");
     command->add_flag("--json", options->json, "Write JSON: times, their labels, the values (null where missing)");
     command->add_flag("--csv", options->csv, "Write CSV: one row per time-step");
+    command->add_option("-o,--output", options->plot,
+                        "Also draw the table: a line plot of one place, a Hovmoeller diagram of a line (PNG, ...)");
+    command->add_option("--size", options->plotSize, "The picture's size WIDTHxHEIGHT (default 800x450)");
     addDatasetOptions(*command, *dataset);
     return {command, [inputs, dataset, options] {
                 if (options->json && options->csv) throwInputError("", "--csv", "give --json or --csv, not both");
                 // Checked before the series is read: a typing mistake should not wait for the data.
                 if (!options->at.empty()) parseTriple(options->at, "--at", "a place X,Y,Z");
                 if (!options->voxel.empty()) parseNode(options->voxel);
+                const glm::ivec2 plotSize = parseImageSizeOption(options->plotSize, "--size", 320, 8192);
+                if (!options->plot.empty()) requireWritableImagePath(options->plot, "-o");
                 const Series series = openDataset(*inputs, *dataset);
                 const ProbePlaces places = placesOf(*options, series);
                 const TemporalProbe probe(series);
@@ -239,6 +263,10 @@ Command addProbeCommand(CLI::App& app) {
                 if (options->json) writeJson(series, places, labels, values);
                 else if (options->csv) writeCsv(series, places, labels, values);
                 else writeText(series, places, labels, values);
+                if (!options->plot.empty()) {
+                    writeImage(drawProbePlot(tableOf(series, places, labels, values), plotSize), options->plot);
+                    std::cerr << "wrote " << options->plot.string() << "\n";
+                }
                 return kExitSuccess;
             }};
 }

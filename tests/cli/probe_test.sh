@@ -96,6 +96,18 @@ case_along_a_line() {
     run_tstyles -- probe "$S/even/series.json" --along 1,4,3.5:5,4,3.5 --points 3 --json
     expect_exit 0
     grep -q '"distances": \[' "$OUT_FILE" || fail "--json of a line has no distances"
+    # -o draws the table: a Hovmoeller diagram of the line, a line plot of a place (their pixels are
+    # checked in tests/annotate/probe_plot_test.cpp).
+    run_tstyles -- probe "$S/even/series.json" --along 1,4,3.5:5,4,3.5 --points 20 -o "$SCRATCH/line.png" --size 640x360
+    expect_exit 0
+    expect_image "$SCRATCH/line.png" 640 360
+    run_tstyles -- probe "$S/even/series.json" --at 2,4,3.5 -o "$SCRATCH/place.png"
+    expect_exit 0
+    expect_image "$SCRATCH/place.png" 800 450
+    run_tstyles -- probe "$S/even/series.json" --at 2,4,3.5 -o "$SCRATCH/no-such-folder/place.png"
+    expect_exit 2
+    expect_stderr_contains "does not exist"
+    expect_no_output "$SCRATCH/no-such-folder/place.png"
 }
 
 case_bad_places_and_options() {
