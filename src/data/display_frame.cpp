@@ -87,7 +87,8 @@ glm::dmat3 automaticRotation(const Series& series, std::vector<std::string>& exp
             placed[std::size_t(data)] = true;
         }
     const bool noMeaning = std::none_of(placed.begin(), placed.end(), [](bool p) { return p; });
-    if (const auto thin = noMeaning ? extremelyThinAxis(series) : std::nullopt) {
+    const auto thin = noMeaning ? extremelyThinAxis(series) : std::nullopt;
+    if (thin) {
         // Nothing says which way is up, and one axis is far thinner than the others: it goes up, so
         // that the vertical exaggeration thickens it and the camera looks at the large face.
         rows[1] = SignedAxis{*thin, false};
@@ -102,7 +103,15 @@ glm::dmat3 automaticRotation(const Series& series, std::vector<std::string>& exp
         placed[std::size_t(data)] = true;
     }
     std::array<SignedAxis, 3> chosen{*rows[0], *rows[1], *rows[2]};
-    if (glm::determinant(rotationOf(chosen)) < 0.0) {
+    if (thin && glm::determinant(rotationOf(chosen)) < 0.0) {
+        // Moving the thin axis up swapped two axes, not the file's handedness: the axis toward the
+        // viewer turns, so that a map seen from above keeps the file's x to the right and its y up
+        // the picture (a TIFF's row 0 at the top, as Fiji shows it), not turned half round.
+        chosen[2].negated = !chosen[2].negated;
+        explanation.push_back("toward the viewer: -" + axisLabel(series, chosen[2].axis) +
+                              ", so that seen from above " + axisLabel(series, chosen[0].axis) + " runs right and " +
+                              axisLabel(series, chosen[2].axis) + " up the picture");
+    } else if (glm::determinant(rotationOf(chosen)) < 0.0) {
         chosen[0].negated = !chosen[0].negated;
         explanation.push_back("the file's axes are left-handed: display x runs against " +
                               axisLabel(series, chosen[0].axis));
