@@ -3,6 +3,7 @@
 #include "vtk_data_array.h"
 
 #include <charconv>
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -95,6 +96,15 @@ std::vector<float> readComponents(const VtkXmlFile& file, const VtkDataArray& ar
 }
 
 }  // namespace
+
+std::string missingPointArrayProblem(const std::string& name, const std::string& pointArrayList,
+                                     const std::vector<std::string>& cellArrays) {
+    const std::string list = pointArrayList.empty() ? "none" : pointArrayList;
+    if (std::find(cellArrays.begin(), cellArrays.end(), name) != cellArrays.end())
+        return "'" + name + "' is a cell array: only point arrays are read (values at the grid's points); " +
+               "the point arrays are: " + list;
+    return "no point array named '" + name + "'; the point arrays are: " + list;
+}
 
 double decodeVtkValue(const std::uint8_t* bytes, const VtkValueType& type, bool bigEndian) {
     std::uint64_t bits = 0;

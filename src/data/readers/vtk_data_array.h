@@ -38,6 +38,11 @@ std::vector<VtkDataArray> describeArrays(const VtkXmlFile& file, const pugi::xml
 // (UInt32, Int64, UInt64 become floats, as every value does on the way to density).
 ValueType seriesValueType(const VtkValueType& type);
 
+// What --var naming no point array says: the point arrays there are (`pointArrayList`, "none"
+// when empty), and that `name` is a cell array where it is one. One wording for XML and legacy files.
+std::string missingPointArrayProblem(const std::string& name, const std::string& pointArrayList,
+                                     const std::vector<std::string>& cellArrays);
+
 // One value of `type` from its bytes in the given byte order (VTK XML says which; legacy files are
 // big-endian), as a double: exact for every type but 64-bit integers beyond 2^53.
 double decodeVtkValue(const std::uint8_t* bytes, const VtkValueType& type, bool bigEndian);

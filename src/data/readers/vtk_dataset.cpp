@@ -96,7 +96,7 @@ std::string arrayList(const std::vector<VtkDataArray>& arrays) {
     for (const VtkDataArray& array : arrays)
         list += (list.empty() ? "" : ", ") + array.name +
                 (array.components > 1 ? " (" + std::to_string(array.components) + " components)" : "");
-    return list.empty() ? "none" : list;
+    return list;
 }
 
 // Fills the whole extent from the pieces, `width` floats per point, each piece's values read by
@@ -272,11 +272,7 @@ const VtkDataArray& pointArrayNamed(const VtkXmlFile& file, const VtkDataset& da
     const auto& arrays = dataset.pieces.front().pointArrays;
     for (const VtkDataArray& array : arrays)
         if (array.name == name) return array;
-    std::string problem = "no point array named '" + name + "'; the point arrays are: " + arrayList(arrays);
-    if (std::find(dataset.cellArrays.begin(), dataset.cellArrays.end(), name) != dataset.cellArrays.end())
-        problem = "'" + name + "' is a cell array: only point arrays are read (values at the grid's points); " +
-                  "the point arrays are: " + arrayList(arrays);
-    throwInputError(file.path, "--var", problem);
+    throwInputError(file.path, "--var", missingPointArrayProblem(name, arrayList(arrays), dataset.cellArrays));
 }
 
 std::vector<float> readVtkPointArray(const VtkXmlFile& file, const VtkDataset& dataset, const std::string& name,

@@ -352,17 +352,14 @@ std::string legacyArrayList(const std::vector<VtkLegacyArray>& arrays) {
     for (const VtkLegacyArray& array : arrays)
         list += (list.empty() ? "" : ", ") + array.name +
                 (array.components > 1 ? " (" + std::to_string(array.components) + " components)" : "");
-    return list.empty() ? "none" : list;
+    return list;
 }
 
 const VtkLegacyArray& pointArrayNamed(const VtkLegacyFile& file, const std::string& name) {
     for (const VtkLegacyArray& array : file.pointArrays)
         if (array.name == name) return array;
-    std::string problem = "no point array named '" + name + "'; the point arrays are: " + legacyArrayList(file.pointArrays);
-    if (std::find(file.cellArrays.begin(), file.cellArrays.end(), name) != file.cellArrays.end())
-        problem = "'" + name + "' is a cell array: only point arrays are read (values at the grid's points); " +
-                  "the point arrays are: " + legacyArrayList(file.pointArrays);
-    throwInputError(file.path, "--var", problem);
+    throwInputError(file.path, "--var",
+                    missingPointArrayProblem(name, legacyArrayList(file.pointArrays), file.cellArrays));
 }
 
 // `count` values of `array`, read from where they start.

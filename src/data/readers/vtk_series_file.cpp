@@ -12,8 +12,6 @@
 namespace tstyles {
 namespace {
 
-bool isLegacyFile(const std::filesystem::path& path) { return looksLikeVtkLegacy(path); }
-
 // The ImageData frame: VTK places point (i, j, k) at Origin + Direction * ((i, j, k) * Spacing),
 // counting i, j, k from 0 even when the extent starts elsewhere.
 OrientedAxes imageFrame(const VtkXmlFile& file, const VtkDataset& dataset) {
@@ -68,7 +66,7 @@ std::string arrayText(const VtkArraySummary& array) {
 
 VtkSeriesFile::VtkSeriesFile(const std::filesystem::path& path, std::uint64_t memoryCap)
     : path_(path), memoryCap_(memoryCap) {
-    if (isLegacyFile(path)) {
+    if (looksLikeVtkLegacy(path)) {
         legacy_ = describeVtkLegacyFile(path, memoryCap);
         kindName_ = legacyDatasetName(legacy_->kind);
         format_ = "VTK legacy " + kindName_;
@@ -93,12 +91,7 @@ const VtkArraySummary& VtkSeriesFile::pointArray(const std::string& name) const 
         if (array.name == name) return array;
     std::string list;
     for (const VtkArraySummary& array : pointArrays_) list += (list.empty() ? "" : ", ") + arrayText(array);
-    if (list.empty()) list = "none";
-    std::string problem = "no point array named '" + name + "'; the point arrays are: " + list;
-    if (std::find(cellArrays_.begin(), cellArrays_.end(), name) != cellArrays_.end())
-        problem = "'" + name + "' is a cell array: only point arrays are read (values at the grid's points); " +
-                  "the point arrays are: " + list;
-    throwInputError(path_, "--var", problem);
+    throwInputError(path_, "--var", missingPointArrayProblem(name, list, cellArrays_));
 }
 
 std::string VtkSeriesFile::encoding(const std::string& name) const {
@@ -156,7 +149,7 @@ void VtkSeriesFile::placeStep(SourceStep& step, bool& mirrorX) const {
 
 std::vector<float> readVtkSeriesValues(const std::filesystem::path& path, const std::string& name,
                                        std::uint64_t memoryCap) {
-    if (isLegacyFile(path)) return readVtkLegacyPointArray(describeVtkLegacyFile(path, memoryCap), name, memoryCap);
+    if (looksLikeVtkLegacy(path)) return readVtkLegacyPointArray(describeVtkLegacyFile(path, memoryCap), name, memoryCap);
     const auto file = loadVtkXmlFile(path, false, memoryCap);
     return readVtkPointArray(*file, describeVtkDataset(*file, memoryCap), name, memoryCap);
 }
