@@ -50,6 +50,13 @@ float nodePosition(int node) {
 // branch per case llvmpipe would run every case's lookups, masked).
 vec4 trackStyle(int track, float x, SphereCoordinate sphere) {
     int first = styleTracks[track].x;
+    // One node: its lookup is the colour everywhere (SINGLE_NODE_STYLE_TRACKS; `track` is a
+    // constant at every call, so this is decided when the program is compiled). The blend below
+    // would mix that lookup with itself at twice the cost: the lit sphere is a mipmapped lookup.
+    if ((SINGLE_NODE_STYLE_TRACKS & (1 << track)) != 0) {
+        vec4 look = nodeLook(first, sphere);
+        return vec4(look.a > 0.0 ? look.rgb / look.a : vec3(0.0), look.a);
+    }
     int last = first + styleTracks[track].y - 1;
     int node = first;
     while (node < last - 1 && x >= nodePosition(node + 1)) ++node;

@@ -13,6 +13,7 @@
 const int COMPOSITOR_READS = READS_COMPOSITED;
 const bool COMPOSITOR_IGNORES_TRANSPARENT = true;
 const bool COMPOSITOR_READS_TRANSPARENT_COLOUR = false;
+const bool COMPOSITOR_CLASSIFIES_ITSELF = false;
 
 // The styled time-steps added so far: the sum of their premultiplied colours and opacities, and
 // how many have some opacity.

@@ -7,6 +7,7 @@
 const int COMPOSITOR_READS = READS_COMPOSITED;
 const bool COMPOSITOR_IGNORES_TRANSPARENT = true;
 const bool COMPOSITOR_READS_TRANSPARENT_COLOUR = false;
+const bool COMPOSITOR_CLASSIFIES_ITSELF = false;
 
 // The walk meets the time-steps in the order the ray enters their grids, not in time order: each
 // visible one's colour waits here, indexed by time-step, until the finish composites them in order.

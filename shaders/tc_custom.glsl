@@ -9,6 +9,7 @@
 const int COMPOSITOR_READS = CUSTOM_READS_INDEX != 0 ? READS_INDEX_TSTF : READS_GRADIENT_TSTF;
 const bool COMPOSITOR_IGNORES_TRANSPARENT = false;
 const bool COMPOSITOR_READS_TRANSPARENT_COLOUR = true;
+const bool COMPOSITOR_CLASSIFIES_ITSELF = false;
 
 float customCompositor(const int count, const float density[MAX_TIME_STEPS], const bool hasData[MAX_TIME_STEPS],
                        const bool inMask[MAX_TIME_STEPS], const vec4 stf[MAX_TIME_STEPS],

@@ -9,6 +9,7 @@ uniform float compositorThreshold;  // the "threshold" option
 const int COMPOSITOR_READS = READS_INDEX_TSTF;
 const bool COMPOSITOR_IGNORES_TRANSPARENT = false;
 const bool COMPOSITOR_READS_TRANSPARENT_COLOUR = false;
+const bool COMPOSITOR_CLASSIFIES_ITSELF = false;
 
 struct CompositorState {
     TimeStepSample first;

@@ -7,6 +7,7 @@
 const int COMPOSITOR_READS = READS_GRADIENT_TSTF;
 const bool COMPOSITOR_IGNORES_TRANSPARENT = false;
 const bool COMPOSITOR_READS_TRANSPARENT_COLOUR = false;
+const bool COMPOSITOR_CLASSIFIES_ITSELF = false;
 
 struct CompositorState {
     float minimumDensity;

@@ -6,11 +6,15 @@
 // densities do not change, or where the winner's density is within a tie of the runner-up's
 // (overlapping bodies, noise), shows no time colour. Every time-step is then needed, transparent
 // ones too: a place that is transparent at one time and faintly visible at the next has not changed.
+// Where the STF's opacity never falls as density rises (STF_OPACITY_RISES), a higher density never
+// has a lower opacity, so ranking by density and time alone is the same order: the STF is then
+// looked up for the winner alone, once, instead of for every time-step.
 #include "temporal_sample.glsl"
 
 const int COMPOSITOR_READS = READS_INDEX_TSTF;
 const bool COMPOSITOR_IGNORES_TRANSPARENT = UNCHANGED_TIME == 0;
 const bool COMPOSITOR_READS_TRANSPARENT_COLOUR = false;
+const bool COMPOSITOR_CLASSIFIES_ITSELF = UNCHANGED_TIME != 0 && STF_OPACITY_RISES != 0;
 
 struct CompositorState {
     TimeStepSample winner;
@@ -25,9 +29,11 @@ CompositorState compositorInit() {
     return CompositorState(noTimeStep(), 0.0, noTimeStep(), 2.0, -1.0);
 }
 
-// UNCHANGED_TIME's ranking: higher STF opacity, then higher density, then the earlier time-step.
+// UNCHANGED_TIME's ranking: higher STF opacity, then higher density, then the earlier time-step
+// (where the opacity rises with density, the first test decides nothing the second would not).
 bool ranksAbove(TimeStepSample a, TimeStepSample b) {
-    if (b.step < 0 || a.stf.a != b.stf.a) return b.step < 0 || a.stf.a > b.stf.a;
+    if (b.step < 0) return true;
+    if (!COMPOSITOR_CLASSIFIES_ITSELF && a.stf.a != b.stf.a) return a.stf.a > b.stf.a;
     return a.density > b.density || (a.density == b.density && a.step < b.step);
 }
 
@@ -54,6 +60,7 @@ void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 po
 }
 
 TemporalCharacteristic compositorFinish(CompositorState state, vec3 position, inout int fetches) {
+    if (COMPOSITOR_CLASSIFIES_ITSELF && state.winner.step >= 0) state.winner.stf = classifyStf(state.winner.density);
     if (state.winner.step < 0 || state.winner.stf.a <= 0.0) return transparentCharacteristic();
     // One time-step with data: no change to measure, and nothing to tie with.
     if (state.runnerUp.step < 0) return pickedCharacteristic(state.winner, 2.0, 2.0);

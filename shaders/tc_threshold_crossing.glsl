@@ -15,6 +15,7 @@ uniform int compositorDirection;    // the "direction" option: 0 rising, 1 falli
 const int COMPOSITOR_READS = READS_INDEX_TSTF;
 const bool COMPOSITOR_IGNORES_TRANSPARENT = false;
 const bool COMPOSITOR_READS_TRANSPARENT_COLOUR = false;
+const bool COMPOSITOR_CLASSIFIES_ITSELF = false;
 
 // The walk meets the time-steps in the order the ray enters their grids, not in time order: each
 // waits here, by time-step, marked with the sample's generation (as in tc_chronovolume.glsl), until

@@ -12,6 +12,10 @@
 //                                      is 0 may change the result; false lets a walk that knows a
 //                                      time-step is transparent hand it over with a zero STF,
 //                                      unclassified (the packed walk's hidden groups)
+//   const bool COMPOSITOR_CLASSIFIES_ITSELF
+//                                      true when compositorAccumulate reads only the densities: the
+//                                      walks then hand every time-step over with a zero STF, without
+//                                      the lookup, and the compositor classifies the one it keeps
 //   struct CompositorState
 //   CompositorState compositorInit()
 //   void compositorAccumulate(inout CompositorState state, TimeStepSample s, vec3 position, inout int fetches)

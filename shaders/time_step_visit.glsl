@@ -33,7 +33,8 @@ void visitTimeStep(inout CompositorState state, int step, AtlasSample atlasSampl
     // Transparent under the STF: a compositor that leaves such time-steps out needs neither the STF
     // lookup nor its own work (llvmpipe skips them for 8-pixel blocks that agree).
     if (COMPOSITOR_IGNORES_TRANSPARENT && !stfMayBeVisible(atlasSample.density)) return;
-    vec4 stf = classifyStf(atlasSample.density);
+    // A compositor that ranks by density classifies only the time-step it keeps.
+    vec4 stf = COMPOSITOR_CLASSIFIES_ITSELF ? vec4(0.0) : classifyStf(atlasSample.density);
     compositorAccumulate(state, TimeStepSample(step, atlasSample.density, stf, atlasSample.inMask), position, result.fetches);
 }
 

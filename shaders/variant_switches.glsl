@@ -3,6 +3,11 @@
 // defaults; a program built without one stops here instead of taking a default silently.
 //   STYLED              1 when a transfer function of the scene uses a lit-sphere style
 //   STYLED_TRACKS       bit t set when track t (STF_TRACK, INDEX_TSTF_TRACK, GRADIENT_TSTF_TRACK) has styles
+//   SINGLE_NODE_STYLE_TRACKS bit t set when styled track t has one colour node: one style lookup at
+//                       every value, where several nodes blend the lookups of the two around it
+//   STF_OPACITY_RISES   1 when the STF's opacity never falls as density rises: temporal-mip with
+//                       UNCHANGED_TIME ranks the time-steps by density alone (the same order as by
+//                       STF opacity, then density) and classifies only the one it keeps
 //   HAS_MASKS           1 when a time-step has a segmentation mask (the atlas' last channel)
 //   MISSING_VALUES      1 when the density atlas holds (density * validity, validity) pairs
 //   ALL_AFFINE          1 when every time-step's world -> voxel map is affine (even rectilinear grids)
@@ -38,7 +43,8 @@
     !defined(CUSTOM_READS_INDEX) || !defined(STYLED_TRACKS) || !defined(SKIP_EMPTY_BRICKS) || \
     !defined(MISSING_VALUES) || !defined(UNEVEN_AXIS_WALK) || !defined(PER_RAY_CACHES) ||              \
     !defined(PRECOMPUTED_GRADIENTS) || !defined(RECTILINEAR_GRIDS) || !defined(PACKED_GROUP_MASKS) ||  \
-    !defined(UNCHANGED_TIME) || !defined(RAYCAST_PART) || !defined(SKIP_UNCHANGING_BRICKS)
+    !defined(UNCHANGED_TIME) || !defined(RAYCAST_PART) || !defined(SKIP_UNCHANGING_BRICKS) ||          \
+    !defined(SINGLE_NODE_STYLE_TRACKS) || !defined(STF_OPACITY_RISES)
 #error "a raycasting switch is not defined: build the program through RaycastVariant"
 #endif
 #if !RECTILINEAR_GRIDS && !STRUCTURED_GRIDS && !BEAM_GRIDS

@@ -119,6 +119,8 @@ RaycastVariant partOf(const RaycastVariant& whole, RaycastPart part) {
     variant.customCodeName.clear();
     variant.customReads = CompositorReads::IndexTstf;
     variant.styledTracks = 0;
+    variant.singleNodeStyleTracks = 0;
+    variant.stfOpacityRises = false;
     variant.precomputedGradients = false;
     variant.unchangedTime = false;
     variant.skipUnchangingBricks = false;
@@ -129,6 +131,8 @@ ShaderDefines RaycastVariant::defines() const {
     return {
         {"STYLED", flag(styled())},
         {"STYLED_TRACKS", std::to_string(styledTracks)},
+        {"SINGLE_NODE_STYLE_TRACKS", std::to_string(singleNodeStyleTracks)},
+        {"STF_OPACITY_RISES", flag(stfOpacityRises)},
         {"HAS_MASKS", flag(masks)},
         {"MISSING_VALUES", flag(missingValues)},
         {"ALL_AFFINE", flag(allAffine)},
@@ -225,8 +229,12 @@ std::vector<RaycastVariant> requestableRaycastVariants() {
                     }
                     // Precomputed gradients: styled rectilinear series (even or uneven axes), with
                     // missing values and without (the packed walk's shared validity for them).
+                    // With them, single-node style tracks and the ranking by density where the
+                    // STF's opacity rises: both sides of those switches compile.
                     if (styled && kind.onlyRectilinear) {
                         variant.precomputedGradients = true;
+                        variant.singleNodeStyleTracks = kAllStyleTracks;
+                        variant.stfOpacityRises = variant.unchangedTime;
                         for (bool missing : {false, true}) {
                             variant.missingValues = missing;
                             if (walk == TimeStepWalk::PackedGroups) {

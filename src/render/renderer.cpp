@@ -196,11 +196,13 @@ RaycastVariant Renderer::variantFor(const Scene& scene, const FrameOptions& opti
     variant.evenBeams = gpuSeries_->allBeamsEven();
     variant.structuredGrids = gpuSeries_->structuredGrids().layerCount() > 0;
     variant.styledTracks = styleTextures_.styledTrackBits();
+    variant.singleNodeStyleTracks = styleTextures_.singleNodeTrackBits();
     variant.timeStepCapacity = timeStepCapacityFor(int(gpuSeries_->timeStepCount()));
     // The largest-change ray mode compares the range that the picking compositors measure for
     // unchanged places: they measure it for that mode whether or not the scene asks for them.
     variant.unchangedTime = (scene.compositorOptions.unchanged.has_value() || rayModeInfo(scene.rayMode).readsChange) &&
                             compositorInfo(scene.compositor).takesUnchanged;
+    variant.stfOpacityRises = variant.unchangedTime && options.rankByDensity && transferTables_.stfOpacityRises();
     // The walk: the packed groups where the series has a packed atlas and the frame takes it.
     const PackedAlignedAtlas* packed = gpuSeries_->packedAtlas();
     if (options.naive) {

@@ -79,6 +79,13 @@ int StyleTextures::styledTrackBits() const {
     return bits;
 }
 
+int StyleTextures::singleNodeTrackBits() const {
+    int bits = 0;
+    for (std::size_t t = 0; t < trackRanges_.size(); ++t)
+        if (trackRanges_[t].y == 1) bits |= 1 << t;
+    return bits;
+}
+
 void StyleTextures::bind() const {
     styles_->bindToUnit(contract::STYLE_UNIT);
     nodeTable_.bindBase(GL_SHADER_STORAGE_BUFFER, contract::STYLE_NODE_BUFFER);

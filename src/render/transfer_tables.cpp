@@ -44,6 +44,11 @@ glm::vec2 visibleDensityRange(const std::vector<glm::vec4>& table) {
     return {low, high};
 }
 
+bool opacityNeverFalls(const std::vector<glm::vec4>& table) {
+    return std::is_sorted(table.begin(), table.end(),
+                          [](const glm::vec4& a, const glm::vec4& b) { return a.a < b.a; });
+}
+
 std::vector<glm::vec4> bakeIndexTstf(const IndexTstf& tstf, std::size_t timeStepCount) {
     std::vector<glm::vec4> entries(timeStepCount);
     for (std::size_t step = 0; step < timeStepCount; ++step) entries[step] = toVec4(tstf.atStep(int(step)));
@@ -59,6 +64,7 @@ bool TransferTables::update(const Stf& stf, const IndexTstf& indexTstf, const Gr
     if (stfChanged) {
         stfEntries_ = bakeTransferTable(stf.curve);
         stfVisibleRange_ = visibleDensityRange(stfEntries_);
+        stfOpacityRises_ = opacityNeverFalls(stfEntries_);
         upload(stfTable_, stfEntries_);
         bakedStf_ = stf;
     }

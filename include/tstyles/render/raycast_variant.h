@@ -40,6 +40,14 @@ struct RaycastVariant {
     TimeStepWalk walk = TimeStepWalk::RayList;
     // Bit t set: transfer-function track t (STF, index TSTF, gradient TSTF) uses lit-sphere styles.
     int styledTracks = 0;
+    // Bit t set: styled track t has one colour node, so its colour at every value is one lookup of
+    // that node's style, where a track of several nodes blends the lookups of the two around it.
+    int singleNodeStyleTracks = 0;
+    // The STF's opacity never falls as density rises (TransferTables::stfOpacityRises): a picking
+    // compositor that ranks time-steps by STF opacity, then density, then time (temporal-mip with
+    // unchanged places) ranks them by density and time alone, the same order, and classifies only
+    // the time-step it keeps.
+    bool stfOpacityRises = false;
     bool masks = false;            // a time-step has a segmentation mask
     bool missingValues = false;    // the density atlas holds (density * validity, validity) pairs
     bool allAffine = false;        // every time-step's world -> voxel map is affine

@@ -52,6 +52,11 @@ struct FrameOptions {
     // the first such frame, false never (for comparison). The same image but within a voxel of a
     // grid's face or of missing data, to rounding, and along uneven axes to a speckle of pixels.
     std::optional<bool> precomputedGradients;
+    // Where the STF's opacity never falls as density rises, temporal-mip with unchanged places ranks
+    // the time-steps by density and time alone and looks up the STF of the one it keeps
+    // (RaycastVariant::stfOpacityRises); false ranks them by their STF lookups, for comparison.
+    // Same image.
+    bool rankByDensity = true;
     // Renders only the parts of the rays inside this world box (one process's block of a
     // distributed render, docs/scaling.md); none: whole rays.
     std::optional<Bounds> clipBox;

@@ -34,6 +34,8 @@ public:
     const std::array<glm::ivec2, 3>& trackRanges() const { return trackRanges_; }
     // Bit t set where track t (STF, index TSTF, gradient TSTF) has a node with a style.
     int styledTrackBits() const;
+    // Bit t set where track t has styles and one colour node (RaycastVariant::singleNodeStyleTracks).
+    int singleNodeTrackBits() const;
 
 private:
     StyleLibrary library_;

@@ -23,6 +23,9 @@ std::vector<glm::vec4> bakeTransferTable(const TransferFunction1D& function);
 // entry of margin for the filtering's rounding: outside it the table's lookup gives exactly 0
 // opacity. (2, -1), an empty range, when the table is transparent everywhere.
 glm::vec2 visibleDensityRange(const std::vector<glm::vec4>& table);
+// Whether a baked table's opacity never falls from one entry to the next: its linear lookups then
+// never fall as x rises either (RaycastVariant::stfOpacityRises).
+bool opacityNeverFalls(const std::vector<glm::vec4>& table);
 // One RGBA entry per time-step.
 std::vector<glm::vec4> bakeIndexTstf(const IndexTstf& tstf, std::size_t timeStepCount);
 
@@ -37,6 +40,8 @@ public:
     const std::vector<glm::vec4>& stfEntries() const { return stfEntries_; }
     // visibleDensityRange of the STF's table, worked out when the STF changes.
     glm::vec2 stfVisibleRange() const { return stfVisibleRange_; }
+    // opacityNeverFalls of the STF's table, worked out when the STF changes.
+    bool stfOpacityRises() const { return stfOpacityRises_; }
     void bind() const;
 
 private:
@@ -46,6 +51,7 @@ private:
     std::optional<Stf> bakedStf_;
     std::vector<glm::vec4> stfEntries_;
     glm::vec2 stfVisibleRange_{2.0f, -1.0f};
+    bool stfOpacityRises_ = false;
     std::optional<IndexTstf> bakedIndexTstf_;
     std::optional<TransferFunction1D> bakedGradientCurve_;
     std::size_t bakedTimeStepCount_ = 0;
