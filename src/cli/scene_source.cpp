@@ -198,7 +198,7 @@ std::optional<std::string> applyRayOverrides(Scene& scene, const Series& series,
         readRayOverrides(scene, overrides);
         if (automaticScene) {
             // The automatic STF follows the mode, as the automatic scene would have made it.
-            applyAutomaticRay(scene, automaticOpacityWindow(series), scene.rayMode);
+            applyAutomaticRay(scene, series, automaticOpacityWindow(series), scene.rayMode);
             explanation = "ray " + toString(scene.rayMode) + " (--ray): " + rayModeInfo(scene.rayMode).summary;
         }
     }
@@ -208,7 +208,7 @@ std::optional<std::string> applyRayOverrides(Scene& scene, const Series& series,
         if (const auto problem = rayModeProblem(scene); problem && problem->key == "ray.mode") {
             const std::string automaticMode = toString(scene.rayMode);
             scene.rayMode = kCompositeRay;
-            applyAutomaticRay(scene, automaticOpacityWindow(series), kCompositeRay);
+            applyAutomaticRay(scene, series, automaticOpacityWindow(series), kCompositeRay);
             explanation = "ray composite: " + toString(scene.compositor) + " (--tc) does not go with " +
                           automaticMode + ", the file's automatic mode";
         }

@@ -201,7 +201,9 @@ OpacityWindow automaticRayWindow(const OpacityWindow& window, RayMode mode) {
 
 }  // namespace
 
-void applyAutomaticRay(Scene& scene, const OpacityWindow& window, RayMode mode) {
+void applyAutomaticRay(Scene& scene, const Series& series, const OpacityWindow& window, RayMode mode) {
+    if (const auto step = automaticStep(series, chooseDisplayFrame(scene.display, series), mode))
+        scene.raycast.step = *step;
     const bool projection = rayModeInfo(mode).automaticStf != AutomaticStf::RayThrough;
     if (auto& unchanged = scene.compositorOptions.unchanged) unchanged->opacity = automaticUnchangedOpacity(mode);
     const OpacityWindow shown = automaticRayWindow(window, mode);
@@ -239,13 +241,6 @@ AutomaticScene automaticScene(const Series& series, const std::filesystem::path&
     const DisplayFrame frame = chooseDisplayFrame(scene.display, series);
     result.explanation = frame.explanation;
 
-    if (const auto step = automaticStep(series, frame)) {
-        scene.raycast.step = *step;
-        const bool beams = std::any_of(series.steps.begin(), series.steps.end(), [](const TimeStep& s) { return s.isBeam(); });
-        result.explanation.push_back("ray step: " + number(*step) +
-                                     (beams ? " (one range cell of the beams, or half the typical cell of other grids)"
-                                            : " (half the typical cell: the lower quartile of the spacings along each axis)"));
-    }
     const DataKind kind = dataKindOf(series);
     const AutomaticCamera camera = automaticCamera(kind, series, frame);
     scene.camera.pose = camera.orbit;
@@ -263,8 +258,16 @@ AutomaticScene automaticScene(const Series& series, const std::filesystem::path&
                     ", but --distributed merges the processes' frames front to back, which holds for composite)";
         rayMode = kCompositeRay;
     }
-    applyAutomaticRay(scene, window, rayMode);
+    applyAutomaticRay(scene, series, window, rayMode);
     result.explanation.push_back(rayReason);
+    if (scene.raycast.step) {
+        const bool beams = std::any_of(series.steps.begin(), series.steps.end(), [](const TimeStep& s) { return s.isBeam(); });
+        const std::string cell = rayModeInfo(rayMode).automaticStepInCells == 1.0 ? "the typical cell" : "half the typical cell";
+        result.explanation.push_back("ray step: " + number(*scene.raycast.step) + " (" +
+                                     (beams ? "one range cell of the beams, or " + cell + " of other grids"
+                                            : cell + ": the lower quartile of the spacings along each axis") +
+                                     ")");
+    }
     result.explanation.push_back(windowText(series, automaticRayWindow(window, rayMode), rayModeInfo(rayMode).automaticStf));
     result.explanation.push_back(scene.stf.curve.color.front().style.empty()
                                      ? std::string("shading: none (a projection has no surface to shade)")

@@ -23,27 +23,28 @@ double lowerQuartileGap(const RectilinearGrid& grid, int axis) {
 
 }  // namespace
 
-std::optional<double> automaticStep(const Series& series, const DisplayFrame& frame) {
-    double typical = std::numeric_limits<double>::infinity();
-    for (const TimeStep& step : series.steps) {
-        if (step.isBeam()) {
-            // One range cell (counted as two halves here), as short as the display draws any axis.
+std::optional<double> automaticStep(const Series& series, const DisplayFrame& frame, RayMode mode) {
+    const double cells = rayModeInfo(mode).automaticStepInCells;
+    double step = std::numeric_limits<double>::infinity();
+    for (const TimeStep& timeStep : series.steps) {
+        if (timeStep.isBeam()) {
+            // One range cell, as short as the display draws any axis.
             const double leastDrawn = std::min({frame.scale.x, frame.scale.y, frame.scale.z});
-            typical = std::min(typical, 2.0 * step.beam().rangeSpacing() * leastDrawn);
+            step = std::min(step, timeStep.beam().rangeSpacing() * leastDrawn);
             continue;
         }
-        if (!std::holds_alternative<RectilinearGrid>(step.grid)) return std::nullopt;
-        const RectilinearGrid& grid = step.rectilinear();
-        const glm::dmat3 toWorld = glm::mat3_cast(step.placement.rotation);
+        if (!std::holds_alternative<RectilinearGrid>(timeStep.grid)) return std::nullopt;
+        const RectilinearGrid& grid = timeStep.rectilinear();
+        const glm::dmat3 toWorld = glm::mat3_cast(timeStep.placement.rotation);
         for (int axis = 0; axis < 3; ++axis) {
             if (grid.dims[axis] < 2) continue;
             // A unit along the grid axis, as long as the display draws it.
             const double drawn = glm::length(frame.scale * (frame.rotation * toWorld[axis]));
-            typical = std::min(typical, lowerQuartileGap(grid, axis) * drawn);
+            step = std::min(step, cells * lowerQuartileGap(grid, axis) * drawn);
         }
     }
-    if (!std::isfinite(typical) || !(typical > 0.0)) return std::nullopt;
-    return 0.5 * typical;
+    if (!std::isfinite(step) || !(step > 0.0)) return std::nullopt;
+    return step;
 }
 
 }  // namespace tstyles

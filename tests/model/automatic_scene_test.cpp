@@ -286,11 +286,13 @@ TEST(AutomaticScene, AnExtremelyThinAxisGoesUpExaggeratedAndIsSeenFromAbove) {
 
 namespace tstyles {
 
-// The automatic step (automatic_step.h): half the lower quartile of the node distances along each
-// axis, the smallest over the axes. Levels at 0, 1, 3, 6, 10, 15 are 1, 2, 3, 4 and 5 apart: the
-// lower quartile (the second of five) is 2, under the even axes' 5, so the step is 1, where the
-// renderer's default would take half the thinnest level, 0.5. An even grid gets the default.
-TEST(AutomaticStep, HalfTheLowerQuartileOfTheLevelSpacings) {
+// The automatic step (automatic_step.h): the lower quartile of the node distances along each
+// axis, the smallest over the axes, in the ray mode's share of a cell. Levels at 0, 1, 3, 6, 10, 15
+// are 1, 2, 3, 4 and 5 apart: the lower quartile (the second of five) is 2, under the even axes' 5,
+// so a composited ray steps 2 and a maximum projection 1, where the renderer's default would take
+// half the thinnest level, 0.5. An even grid gets its spacing, or the default at half a cell.
+TEST(AutomaticStep, TheLowerQuartileOfTheLevelSpacingsInTheModesShareOfACell) {
+    const RayMode maximum = *rayModeFromString("maximum");
     Series series;
     RectilinearGrid grid;
     grid.dims = {4, 4, 6};
@@ -299,25 +301,28 @@ TEST(AutomaticStep, HalfTheLowerQuartileOfTheLevelSpacings) {
     TimeStep step;
     step.grid = grid;
     series.steps.push_back(step);
-    const auto uneven = automaticStep(series, DisplayFrame{});
+    const auto uneven = automaticStep(series, DisplayFrame{}, maximum);
     ASSERT_TRUE(uneven.has_value());
     EXPECT_DOUBLE_EQ(*uneven, 1.0);
+    EXPECT_DOUBLE_EQ(*automaticStep(series, DisplayFrame{}, kCompositeRay), 2.0);
     EXPECT_DOUBLE_EQ(0.5 * series.finestSpacing(), 0.5);
 
     // Drawn twice as tall (a vertical exaggeration of 2 on display y, the grid's y here): y's
     // spacing becomes 10, z's quartile 2 is still the least.
     DisplayFrame tall;
     tall.scale = {1.0, 2.0, 1.0};
-    EXPECT_DOUBLE_EQ(*automaticStep(series, tall), 1.0);
+    EXPECT_DOUBLE_EQ(*automaticStep(series, tall, maximum), 1.0);
     DisplayFrame deep;
     deep.scale = {1.0, 1.0, 3.0};  // z drawn 3 times longer: its quartile 6, x's 5 is the least
-    EXPECT_DOUBLE_EQ(*automaticStep(series, deep), 2.5);
+    EXPECT_DOUBLE_EQ(*automaticStep(series, deep, maximum), 2.5);
+    EXPECT_DOUBLE_EQ(*automaticStep(series, deep, kCompositeRay), 5.0);
 
     series.steps[0].grid = RectilinearGrid{{4, 4, 4}, {0.2, 0.3, 0.4}, {}};
-    EXPECT_DOUBLE_EQ(*automaticStep(series, DisplayFrame{}), 0.5 * series.finestSpacing());
+    EXPECT_DOUBLE_EQ(*automaticStep(series, DisplayFrame{}, maximum), 0.5 * series.finestSpacing());
+    EXPECT_DOUBLE_EQ(*automaticStep(series, DisplayFrame{}, kCompositeRay), series.finestSpacing());
 }
 
-// A beam grid (a sonar's fan) takes one range cell, as short as the display draws any axis: its
+// A beam grid (a sonar's fan) takes one range cell in every mode, as short as the display draws any axis: its
 // cells are far wider across the beams than along the range. 101 samples over ranges 2 .. 52: 0.5.
 TEST(AutomaticStep, ABeamGridTakesOneRangeCell) {
     Series series;
@@ -330,10 +335,11 @@ TEST(AutomaticStep, ABeamGridTakesOneRangeCell) {
     TimeStep step;
     step.grid = fan;
     series.steps.push_back(step);
-    EXPECT_DOUBLE_EQ(*automaticStep(series, DisplayFrame{}), 0.5);
+    EXPECT_DOUBLE_EQ(*automaticStep(series, DisplayFrame{}, kCompositeRay), 0.5);
+    EXPECT_DOUBLE_EQ(*automaticStep(series, DisplayFrame{}, *rayModeFromString("maximum")), 0.5);
     DisplayFrame flattened;
     flattened.scale = {1.0, 0.5, 1.0};
-    EXPECT_DOUBLE_EQ(*automaticStep(series, flattened), 0.25);
+    EXPECT_DOUBLE_EQ(*automaticStep(series, flattened, kCompositeRay), 0.25);
 }
 
 }  // namespace tstyles

@@ -77,7 +77,7 @@ MapBands renderClimatology(bool largestChange) {
     std::filesystem::remove_all(folder);
     Scene scene = automaticScene(raw, file).scene;
     EXPECT_EQ(toString(scene.rayMode), "largest-change") << "the automatic scene of a map";
-    if (!largestChange) applyAutomaticRay(scene, automaticOpacityWindow(raw), kCompositeRay);
+    if (!largestChange) applyAutomaticRay(scene, raw, automaticOpacityWindow(raw), kCompositeRay);
     scene.width = scene.height = kSize;
     scene.background = glm::dvec4(0.0);  // transparent: the map's pixels are those with alpha
     const int months = int(raw.size());

@@ -46,8 +46,9 @@ AutomaticScene automaticScene(const Series& series, const std::filesystem::path&
 std::pair<RayMode, std::string> automaticRayMode(const Series& series);
 // The automatic STF for a ray mode, with the mode: the window's ramp, rising to its peak where the
 // pixel composites a ray through all the data, to 1 and without the shading style where it takes
-// one sample's opacity (maximum, minimum, average: a projection has no surface to shade).
-void applyAutomaticRay(Scene& scene, const OpacityWindow& window, RayMode mode);
+// one sample's opacity (maximum, minimum, average: a projection has no surface to shade); and the
+// mode's automatic ray step (automaticStep).
+void applyAutomaticRay(Scene& scene, const Series& series, const OpacityWindow& window, RayMode mode);
 
 // A scene fitted to a series: the series turned and scaled into the display frame the scene asks
 // for, the automatic gradient range filled in, and the bounds an automatic camera frames.

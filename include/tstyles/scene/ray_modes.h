@@ -96,6 +96,11 @@ struct RayModeInfo {
     // index compositor is refused), or the magnitude of the value the gradient TSTF reads.
     bool readsChange = false;
     AutomaticStf automaticStf = AutomaticStf::RayThrough;
+    // The automatic scene's ray step in typical cells of the data's grids (automaticStep): a whole
+    // one where the samples are composited with their opacity corrected to the step, so that the
+    // picture barely moves with it; half where the pixel is one sample's, which a coarser step can
+    // step over (a maximum projection of an MR slab at one cell: SSIM 0.959 against half).
+    double automaticStepInCells = 0.5;
     RayMerge merge = RayMerge::Over;
     RayModeOptionList options = {};
     const char* summary = "";  // one line for help texts, the viewer and the docs' table
@@ -105,7 +110,8 @@ struct RayModeInfo {
 inline constexpr std::array kRayModes = [] {
     using Info = RayModeInfo;
     return std::array{
-        Info{.name = "composite", .shaderModule = "ray_composite.glsl", .stopsEarly = true, .merge = RayMerge::Over,
+        Info{.name = "composite", .shaderModule = "ray_composite.glsl", .stopsEarly = true,
+             .automaticStepInCells = 1.0, .merge = RayMerge::Over,
              .summary = "the samples' temporal styles composited front to back (emission and absorption, the "
                         "paper's); rays stop once nearly opaque"},
         Info{.name = "maximum", .shaderModule = "ray_maximum.glsl", .needsValue = true,
