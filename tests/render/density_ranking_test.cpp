@@ -1,16 +1,23 @@
 // Two shortcuts of the automatic scenes, each against the exact path it replaces:
 // - temporal-mip with unchanged places ranks the time-steps by density alone where the STF's opacity
 //   never falls as density rises (RaycastVariant::stfOpacityRises), and looks up the STF of the
-//   winner alone: the same order, so the same pixels, asserted bit for bit;
+//   winner alone: the same order, so the same pixels, asserted bit for bit (the bundled data, and
+//   realistic files: a CT phantom, an MR slab drawn as a maximum, an ocean eddy as the largest change);
 // - a styled track of one colour node reads its style once (RaycastVariant::singleNodeStyleTracks),
 //   where two nodes blend two lookups: the same scene with its node given twice, the same pixels.
 #include <filesystem>
+#include <functional>
 #include <iostream>
+#include <map>
 #include <string>
+
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
+#include "../data/realistic_datasets.h"
 #include "render_test_support.h"
+#include "tstyles/data/series_opener.h"
 #include "tstyles/image/image_comparison.h"
 #include "tstyles/render/style_textures.h"
 #include "tstyles/render/transfer_tables.h"
@@ -46,12 +53,38 @@ struct Drawn {
 
 constexpr int kSize = 160;
 
-// The bundled dataset's automatic scene at kSize x kSize, `edit`ed, drawn with `options`.
+// A bundled dataset (`write` empty) or a realistic file that `write` makes.
+struct AutomaticCase {
+    std::string name;
+    std::function<void(const std::filesystem::path&)> write;
+};
+
+void PrintTo(const AutomaticCase& automatic, std::ostream* out) { *out << automatic.name; }
+
+// The series of a case, read once per test process.
+const Series& seriesOf(const AutomaticCase& automatic, std::filesystem::path& dataset) {
+    if (!automatic.write) {
+        dataset = std::filesystem::path(TSTYLES_SOURCE_DIR) / "data" / automatic.name / "series.json";
+        return loadSeriesOnce(dataset);
+    }
+    static std::map<std::string, Series> written;
+    const auto folder = std::filesystem::temp_directory_path() / ("tstyles_ranking_" + std::to_string(::getpid()));
+    dataset = folder / automatic.name;
+    if (!written.contains(automatic.name)) {
+        std::filesystem::create_directories(folder);
+        automatic.write(dataset);
+        written.emplace(automatic.name, openSeries(dataset, ReadOptions{}));
+        std::filesystem::remove_all(folder);
+    }
+    return written.at(automatic.name);
+}
+
+// The case's automatic scene at kSize x kSize, `edit`ed, drawn with `options`.
 template <typename Edit>
-Drawn drawAutomatic(const std::string& dataset, FrameOptions options, Edit edit) {
-    const std::filesystem::path manifest = std::filesystem::path(TSTYLES_SOURCE_DIR) / "data" / dataset / "series.json";
-    const Series& series = loadSeriesOnce(manifest);
-    Scene scene = automaticScene(series, manifest).scene;
+Drawn drawAutomatic(const AutomaticCase& automatic, FrameOptions options, Edit edit) {
+    std::filesystem::path dataset;
+    const Series& series = seriesOf(automatic, dataset);
+    Scene scene = automaticScene(series, dataset).scene;
     scene.width = scene.height = kSize;
     edit(scene);
     const SceneOnSeries fitted = fitSceneToSeries(scene, series);
@@ -76,10 +109,12 @@ void expectSamePixels(const Drawn& shortcut, const Drawn& exact, const std::stri
     EXPECT_EQ(shortcut.statistics.fetches, exact.statistics.fetches) << what;
 }
 
-class AutomaticSceneShortcuts : public ::testing::TestWithParam<std::string> {};
+class RankingByDensity : public ::testing::TestWithParam<AutomaticCase> {};
+class OneStyleLookup : public ::testing::TestWithParam<AutomaticCase> {};
 
-// The automatic scenes rise from transparent to their opacity, in temporal-mip with unchanged places.
-TEST_P(AutomaticSceneShortcuts, RankingByDensityGivesTheSamePixels) {
+// The automatic scenes rise from transparent to their opacity, in temporal-mip with unchanged places
+// (or the change the largest-change mode compares, which the same compositor measures).
+TEST_P(RankingByDensity, GivesTheSamePixels) {
     const auto keep = [](Scene&) {};
     FrameOptions byStf;
     byStf.rankByDensity = false;
@@ -88,11 +123,11 @@ TEST_P(AutomaticSceneShortcuts, RankingByDensityGivesTheSamePixels) {
     EXPECT_TRUE(ranked.variant.stfOpacityRises) << "the ranking by density was not taken";
     EXPECT_TRUE(ranked.variant.unchangedTime);
     EXPECT_FALSE(exact.variant.stfOpacityRises);
-    expectSamePixels(ranked, exact, GetParam() + ", ranked by density against by STF lookups");
+    expectSamePixels(ranked, exact, GetParam().name + ", ranked by density against by STF lookups");
 }
 
 // Their STF is one styled colour node; given twice, at both ends, it blends two equal lookups.
-TEST_P(AutomaticSceneShortcuts, OneStyleLookupForOneNodeGivesTheSamePixels) {
+TEST_P(OneStyleLookup, ForOneNodeGivesTheSamePixels) {
     const Drawn single = drawAutomatic(GetParam(), FrameOptions{}, [](Scene&) {});
     const Drawn twice = drawAutomatic(GetParam(), FrameOptions{}, [](Scene& scene) {
         ASSERT_EQ(scene.stf.curve.color.size(), 1u);
@@ -103,17 +138,33 @@ TEST_P(AutomaticSceneShortcuts, OneStyleLookupForOneNodeGivesTheSamePixels) {
     });
     EXPECT_EQ(single.variant.singleNodeStyleTracks & (1 << kStfTrack), 1 << kStfTrack) << "one lookup not taken";
     EXPECT_EQ(twice.variant.singleNodeStyleTracks & (1 << kStfTrack), 0);
-    expectSamePixels(single, twice, GetParam() + ", one node against the node twice");
+    expectSamePixels(single, twice, GetParam().name + ", one node against the node twice");
 }
 
-INSTANTIATE_TEST_SUITE_P(BundledData, AutomaticSceneShortcuts,
-                         ::testing::Values("superellipsoid", "hurricane", "sonar", "superellipsoid-aligned"),
-                         [](const auto& parameter) {
-                             std::string name = parameter.param;
-                             for (char& c : name)
-                                 if (c == '-') c = '_';
-                             return name;
-                         });
+std::string testNameOf(const ::testing::TestParamInfo<AutomaticCase>& parameter) {
+    std::string name = parameter.param.name;
+    for (char& c : name)
+        if (c == '-' || c == '.') c = '_';
+    return name;
+}
+
+const AutomaticCase kSuperEllipsoid{"superellipsoid", {}};
+const AutomaticCase kHurricane{"hurricane", {}};
+const AutomaticCase kSonar{"sonar", {}};
+const AutomaticCase kAlignedSuperEllipsoid{"superellipsoid-aligned", {}};
+// Scientists' files: a noisy CT phantom (composited, styled), an MR slab (a maximum projection) and
+// an ocean eddy (a map, the largest change), both without style.
+const AutomaticCase kCtPhantom{"ct-phantom.nii", testdata::writeCtPhantom};
+const AutomaticCase kMrSlab{"mr-slab.nii", testdata::writeMrSlab};
+const AutomaticCase kOceanEddy{"ocean-eddy.nc", testdata::writeOceanEddy};
+
+INSTANTIATE_TEST_SUITE_P(AutomaticScenes, RankingByDensity,
+                         ::testing::Values(kSuperEllipsoid, kHurricane, kSonar, kAlignedSuperEllipsoid, kCtPhantom,
+                                           kMrSlab, kOceanEddy),
+                         testNameOf);
+INSTANTIATE_TEST_SUITE_P(StyledAutomaticScenes, OneStyleLookup,
+                         ::testing::Values(kSuperEllipsoid, kHurricane, kSonar, kAlignedSuperEllipsoid, kCtPhantom),
+                         testNameOf);
 
 }  // namespace
 }  // namespace tstyles::testing
