@@ -218,9 +218,10 @@ void bindSeries(py::module_& module) {
         })
         .def("describe", [](const SeriesHandle& s) { return describeSeries(*s.series); })
         .def("values_at", [](const SeriesHandle& s, double x, double y, double z) {
-            // NaN where a time-step's grid does not reach the place or has no data there.
+            // (x, y, z) in the file's coordinates (a pressure level as the file counts it); NaN
+            // where a time-step's grid does not reach the place or has no data there.
             std::vector<double> values;
-            for (const auto& value : TemporalProbe(*s.series).valuesAt({x, y, z}))
+            for (const auto& value : TemporalProbe(*s.series).valuesAt(worldCoordinatesOf(*s.series, {x, y, z})))
                 values.push_back(value ? *value : std::nan(""));
             return values;
         });

@@ -90,8 +90,9 @@ class Series:
         return self._native.describe()
 
     def at(self, x, y, z):
-        """The values at world place (x, y, z) over time, each time-step sampled in its own grid
-        (docs/probe.md): as an xarray DataArray over "time" when xarray is there, else a tuple of
+        """The values at place (x, y, z) over time, in the file's coordinates as `describe()` lists
+        them (a depth or pressure level as the file counts it: 500 for 500 hPa), each time-step
+        sampled in its own grid (docs/probe.md): as an xarray DataArray over "time" when xarray is there, else a tuple of
         numpy arrays (times, values). Values are in the data's own unit (the density mapping
         undone); NaN where a time-step's grid does not reach the place or has no data there."""
         values = np.array(self._native.values_at(float(x), float(y), float(z)))

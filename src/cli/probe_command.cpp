@@ -71,7 +71,8 @@ std::string pointText(const glm::dvec3& point) {
 
 // The places probed: one (--at, --voxel) or a line of them (--along), checked to meet a grid.
 struct ProbePlaces {
-    std::vector<glm::dvec3> points;
+    std::vector<glm::dvec3> points;  // in the world, where the time-steps are sampled
+    std::vector<glm::dvec3> shown;   // the same in the file's coordinates (fileCoordinatesOf), as given
     std::vector<double> distances;  // along the line from its start; {0} for one place
     bool line = false;
     std::string option;  // the option that gave them, for messages
@@ -82,7 +83,7 @@ ProbePlaces placesOf(const ProbeOptions& options, const Series& series) {
     if (given != 1) throwInputError("", "--at", "give exactly one of --at X,Y,Z, --voxel I,J,K and --along A:B");
     ProbePlaces places;
     if (!options.at.empty()) {
-        places.points = {parseTriple(options.at, "--at", "a place X,Y,Z")};
+        places.points = {worldCoordinatesOf(series, parseTriple(options.at, "--at", "a place X,Y,Z"))};
         places.option = "--at";
     }
     if (!options.voxel.empty()) {
@@ -93,16 +94,23 @@ ProbePlaces placesOf(const ProbeOptions& options, const Series& series) {
         const std::size_t colon = options.along.find(':');
         if (colon == std::string::npos)
             throwInputError("", "--along", "expected two places X,Y,Z:X,Y,Z, got \"" + options.along + "\"");
-        const glm::dvec3 from = parseTriple(options.along.substr(0, colon), "--along", "the line's start");
-        const glm::dvec3 to = parseTriple(options.along.substr(colon + 1), "--along", "the line's end");
+        const glm::dvec3 from =
+            worldCoordinatesOf(series, parseTriple(options.along.substr(0, colon), "--along", "the line's start"));
+        const glm::dvec3 to =
+            worldCoordinatesOf(series, parseTriple(options.along.substr(colon + 1), "--along", "the line's end"));
         if (glm::length(to - from) <= 0.0)
-            throwInputError("", "--along", "the line " + pointText(from) + " to " + pointText(to) + " has zero length");
+            throwInputError("", "--along",
+                            "the line " + pointText(fileCoordinatesOf(series, from)) + " to " +
+                                pointText(fileCoordinatesOf(series, to)) + " has zero length");
         if (options.points < 2) throwInputError("", "--points", "a line needs at least 2 points, got " + std::to_string(options.points));
         places.points = pointsAlong(from, to, options.points);
         places.line = true;
         places.option = "--along";
     }
-    for (const glm::dvec3& point : places.points) places.distances.push_back(glm::length(point - places.points.front()));
+    for (const glm::dvec3& point : places.points) {
+        places.distances.push_back(glm::length(point - places.points.front()));
+        places.shown.push_back(fileCoordinatesOf(series, point));
+    }
     return places;
 }
 
@@ -120,13 +128,15 @@ void requireSomeGridMet(const Series& series, const ProbePlaces& places,
     for (const glm::dvec3& point : places.points)
         for (std::size_t step = 0; step < series.steps.size(); ++step)
             if (inside(series.worldBounds(step), point)) return;
-    const Bounds bounds = series.worldBounds();
-    const std::string what = places.line ? "the line from " + pointText(places.points.front()) + " to " +
-                                               pointText(places.points.back())
-                                         : "the place " + pointText(places.points.front());
+    const Bounds bounds = fileBounds(series);
+    const std::string what = places.line ? "the line from " + pointText(places.shown.front()) + " to " +
+                                               pointText(places.shown.back())
+                                         : "the place " + pointText(places.shown.front());
     throwInputError("", places.option,
                     what + " is outside every time-step's grid; the series spans " + pointText(bounds.lower) +
-                        " to " + pointText(bounds.upper) + " (its world bounds, as `tstyles info` lists them)");
+                        " to " + pointText(bounds.upper) +
+                        (hasNegatedAxes(series) ? " (in the file's coordinates, as `tstyles info` lists them)"
+                                                : " (its world bounds, as `tstyles info` lists them)"));
 }
 
 // A value as the series holds it: its densities are float32, so a value has about 7 significant
@@ -148,17 +158,21 @@ void writeJson(const Series& series, const ProbePlaces& places, const std::vecto
     json["unit"] = series.valueUnit;
     json["times"] = nlohmann::json::array();
     for (const TimeStep& step : series.steps) json["times"].push_back(step.time);
+    if (series.time.unit != TimeUnit::None) {
+        json["time_units"] = toCfUnits(series.time);
+        if (series.time.reference) json["calendar"] = toString(series.time.calendar);
+    }
     json["time_labels"] = labels;
     const auto valueOf = [](const std::optional<double>& value) {
         return value ? nlohmann::ordered_json(asStored(*value)) : nlohmann::ordered_json(nullptr);
     };
     if (!places.line) {
-        json["at"] = {places.points.front().x, places.points.front().y, places.points.front().z};
+        json["at"] = {places.shown.front().x, places.shown.front().y, places.shown.front().z};
         json["values"] = nlohmann::json::array();
         for (const auto& value : values.front()) json["values"].push_back(valueOf(value));
     } else {
         json["points"] = nlohmann::json::array();
-        for (const glm::dvec3& point : places.points) json["points"].push_back({point.x, point.y, point.z});
+        for (const glm::dvec3& point : places.shown) json["points"].push_back({point.x, point.y, point.z});
         json["distances"] = places.distances;
         json["values"] = nlohmann::json::array();  // one row per time-step, one value per point
         for (std::size_t step = 0; step < series.steps.size(); ++step) {
@@ -188,7 +202,7 @@ void writeText(const Series& series, const ProbePlaces& places, const std::vecto
                const std::vector<std::vector<std::optional<double>>>& values) {
     const std::string unit = series.valueUnit.empty() ? "no unit" : series.valueUnit;
     if (!places.line) {
-        std::cout << series.name << " at " << pointText(places.points.front()) << " (" << unit << "):\n"
+        std::cout << series.name << " at " << pointText(places.shown.front()) << " (" << unit << "):\n"
                   << "  #  time  value\n";
         for (std::size_t step = 0; step < series.steps.size(); ++step) {
             const auto& value = values.front()[step];
@@ -197,8 +211,8 @@ void writeText(const Series& series, const ProbePlaces& places, const std::vecto
         }
         return;
     }
-    std::cout << series.name << " along " << pointText(places.points.front()) << " to "
-              << pointText(places.points.back()) << ", " << places.points.size() << " points (" << unit
+    std::cout << series.name << " along " << pointText(places.shown.front()) << " to "
+              << pointText(places.shown.back()) << ", " << places.points.size() << " points (" << unit
               << "); rows: time-steps, columns: distance from the start\n";
     std::cout << "time";
     for (double distance : places.distances) std::cout << "\t" << floatText(distance);
@@ -213,9 +227,9 @@ void writeText(const Series& series, const ProbePlaces& places, const std::vecto
 ProbeTable tableOf(const Series& series, const ProbePlaces& places, const std::vector<std::string>& labels,
                    const std::vector<std::vector<std::optional<double>>>& values) {
     ProbeTable table;
-    table.title = series.name + (places.line ? " along " + pointText(places.points.front()) + " to " +
-                                                   pointText(places.points.back())
-                                             : " at " + pointText(places.points.front()));
+    table.title = series.name + (places.line ? " along " + pointText(places.shown.front()) + " to " +
+                                                   pointText(places.shown.back())
+                                             : " at " + pointText(places.shown.front()));
     table.unit = series.valueUnit;
     for (const TimeStep& step : series.steps) table.times.push_back(step.time);
     table.timeLabels = labels;
@@ -233,7 +247,9 @@ Command addProbeCommand(CLI::App& app) {
     CLI::App* command = app.add_subcommand(
         "probe", "The values of a place over time (--at, --voxel), or of a line (--along): a table of time and value");
     command->add_option("dataset", *inputs, std::string("Dataset: ") + datasetKindsText())->required();
-    command->add_option("--at", options->at, "The place X,Y,Z in world coordinates, as `tstyles info` lists its bounds");
+    command->add_option("--at", options->at,
+                        "The place X,Y,Z in the file's coordinates, as `tstyles info` lists its bounds (a depth or "
+                        "pressure level as the file counts it: 500 for 500 hPa)");
     command->add_option("--voxel", options->voxel, "The node I,J,K of the first time-step's grid, each from 0");
     command->add_option("--along", options->along,
                         "A line X,Y,Z:X,Y,Z: the values of --points places along it per time-step (a Hovmoeller table)");

@@ -49,6 +49,7 @@ CfSpatialAxis cfSpatialAxis(const std::string& name, const CfAttributes& attribu
     bool down = false;
     frame.meaning.direction = cfDirection(attributes, down);
     frame.meaning.unit = attributes.units;
+    frame.meaning.negated = down;
     for (double& value : values) {
         if (!std::isfinite(value)) throwInputError(source, name, "coordinate variable holds a non-finite value");
         if (down) value = -value;

@@ -268,13 +268,14 @@ TimeAxis readTimeAxis(const std::filesystem::path& manifest, const JsonField& ro
     return axis;
 }
 
-// "axes": three objects {"name", "unit", "direction"}, each key optional.
+// "axes": three objects {"name", "unit", "direction", "negated"}, each key optional.
 std::array<SpatialAxis, 3> readAxes(const JsonField& field) {
     if (field.arraySize() != 3) field.fail("expected three axes (x, y, z), got " + std::to_string(field.arraySize()));
     std::array<SpatialAxis, 3> axes;
     for (std::size_t index = 0; index < 3; ++index) {
         const JsonField axis = field.element(index);
-        axis.allowOnlyKeys({"name", "unit", "direction"});
+        axis.allowOnlyKeys({"name", "unit", "direction", "negated"});
+        if (const auto negated = axis.optionalMember("negated")) axes[index].negated = negated->boolean();
         if (const auto name = axis.optionalMember("name")) axes[index].name = name->string();
         if (const auto unit = axis.optionalMember("unit")) axes[index].unit = unit->string();
         if (const auto direction = axis.optionalMember("direction")) {

@@ -229,8 +229,11 @@ void writeSeries(const RawSeries& series, const std::filesystem::path& directory
     }
     if (series.axes != std::array<SpatialAxis, 3>{}) {
         manifest["axes"] = OrderedJson::array();
-        for (const SpatialAxis& axis : series.axes)
-            manifest["axes"].push_back({{"name", axis.name}, {"unit", axis.unit}, {"direction", toString(axis.direction)}});
+        for (const SpatialAxis& axis : series.axes) {
+            OrderedJson entry = {{"name", axis.name}, {"unit", axis.unit}, {"direction", toString(axis.direction)}};
+            if (axis.negated) entry["negated"] = true;
+            manifest["axes"].push_back(std::move(entry));
+        }
     }
     manifest["time_steps"] = OrderedJson::array();
     std::vector<const std::vector<glm::vec3>*> writtenGrids;

@@ -200,6 +200,26 @@ Bounds Series::worldBounds() const {
     return all;
 }
 
+glm::dvec3 fileCoordinatesOf(const Series& series, const glm::dvec3& world) {
+    glm::dvec3 file = world;
+    for (int axis = 0; axis < 3; ++axis)
+        if (series.axes[std::size_t(axis)].negated) file[axis] = -file[axis];
+    return file;
+}
+
+glm::dvec3 worldCoordinatesOf(const Series& series, const glm::dvec3& file) { return fileCoordinatesOf(series, file); }
+
+Bounds fileBounds(const Series& series) {
+    const Bounds world = series.worldBounds();
+    const glm::dvec3 a = fileCoordinatesOf(series, world.lower);
+    const glm::dvec3 b = fileCoordinatesOf(series, world.upper);
+    return {glm::min(a, b), glm::max(a, b)};
+}
+
+bool hasNegatedAxes(const Series& series) {
+    return std::any_of(series.axes.begin(), series.axes.end(), [](const SpatialAxis& axis) { return axis.negated; });
+}
+
 double Series::finestSpacing() const {
     if (steps.empty()) throw std::logic_error("Series::finestSpacing: the series has no time-steps");
     double finest = std::numeric_limits<double>::infinity();

@@ -257,6 +257,11 @@ std::string describeSeries(const Series& series) {
     if (!series.steps.empty()) {
         const Bounds bounds = series.worldBounds();
         out << "World bounds: " << vec3Text(bounds.lower) << " to " << vec3Text(bounds.upper) << "\n";
+        if (hasNegatedAxes(series)) {
+            const Bounds file = fileBounds(series);
+            out << "File coordinates: " << vec3Text(file.lower) << " to " << vec3Text(file.upper)
+                << " (a negated axis counts down in the file: its values, as probe --at takes them)\n";
+        }
     }
 
     if (series.axes != std::array<SpatialAxis, 3>{}) {
@@ -265,7 +270,7 @@ std::string describeSeries(const Series& series) {
             const SpatialAxis& described = series.axes[std::size_t(axis)];
             out << (axis ? "," : "") << " " << char('x' + axis) << " = " << (described.name.empty() ? "-" : described.name)
                 << " (" << (described.unit.empty() ? "no unit" : described.unit) << ", " << toString(described.direction)
-                << ")";
+                << (described.negated ? ", negated" : "") << ")";
         }
         out << "\n";
     }

@@ -143,6 +143,7 @@ void writeAxes(TransferWriter& out, const Series& series) {
         out.text(axis.name);
         out.text(axis.unit);
         out.value(axis.direction);
+        out.value(axis.negated);
     }
     out.value(series.time.unit);
     // Field by field: the struct's padding bytes are not part of the value.
@@ -159,6 +160,7 @@ void readAxes(TransferReader& in, Series& series) {
         axis.name = in.text();
         axis.unit = in.text();
         axis.direction = in.value<AxisDirection>();
+        axis.negated = in.value<bool>();
     }
     series.time.unit = in.value<TimeUnit>();
     const bool hasReference = in.value<bool>();

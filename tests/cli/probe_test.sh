@@ -126,4 +126,31 @@ case_bad_places_and_options() {
     expect_option_error "--at" "give exactly one of --at X,Y,Z, --voxel I,J,K and --along A:B"
 }
 
+# A CF forecast written by netCDF4-python (tests/cli/write_probe_forecast.py): pressure levels
+# that count down (stored 500 hPa first) are given in hPa as the file has them, and `--at` a node
+# gives exactly the float32 values netCDF4 reads there (a masked one as null), with the file's times,
+# time units and calendar; `info` lists the file's coordinates; a level beyond the file's is refused
+# with the bounds in the file's coordinates.
+case_netcdf4_forecast() {
+    local forecast="$SCRATCH/forecast.nc"
+    "$PYTHON" "$SOURCE_DIR/tests/cli/write_probe_forecast.py" write "$forecast" || fail "write_probe_forecast.py failed"
+    run_tstyles -- info "$forecast"
+    expect_exit 0
+    expect_stdout_contains "File coordinates: (-100, 35, 500) to (-93, 40, 1000)"
+    expect_stdout_contains "z = level (hPa, up, negated)"
+    local place
+    for place in "-98,36,700" "-93,40,500" "-100,35,1000" "-95,38,700"; do
+        run_tstyles -- probe "$forecast" --at "$place" --json
+        expect_exit 0
+        "$PYTHON" "$SOURCE_DIR/tests/cli/write_probe_forecast.py" check "$forecast" "$OUT_FILE" ${place//,/ } ||
+            fail "--at $place differs from netCDF4"
+    done
+    # Under the high ground at 1000 hPa every time-step is missing: an answer, not an error.
+    run_tstyles -- probe "$forecast" --at -100,35,1000 --csv
+    expect_exit 0
+    expect_stdout_contains '0,"+0 h",'
+    run_tstyles -- probe "$forecast" --at -98,36,-700
+    expect_option_error "--at" "the place (-98, 36, -700) is outside every time-step's grid; the series spans (-100, 35, 500) to (-93, 40, 1000) (in the file's coordinates, as \`tstyles info\` lists them)"
+}
+
 run_case

@@ -160,6 +160,10 @@ struct SpatialAxis {
     std::string name;  // the file's name for it ("lon", "depth"); empty: none given
     std::string unit;  // as the file spells it ("degrees_east", "m", "hPa", "mm"); empty: unknown
     AxisDirection direction = AxisDirection::Unknown;
+    // The world coordinate is the file's value negated: a CF axis that counts downward (depth,
+    // pressure) drawn pointing up. `info` lists, and `probe --at` takes, the file's own values
+    // (500 hPa, not -500): fileCoordinatesOf and worldCoordinatesOf.
+    bool negated = false;
     bool operator==(const SpatialAxis&) const = default;
 };
 
@@ -197,6 +201,15 @@ struct Series {
     // The smallest sample spacing of any time-step: the default ray step is half of it.
     double finestSpacing() const;
 };
+
+// A world place in the file's own coordinates (the negated axes' values as the file has them), and
+// a place in the file's coordinates in the world: each flips the sign of the negated axes.
+glm::dvec3 fileCoordinatesOf(const Series& series, const glm::dvec3& world);
+glm::dvec3 worldCoordinatesOf(const Series& series, const glm::dvec3& file);
+// The series' world bounds in the file's coordinates, lower to upper on every axis.
+Bounds fileBounds(const Series& series);
+// Whether an axis of the series is negated.
+bool hasNegatedAxes(const Series& series);
 
 // For series made from another (coarser, an outline for annotations): everything of `series` but
 // its time-steps; and everything of a time-step but its values and mask.
