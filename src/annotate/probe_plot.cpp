@@ -18,6 +18,7 @@ const glm::vec4 kInk{0.92f, 0.92f, 0.92f, 1.0f};
 const glm::vec4 kFaint{0.45f, 0.45f, 0.48f, 1.0f};
 const glm::vec4 kMissing{0.30f, 0.30f, 0.32f, 1.0f};
 const glm::vec4 kCurve{0.98f, 0.74f, 0.25f, 1.0f};
+const glm::vec4 kMarkerRim{0.05f, 0.05f, 0.05f, 1.0f};
 constexpr int kTextSize = 13;
 
 struct ValueSpan {
@@ -88,7 +89,14 @@ void drawLinePlot(Canvas& canvas, const Font& font, const ProbeTable& table, con
         }
         if (step + 1 < values.size() && values[step + 1])
             canvas.drawLine({x, yOf(*values[step])}, {xOf(table.times[step + 1]), yOf(*values[step + 1])}, 2.0, kCurve);
-        canvas.fillRect({x - 3.0, yOf(*values[step]) - 3.0, 6.0, 6.0}, kCurve);
+        if (table.timeColours.empty()) {
+            canvas.fillRect({x - 3.0, yOf(*values[step]) - 3.0, 6.0, 6.0}, kCurve);
+        } else {
+            // The time-step's colour inside a dark rim, so that a colour near the curve's or the
+            // background's still reads as a marker.
+            canvas.fillRect({x - 5.0, yOf(*values[step]) - 5.0, 10.0, 10.0}, kMarkerRim);
+            canvas.fillRect({x - 4.0, yOf(*values[step]) - 4.0, 8.0, 8.0}, glm::vec4(table.timeColours[step], 1.0f));
+        }
     }
     drawValueTicks(canvas, font, plot, span, plot.x, true);
 }

@@ -19,6 +19,7 @@
 #include "tstyles/data/temporal_probe.h"
 #include "tstyles/data/time_axis.h"
 #include "tstyles/image/image_io.h"
+#include "tstyles/scene/automatic_scene.h"
 
 namespace tstyles::cli {
 namespace {
@@ -238,6 +239,15 @@ ProbeTable tableOf(const Series& series, const ProbePlaces& places, const std::v
     return table;
 }
 
+// Each time-step's colour as `render` of the dataset shows time: its automatic scene's index TSTF.
+std::vector<glm::vec3> automaticTimeColours(const Series& series, const std::filesystem::path& dataset) {
+    const Scene scene = automaticScene(series, dataset).scene;
+    std::vector<glm::vec3> colours;
+    for (std::size_t step = 0; step < series.size(); ++step)
+        colours.push_back(glm::vec3(scene.indexTstf.atStep(int(step)).color));
+    return colours;
+}
+
 }  // namespace
 
 Command addProbeCommand(CLI::App& app) {
@@ -280,7 +290,9 @@ Command addProbeCommand(CLI::App& app) {
                 else if (options->csv) writeCsv(series, places, labels, values);
                 else writeText(series, places, labels, values);
                 if (!options->plot.empty()) {
-                    writeImage(drawProbePlot(tableOf(series, places, labels, values), plotSize), options->plot);
+                    ProbeTable table = tableOf(series, places, labels, values);
+                    if (!places.line) table.timeColours = automaticTimeColours(series, inputs->front());
+                    writeImage(drawProbePlot(table, plotSize), options->plot);
                     std::cerr << "wrote " << options->plot.string() << "\n";
                 }
                 return kExitSuccess;

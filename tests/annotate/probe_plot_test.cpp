@@ -73,5 +73,24 @@ TEST(ProbePlot, ALinePlotMarksEachValueAtItsTimeAndHeight) {
     EXPECT_LT(gap.r, 0.5f);
 }
 
+// With the time-steps' colours (the index TSTF's), each marker is its time-step's colour inside a
+// dark rim, 8 pixels square inside 10.
+TEST(ProbePlot, ALinePlotsMarkersTakeTheirTimeStepsColours) {
+    ProbeTable table;
+    table.title = "f at a place";
+    table.times = {0.0, 1.0, 2.0};
+    table.timeLabels = {"0", "1", "2"};
+    table.distances = {0.0};
+    table.values = {{0.0, 5.0, 10.0}};
+    table.timeColours = {{0.13f, 0.29f, 0.75f}, {0.95f, 0.95f, 0.95f}, {0.9f, 0.45f, 0.05f}};
+    const Image image = drawProbePlot(table, {800, 450});
+    // As above: time 0 at x 80, time 1 at x 428, time 2 at x 776; values 0, 5 and 10 at y 394, 219
+    // and 44.
+    expectColour(image, 82, 392, table.timeColours[0]);
+    expectColour(image, 428, 219, table.timeColours[1]);
+    expectColour(image, 774, 46, table.timeColours[2]);
+    expectColour(image, 428 - 5, 219 - 5, {0.05f, 0.05f, 0.05f});  // the rim
+}
+
 }  // namespace
 }  // namespace tstyles

@@ -21,6 +21,9 @@ struct ProbeTable {
     std::vector<std::string> timeLabels;  // as the slider writes them
     std::vector<double> distances;        // along the line from its start; one place: {0}
     std::vector<std::vector<std::optional<double>>> values;  // per place, per time-step
+    // A line plot's marker colour per time-step: the index TSTF's, as the picture colours time.
+    // Empty: the curve's colour.
+    std::vector<glm::vec3> timeColours;
 };
 
 // The colour the diagram gives a value at `fraction` of the values' range (0 lowest, 1 highest): a
