@@ -29,8 +29,9 @@ void check(int status) {
     ASSERT_EQ(status, NC_NOERR) << nc_strerror(status);
 }
 
-// rain(time 2, level 3, y 2, x 3) float, uneven levels 0, 1, 5, a fill value at index 4 of step 1.
-std::filesystem::path writeNetcdf(const std::filesystem::path& folder) {
+// rain(time 2, level 3, y 2, x 3) float, uneven levels 0, 1, 5, a fill value at index 4 of step 1;
+// the levels in `levelUnits` where given.
+std::filesystem::path writeNetcdf(const std::filesystem::path& folder, const std::string& levelUnits = "") {
     const auto file = folder / "rain.nc";
     int nc = 0, dims[4] = {}, rain = 0, level = 0, time = 0;
     check(nc_create(file.c_str(), NC_CLOBBER, &nc));
@@ -43,6 +44,7 @@ std::filesystem::path writeNetcdf(const std::filesystem::path& folder) {
     check(nc_def_var(nc, "rain", NC_FLOAT, 4, dims, &rain));
     const float fill = -1.0f;
     check(nc_put_att_float(nc, rain, "_FillValue", NC_FLOAT, 1, &fill));
+    if (!levelUnits.empty()) check(nc_put_att_text(nc, level, "units", levelUnits.size(), levelUnits.c_str()));
     check(nc_enddef(nc));
     const double times[2] = {3, 9}, levels[3] = {0, 1, 5};
     check(nc_put_var_double(nc, time, times));
@@ -108,6 +110,21 @@ TEST(ConvertRoundTrip, NetcdfKeepsValuesTimesUnevenLevelsAndMissingVoxels) {
     EXPECT_TRUE(tstyles::isMissing(loaded.steps[1].density[4]));
     // Raw 0.25 * index over [0, 8.75]: index 5 of step 0 is 1.25 / 8.75.
     EXPECT_NEAR(loaded.steps[0].density[5], 1.25 / 8.75, 1e-6);
+}
+
+// Pressure levels count down: drawn up, their axis negated, and the manifest keeps that, so that
+// `probe --at` of the converted folder takes the levels as the file has them.
+TEST(ConvertRoundTrip, NetcdfPressureLevelsStayNegated) {
+    const auto folder = scratch("pressure");
+    const auto file = writeNetcdf(folder, "hPa");
+    convert(file, folder / "out", false);
+    const tstyles::Series direct = tstyles::openSeries(file, {});
+    const tstyles::Series loaded = tstyles::loadSeries(folder / "out");
+    EXPECT_TRUE(direct.axes[2].negated);
+    EXPECT_EQ(loaded.axes, direct.axes);
+    expectSameSeries(direct, loaded);
+    EXPECT_EQ(tstyles::fileBounds(loaded).lower.z, 0.0);
+    EXPECT_EQ(tstyles::fileBounds(loaded).upper.z, 5.0);
 }
 
 // A CF climatology: twelve monthly means of 1981-2010 stamped mid-month in 1981, the time variable

@@ -48,7 +48,7 @@ Series everyKindOfStep() {
     series.sourceFormat = "NetCDF-4";
     series.readingNotes = {"variable temp", "time from the time variable"};
     series.axes = {SpatialAxis{"lon", "degrees_east", AxisDirection::East},
-                   SpatialAxis{"lat", "degrees_north", AxisDirection::North}, SpatialAxis{"", "", AxisDirection::Down}};
+                   SpatialAxis{"lat", "degrees_north", AxisDirection::North}, SpatialAxis{"pressure", "hPa", AxisDirection::Up, true}};
     series.time.unit = TimeUnit::Hours;
     series.time.reference = CalendarDate{2005, 8, 28, 6, 30, 12.5};
     series.time.calendar = Calendar::NoLeap;
