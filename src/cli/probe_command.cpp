@@ -19,7 +19,7 @@
 #include "tstyles/data/temporal_probe.h"
 #include "tstyles/data/time_axis.h"
 #include "tstyles/image/image_io.h"
-#include "tstyles/scene/automatic_scene.h"
+#include "tstyles/scene/time_colours.h"
 
 namespace tstyles::cli {
 namespace {
@@ -239,9 +239,10 @@ ProbeTable tableOf(const Series& series, const ProbePlaces& places, const std::v
     return table;
 }
 
-// Each time-step's colour as `render` of the dataset shows time: its automatic scene's index TSTF.
-std::vector<glm::vec3> automaticTimeColours(const Series& series, const std::filesystem::path& dataset) {
-    const Scene scene = automaticScene(series, dataset).scene;
+// Each time-step's colour as `render` of the dataset shows time: the automatic scene's index TSTF.
+std::vector<glm::vec3> automaticTimeColours(const Series& series) {
+    Scene scene;
+    applyTimeColours(scene, series.size());
     std::vector<glm::vec3> colours;
     for (std::size_t step = 0; step < series.size(); ++step)
         colours.push_back(glm::vec3(scene.indexTstf.atStep(int(step)).color));
@@ -291,7 +292,7 @@ Command addProbeCommand(CLI::App& app) {
                 else writeText(series, places, labels, values);
                 if (!options->plot.empty()) {
                     ProbeTable table = tableOf(series, places, labels, values);
-                    if (!places.line) table.timeColours = automaticTimeColours(series, inputs->front());
+                    if (!places.line) table.timeColours = automaticTimeColours(series);
                     writeImage(drawProbePlot(table, plotSize), options->plot);
                     std::cerr << "wrote " << options->plot.string() << "\n";
                 }

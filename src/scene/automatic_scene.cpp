@@ -12,7 +12,7 @@
 #include "tstyles/scene/temporal_change.h"
 #include "tstyles/scene/temporal_compositors.h"
 #include "tstyles/scene/visible_bounds.h"
-#include "time_colours.h"
+#include "tstyles/scene/time_colours.h"
 
 namespace tstyles {
 namespace {

@@ -1,5 +1,5 @@
 // Colours over time for the automatic scene (time_colours.h).
-#include "time_colours.h"
+#include "tstyles/scene/time_colours.h"
 
 #include "tstyles/scene/automatic_scene.h"
 #include "tstyles/scene/color_map.h"

@@ -1,5 +1,6 @@
 // Time in colour for the automatic scene: the index TSTF gives each time-step its own colour from a
-// perceptually ordered map, the gradient TSTF the paper's green-to-orange scale. Private to src/scene.
+// perceptually ordered map, the gradient TSTF the paper's green-to-orange scale. `probe -o` colours
+// its markers with the same index TSTF.
 #pragma once
 
 #include <cstddef>
