@@ -20,6 +20,17 @@ ProbeTable lineOfThree() {
     return table;
 }
 
+// One place over the time-steps 0, 1, 2 (labels "0", "1", "2") with `values`.
+ProbeTable placeOverThreeTimes(const std::vector<std::optional<double>>& values) {
+    ProbeTable table;
+    table.title = "f at a place";
+    table.times = {0.0, 1.0, 2.0};
+    table.timeLabels = {"0", "1", "2"};
+    table.distances = {0.0};
+    table.values = {values};
+    return table;
+}
+
 void expectColour(const Image& image, int x, int y, const glm::vec3& expected) {
     const glm::vec4 pixel = image.at(x, y);
     EXPECT_NEAR(pixel.r, expected.r, 1e-6) << x << ", " << y;
@@ -56,12 +67,7 @@ TEST(ProbePlot, TheRampRisesFromDarkBlueToYellow) {
 }
 
 TEST(ProbePlot, ALinePlotMarksEachValueAtItsTimeAndHeight) {
-    ProbeTable table;
-    table.title = "f at a place";
-    table.times = {0.0, 1.0, 2.0};
-    table.timeLabels = {"0", "1", "2"};
-    table.distances = {0.0};
-    table.values = {{0.0, std::nullopt, 10.0}};
+    const ProbeTable table = placeOverThreeTimes({0.0, std::nullopt, 10.0});
     const Image image = drawProbePlot(table, {800, 450});
     // The plot spans x 80 to 776 and y 44 to 394: time 0 at x 80, time 2 at x 776; value 0 at the
     // bottom, 10 at the top. The markers are 6 pixels square in the curve's colour.
@@ -76,12 +82,7 @@ TEST(ProbePlot, ALinePlotMarksEachValueAtItsTimeAndHeight) {
 // With the time-steps' colours (the index TSTF's), each marker is its time-step's colour inside a
 // dark rim, 8 pixels square inside 10.
 TEST(ProbePlot, ALinePlotsMarkersTakeTheirTimeStepsColours) {
-    ProbeTable table;
-    table.title = "f at a place";
-    table.times = {0.0, 1.0, 2.0};
-    table.timeLabels = {"0", "1", "2"};
-    table.distances = {0.0};
-    table.values = {{0.0, 5.0, 10.0}};
+    ProbeTable table = placeOverThreeTimes({0.0, 5.0, 10.0});
     table.timeColours = {{0.13f, 0.29f, 0.75f}, {0.95f, 0.95f, 0.95f}, {0.9f, 0.45f, 0.05f}};
     const Image image = drawProbePlot(table, {800, 450});
     // As above: time 0 at x 80, time 1 at x 428, time 2 at x 776; values 0, 5 and 10 at y 394, 219

@@ -33,24 +33,17 @@ def write(path):
         root.title = "probe forecast (netCDF4-python)"
         for name, size in (("time", None), ("level", LEVELS.size), ("lat", LATS.size), ("lon", LONS.size)):
             root.createDimension(name, size)
-        time = root.createVariable("time", "f8", ("time",))
-        time.units = "hours since 2026-11-28 00:00:00"
-        time.calendar = "standard"
-        time.standard_name = "time"
-        time[:] = HOURS
-        level = root.createVariable("level", "f4", ("level",))
-        level.units = "hPa"
-        level.standard_name = "air_pressure"
-        level.positive = "down"
-        level[:] = LEVELS
-        lat = root.createVariable("lat", "f4", ("lat",))
-        lat.units = "degrees_north"
-        lat.standard_name = "latitude"
-        lat[:] = LATS
-        lon = root.createVariable("lon", "f4", ("lon",))
-        lon.units = "degrees_east"
-        lon.standard_name = "longitude"
-        lon[:] = LONS
+        coordinates = (
+            ("time", "f8", HOURS, {"units": "hours since 2026-11-28 00:00:00", "calendar": "standard",
+                                   "standard_name": "time"}),
+            ("level", "f4", LEVELS, {"units": "hPa", "standard_name": "air_pressure", "positive": "down"}),
+            ("lat", "f4", LATS, {"units": "degrees_north", "standard_name": "latitude"}),
+            ("lon", "f4", LONS, {"units": "degrees_east", "standard_name": "longitude"}),
+        )
+        for name, kind, values, attributes in coordinates:
+            variable = root.createVariable(name, kind, (name,))
+            variable.setncatts(attributes)
+            variable[:] = values
         air = root.createVariable("air", "f4", ("time", "level", "lat", "lon"), fill_value=FILL)
         air.units = "K"
         air.standard_name = "air_temperature"
