@@ -19,11 +19,6 @@ glm::vec4 boxInk(const glm::dvec4& background, float alpha) {
     return {level, level, level, alpha};
 }
 
-// The file's coordinates of a display point (the inverse of DisplayFrame::toDisplay).
-glm::dvec3 toData(const DisplayFrame& frame, const glm::dvec3& display) {
-    return glm::transpose(frame.rotation) * (display / frame.scale);
-}
-
 std::string axisTitle(const SpatialAxis& axis, int index) {
     const std::string name = axis.name.empty() ? std::string(1, char('x' + index)) : axis.name;
     return axis.unit.empty() ? name : name + " (" + axis.unit + ")";
@@ -78,8 +73,8 @@ std::optional<AxisTicks> ticksOnEdge(const PanelMetrics& m, glm::ivec2 size, con
     const Bounds bounds = series.worldBounds();
     const auto centre = projectToImage(view, size, bounds.center());
     if (!centre || glm::length(edge.end - edge.start) < 3.0 * m.pixels) return std::nullopt;
-    const glm::dvec3 dataStart = toData(frame, boxCorner(bounds, edge.from));
-    const glm::dvec3 dataEnd = toData(frame, boxCorner(bounds, edge.from | (1 << axisIndex)));
+    const glm::dvec3 dataStart = frame.toWorld(boxCorner(bounds, edge.from));
+    const glm::dvec3 dataEnd = frame.toWorld(boxCorner(bounds, edge.from | (1 << axisIndex)));
     int dataAxis = 0;
     for (int k = 1; k < 3; ++k)
         if (std::abs(dataEnd[k] - dataStart[k]) > std::abs(dataEnd[dataAxis] - dataStart[dataAxis])) dataAxis = k;

@@ -1,7 +1,6 @@
 // `tstyles probe DATASET --at X,Y,Z | --voxel I,J,K | --along X,Y,Z:X,Y,Z`: the values of a place
 // over time, or of a line (a Hovmoeller table: time x distance), as text, CSV or JSON
 // (docs/probe.md).
-#include <charconv>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -16,6 +15,7 @@
 #include "tstyles/core/errors.h"
 #include "tstyles/core/interval.h"
 #include "tstyles/data/format_listing.h"
+#include "tstyles/data/probe_csv.h"
 #include "tstyles/data/temporal_probe.h"
 #include "tstyles/data/time_axis.h"
 #include "tstyles/image/image_io.h"
@@ -140,17 +140,7 @@ void requireSomeGridMet(const Series& series, const ProbePlaces& places,
                                                 : " (its world bounds, as `tstyles info` lists them)"));
 }
 
-// A value as the series holds it: its densities are float32, so a value has about 7 significant
-// digits; written shortest at that precision (12, not 12.000000085681677).
-std::string floatText(double value) {
-    char text[32];
-    const auto result = std::to_chars(text, text + sizeof text, float(value));
-    return std::string(text, result.ptr);
-}
-
-double asStored(double value) { return std::stod(floatText(value)); }
-
-std::string valueText(const std::optional<double>& value) { return value ? floatText(*value) : ""; }
+double asStored(double value) { return std::stod(storedValueText(value)); }
 
 void writeJson(const Series& series, const ProbePlaces& places, const std::vector<std::string>& labels,
                const std::vector<std::vector<std::optional<double>>>& values) {
@@ -187,16 +177,12 @@ void writeJson(const Series& series, const ProbePlaces& places, const std::vecto
 
 void writeCsv(const Series& series, const ProbePlaces& places, const std::vector<std::string>& labels,
               const std::vector<std::vector<std::optional<double>>>& values) {
-    std::cout << "time,label";
-    if (!places.line) std::cout << ",value";
+    ProbeColumns columns{{}, labels, {}, values};
+    for (const TimeStep& step : series.steps) columns.times.push_back(step.time);
+    if (!places.line) columns.headers = {"value"};
     else
-        for (double distance : places.distances) std::cout << "," << floatText(distance);
-    std::cout << "\n";
-    for (std::size_t step = 0; step < series.steps.size(); ++step) {
-        std::cout << formatNumber(series.steps[step].time) << ",\"" << labels[step] << "\"";
-        for (const auto& column : values) std::cout << "," << valueText(column[step]);
-        std::cout << "\n";
-    }
+        for (double distance : places.distances) columns.headers.push_back(storedValueText(distance));
+    writeProbeCsv(std::cout, columns);
 }
 
 void writeText(const Series& series, const ProbePlaces& places, const std::vector<std::string>& labels,
@@ -208,7 +194,7 @@ void writeText(const Series& series, const ProbePlaces& places, const std::vecto
         for (std::size_t step = 0; step < series.steps.size(); ++step) {
             const auto& value = values.front()[step];
             std::cout << "  " << step << "  " << labels[step] << "  "
-                      << (value ? floatText(*value) : "missing (outside this time-step's grid or no data)") << "\n";
+                      << (value ? storedValueText(*value) : "missing (outside this time-step's grid or no data)") << "\n";
         }
         return;
     }
@@ -216,11 +202,11 @@ void writeText(const Series& series, const ProbePlaces& places, const std::vecto
               << pointText(places.shown.back()) << ", " << places.points.size() << " points (" << unit
               << "); rows: time-steps, columns: distance from the start\n";
     std::cout << "time";
-    for (double distance : places.distances) std::cout << "\t" << floatText(distance);
+    for (double distance : places.distances) std::cout << "\t" << storedValueText(distance);
     std::cout << "\n";
     for (std::size_t step = 0; step < series.steps.size(); ++step) {
         std::cout << labels[step];
-        for (const auto& column : values) std::cout << "\t" << (column[step] ? floatText(*column[step]) : "-");
+        for (const auto& column : values) std::cout << "\t" << (column[step] ? storedValueText(*column[step]) : "-");
         std::cout << "\n";
     }
 }

@@ -367,4 +367,31 @@ Series applyDisplayFrame(Series series, const DisplayFrame& frame) {
     return series;
 }
 
+namespace {
+
+// The series' axes as read, in data order: the shown series holds them in display order.
+std::array<bool, 3> negatedDataAxes(const Series& shown, const DisplayFrame& frame) {
+    const std::array<SignedAxis, 3> rows = rowsOf(frame.rotation);
+    std::array<bool, 3> negated{};
+    for (std::size_t display = 0; display < 3; ++display)
+        negated[std::size_t(rows[display].axis)] = shown.axes[display].negated;
+    return negated;
+}
+
+glm::dvec3 flipNegated(glm::dvec3 place, const std::array<bool, 3>& negated) {
+    for (int axis = 0; axis < 3; ++axis)
+        if (negated[std::size_t(axis)]) place[axis] = -place[axis];
+    return place;
+}
+
+}  // namespace
+
+glm::dvec3 fileCoordinatesOfShown(const Series& shown, const DisplayFrame& frame, const glm::dvec3& display) {
+    return flipNegated(frame.toWorld(display), negatedDataAxes(shown, frame));
+}
+
+glm::dvec3 shownCoordinatesOfFile(const Series& shown, const DisplayFrame& frame, const glm::dvec3& file) {
+    return frame.toDisplay(flipNegated(file, negatedDataAxes(shown, frame)));
+}
+
 }  // namespace tstyles

@@ -343,6 +343,10 @@ const std::vector<SceneKey>& keyTable() {
             {"animation", "object", "none",
              "keyframed tracks for `tstyles animate`: docs/animation.md",
              std::nullopt},
+            {"probes", "list of 3-number lists", "none",
+             "at most 8 places pinned in the window's probe panel, in the file's coordinates as `tstyles info` "
+             "lists them; the window plots their values over time, `render` ignores them: docs/probe.md",
+             std::nullopt},
         };
         const auto afterName = std::find_if(table.begin(), table.end(), [](const SceneKey& key) {
             return key.path == "compositor.name";

@@ -123,6 +123,17 @@ void readExposure(const JsonField& section, Exposure& exposure) {
     }
 }
 
+// "probes": [[x, y, z], ...] in the file's coordinates; whether they meet the series is the
+// window's to say (a place outside every grid plots as missing).
+std::vector<glm::dvec3> readProbes(const JsonField& section) {
+    if (!section.isArray()) section.fail("expected a list of places [x, y, z], got " + section.typeWithArticle());
+    if (section.arraySize() > kMaxProbes)
+        section.fail("at most " + std::to_string(kMaxProbes) + " places, got " + std::to_string(section.arraySize()));
+    std::vector<glm::dvec3> probes;
+    for (std::size_t index = 0; index < section.arraySize(); ++index) probes.push_back(section.element(index).vec3());
+    return probes;
+}
+
 void readStf(const JsonField& stf, Scene& scene) {
     stf.allowOnlyKeys({"opacity", "color"});
     readCurve(stf, unitInterval, scene.stf.curve);
@@ -261,7 +272,7 @@ Scene parseScene(const std::string& text, const std::filesystem::path& origin) {
     const json document = parseJsonText(text, origin, JsonComments::Allowed);
     const JsonField root(origin, document, "");
     root.allowOnlyKeys({"dataset", "image", "camera", "raycast", "stf", "compositor", "ray", "tstf", "final", "orientation",
-                        "aspect", "vertical_exaggeration", "exposure", "annotations", "animation"});
+                        "aspect", "vertical_exaggeration", "exposure", "annotations", "animation", "probes"});
 
     Scene scene;
     scene.dataset = readDataset(root, origin);
@@ -278,6 +289,7 @@ Scene parseScene(const std::string& text, const std::filesystem::path& origin) {
     if (const auto finalMode = root.optionalMember("final"))
         scene.finalMode = finalMode->name<FinalMode>(finalModeFromString, finalModeNames());
     if (const auto annotations = root.optionalMember("annotations")) scene.annotations = readAnnotations(*annotations);
+    if (const auto probes = root.optionalMember("probes")) scene.probes = readProbes(*probes);
     resolveStyleFiles(scene, origin);
     // Last: its keys are checked against the scene read so far.
     if (const auto animation = root.optionalMember("animation"))

@@ -180,6 +180,10 @@ std::string sceneToJson(const Scene& scene, const std::filesystem::path& sceneFo
     }
     if (scene.annotations != Annotations{}) root["annotations"] = annotationsJson(scene.annotations);
     if (!scene.animation.empty()) root["animation"] = animationJson(scene.animation);
+    if (!scene.probes.empty()) {
+        ordered_json& probes = root["probes"] = ordered_json::array();
+        for (const glm::dvec3& place : scene.probes) probes.push_back({place.x, place.y, place.z});
+    }
     return layOut(root, 0) + "\n";
 }
 

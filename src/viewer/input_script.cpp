@@ -217,10 +217,12 @@ ScriptCommand parseLine(const LineParser& parser, const std::vector<std::string>
         expectArguments(parser, tokens, 1, 1, "key [ctrl+][shift+][alt+]KEY");
         command.action = ScriptAction::Key;
         std::tie(command.key, command.modifiers) = parser.keyCombination(tokens[1]);
-    } else if (verb == "open" || verb == "save-scene" || verb == "screenshot" || verb == "screenshot-window") {
+    } else if (verb == "open" || verb == "save-scene" || verb == "export-probes" || verb == "screenshot" ||
+               verb == "screenshot-window") {
         expectArguments(parser, tokens, 1, 1, verb + " PATH");
         command.action = verb == "open"              ? ScriptAction::Open
                          : verb == "save-scene"      ? ScriptAction::SaveScene
+                         : verb == "export-probes"   ? ScriptAction::ExportProbes
                          : verb == "screenshot"      ? ScriptAction::Screenshot
                                                      : ScriptAction::WindowScreenshot;
         command.argument = tokens[1];
@@ -237,7 +239,7 @@ ScriptCommand parseLine(const LineParser& parser, const std::vector<std::string>
     } else {
         parser.fail("unknown command \"" + verb +
                     "\" (wait, wait-refined, move, press, release, click, double-click, drag, scroll, key, open, "
-                    "save-scene, screenshot, screenshot-window, measure-start, measure-stop, quit)");
+                    "save-scene, export-probes, screenshot, screenshot-window, measure-start, measure-stop, quit)");
     }
     return command;
 }

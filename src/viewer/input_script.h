@@ -40,6 +40,7 @@ enum class ScriptAction {
     Key,
     Open,
     SaveScene,
+    ExportProbes,
     Screenshot,
     WindowScreenshot,
     MeasureStart,
@@ -58,7 +59,7 @@ struct ScriptCommand {
     int count = 0;                     // wait: frames; drag: mouse moves between press and release
     double milliseconds = 0.0;         // wait
     double notches = 0.0;              // scroll
-    std::string argument;              // open, save-scene, screenshot: a path; measure-start: a label
+    std::string argument;              // open, save-scene, export-probes, screenshot: a path; measure-start: a label
 };
 
 // `origin` names the script in messages. ${NAME} in arguments is replaced by the environment

@@ -101,6 +101,9 @@ void ScriptPlayer::start(const ScriptCommand& command, ScriptHost& host, Clock::
         case ScriptAction::SaveScene:
             host.saveSceneFromScript(command.argument);
             break;
+        case ScriptAction::ExportProbes:
+            host.exportProbesFromScript(command.argument);
+            break;
         case ScriptAction::Screenshot:
         case ScriptAction::WindowScreenshot:
             host.requestScreenshot(command.argument, command.action == ScriptAction::WindowScreenshot);

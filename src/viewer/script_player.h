@@ -27,6 +27,8 @@ public:
     virtual bool viewRefined() const = 0;
     virtual void openFromScript(const std::filesystem::path& path) = 0;
     virtual void saveSceneFromScript(const std::filesystem::path& path) = 0;
+    // Writes the probe panel's curves as CSV, as its Export does.
+    virtual void exportProbesFromScript(const std::filesystem::path& path) = 0;
     // Takes the screenshot at the next refined frame (the volume area, or the whole window with
     // its panels); screenshotPending() until then.
     virtual void requestScreenshot(const std::filesystem::path& path, bool wholeWindow) = 0;

@@ -19,7 +19,7 @@ void drawSidePanel(const ScreenRect& rect, SidePanelState& state, ViewerCommands
         if (ImGui::CollapsingHeader("Camera")) drawCameraSection(state, commands);
         if (ImGui::CollapsingHeader("Annotations")) drawAnnotationsSection(state, anchors);
         if (ImGui::CollapsingHeader("Animation")) drawAnimationSection(state, commands, anchors);
-        if (ImGui::CollapsingHeader("Temporal profile", ImGuiTreeNodeFlags_DefaultOpen)) drawProfileSection(state);
+        if (ImGui::CollapsingHeader("Probes", ImGuiTreeNodeFlags_DefaultOpen)) drawProbesSection(state);
         ImGui::PopItemWidth();
     }
     ImGui::End();

@@ -1,6 +1,6 @@
 // The panel on the left: the dataset (time-steps, grids, placement, value range, memory) with the
 // time slider and play button; the compositor settings (TC, ray mode, step, termination, final mode,
-// gradient-TSTF range, background); the camera; and the temporal profile of the last pick.
+// gradient-TSTF range, background); the camera; how to pin probes; annotations; animation.
 #pragma once
 
 #include <cstddef>
@@ -15,7 +15,6 @@
 #include "ui_anchors.h"
 #include "ui_geometry.h"
 #include "viewer_commands.h"
-#include "volume_picking.h"
 
 namespace tstyles::viewer {
 
@@ -32,8 +31,6 @@ struct SidePanelState {
     const Series& series;
     const std::vector<std::string>& timeLabels;  // ViewerDocument::timeLabels
     TimeControl& time;
-    const std::optional<Pick>& pick;
-    bool pickIsNew = false;  // scroll the profile into view
     GpuMemory memory;
     double defaultStep = 0.0;  // the renderer's step when the scene leaves it out
     AnimationState& animation;
@@ -54,7 +51,7 @@ void drawCompositorSection(SidePanelState& state);
 // Inside the compositor section: the ray mode and its options (ray_mode_section.cpp).
 void drawRayModeSection(Scene& scene);
 void drawCameraSection(SidePanelState& state, ViewerCommands& commands);
-void drawProfileSection(SidePanelState& state);
+void drawProbesSection(SidePanelState& state);
 void drawAnnotationsSection(SidePanelState& state, UiAnchors& anchors);
 void drawAnimationSection(SidePanelState& state, ViewerCommands& commands, UiAnchors& anchors);
 

@@ -3,11 +3,16 @@
 
 #include <cmath>
 #include <iostream>
+#include <sstream>
 
 #include <imgui.h>
 
+#include "probe_panel.h"
 #include "side_panel.h"
+#include "volume_picking.h"
+#include "tstyles/core/atomic_file.h"
 #include "tstyles/core/errors.h"
+#include "tstyles/core/user_paths.h"
 #include "tstyles/gl/gl_api.h"
 #include "tstyles/gl/headless_context.h"
 #include "tstyles/image/image_io.h"
@@ -115,14 +120,12 @@ void ViewerApp::buildUi(double seconds) {
     const float menuHeight = drawMainMenu(menu, commands_, openRecent);
     if (openRecent) openPath(*openRecent);
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    layout_ = layoutViewer({display.x, display.y}, menuHeight);
+    layout_ = layoutViewer({display.x, display.y}, menuHeight, !document_.scene.probes.empty());
 
     SidePanelState side{document_.scene,
                         *document_.series,
                         document_.timeLabels,
                         time_,
-                        pick_,
-                        std::exchange(pickIsNew_, false),
                         {renderer_.seriesTextureBytes(), renderer_.gradientTextureBytes(),
                          renderer_.frameTextureBytes(), gpuStorageChanges_},
                         0.5 * document_.series->finestSpacing(),
@@ -130,6 +133,7 @@ void ViewerApp::buildUi(double seconds) {
     drawSidePanel(layout_.sidePanel, side, commands_, anchors_);
     editors_.draw(document_.scene, *document_.series, document_.timeLabels, *document_.histogram, layout_, anchors_);
     drawVolumeArea();
+    drawProbePanel();
 
     collectShortcuts(commands_);
     for (const ViewerCommand command : ViewerCommands(std::exchange(commands_, {}))) execute(command);
@@ -154,10 +158,7 @@ void ViewerApp::drawVolumeArea() {
     const Bounds bounds = document_.series->worldBounds();
     if (const auto pixel = volumeView_.handleInput(layout_.volume, framebufferScale(), document_.scene.camera, bounds,
                                                    frameSize(), anchors_)) {
-        pick_ = pickFirstVisibleSample(*document_.series, document_.scene, *pixel, frameSize(),
-                                       renderer_.stepLengthFor(document_.scene));
-        pickNote_ = pick_ ? nullptr : "nothing visible under the pointer to profile";
-        pickIsNew_ = pick_.has_value();
+        pinProbeUnder(*pixel);
     }
     VolumeOverlay overlay;
     overlay.progress = frame_.progress();
@@ -166,8 +167,11 @@ void ViewerApp::drawVolumeArea() {
     overlay.previewDivisor = frame_.previewDivisor();
     overlay.framesPerSecond = statistics_.framesPerSecond();
     overlay.refinementSeconds = frame_.lastRefinementSeconds();
-    if (pick_) overlay.pickedPoint = pick_->world;
-    overlay.note = time_.solo ? "showing one time-step alone (not saved in the scene)" : pickNote_;
+    const std::vector<ProbeCurve>& curves =
+        probeCurves_.update(document_.scene.probes, document_.series, document_.frame);
+    for (std::size_t index = 0; index < curves.size(); ++index)
+        overlay.probes.push_back({curves[index].shown, probeColour(index), int(index + 1)});
+    overlay.note = time_.solo ? "showing one time-step alone (not saved in the scene)" : probeNote_;
     if (animation_.previewing && !time_.solo) overlay.note = "previewing the animation (the scene is unchanged)";
     overlay.annotated = document_.scene.annotations.any();
     volumeView_.drawOverlay(layout_.volume, overlay, document_.scene.camera, bounds, frameSize());
@@ -177,6 +181,48 @@ void ViewerApp::drawVolumeArea() {
         document_.scene.annotations = {};  // e.g. the font is missing: say so once, then draw without
         errorDialog_.show(error.what());
     }
+}
+
+void ViewerApp::pinProbeUnder(glm::dvec2 pixel) {
+    Scene& scene = document_.scene;
+    if (scene.probes.size() >= kMaxProbes) {
+        probeNote_ = "8 probes at most: remove one in the probe panel first";
+        return;
+    }
+    const std::optional<glm::dvec3> place =
+        probePlaceUnder(*document_.series, scene, pixel, frameSize(), renderer_.stepLengthFor(scene),
+                        document_.series->finestSpacing());
+    if (!place) {
+        probeNote_ = "nothing shows under the pointer to probe";
+        return;
+    }
+    scene.probes.push_back(fileCoordinatesOfShown(*document_.series, document_.frame, *place));
+    probeNote_ = nullptr;
+}
+
+void ViewerApp::drawProbePanel() {
+    Scene& scene = document_.scene;
+    if (scene.probes.empty()) return;
+    const ProbePanelState state{probeCurves_.update(scene.probes, document_.series, document_.frame),
+                                *document_.series, scene, document_.timeLabels, time_.step};
+    const ProbePanelRequests requests = viewer::drawProbePanel(layout_.probePanel, state, anchors_);
+    if (requests.exportCsv) fileDialog_.open(FilePurpose::ExportProbes, dialogFolder(), "probes.csv");
+    if (requests.remove && *requests.remove < scene.probes.size())
+        scene.probes.erase(scene.probes.begin() + std::ptrdiff_t(*requests.remove));
+    if (requests.clear) scene.probes.clear();
+}
+
+void ViewerApp::exportProbes(const std::filesystem::path& path) {
+    if (document_.scene.probes.empty())
+        throwInputError(path, "", "no probes to export: ctrl+click the picture to pin one first");
+    requireOutputFile(PathSource{}, path, "CSV file");
+    const std::vector<ProbeCurve>& curves =
+        probeCurves_.update(document_.scene.probes, document_.series, document_.frame);
+    std::ostringstream text;
+    writeProbeCsv(text, probeColumns(curves, *document_.series, document_.timeLabels));
+    writeFileAtomically(path, text.str());
+    std::cout << "wrote " << curves.size() << " probe" << (curves.size() == 1 ? "" : "s") << " to " << path.string()
+              << std::endl;
 }
 
 void ViewerApp::presentVolume(bool interacting) {

@@ -28,7 +28,7 @@
 #include "viewer_document.h"
 #include "viewer_layout.h"
 #include "viewer_window.h"
-#include "volume_picking.h"
+#include "probe_curves.h"
 #include "volume_view.h"
 
 namespace tstyles::viewer {
@@ -46,6 +46,7 @@ public:
     bool viewRefined() const override { return frame_.refined() && !movieExport_; }
     void openFromScript(const std::filesystem::path& path) override { openPath(path); }
     void saveSceneFromScript(const std::filesystem::path& path) override { saveTo(path); }
+    void exportProbesFromScript(const std::filesystem::path& path) override { exportProbes(path); }
     void requestScreenshot(const std::filesystem::path& path, bool wholeWindow) override;
     bool screenshotPending() const override { return screenshotPath_.has_value(); }
     void startMeasurement(const std::string& label) override { statistics_.start(label); }
@@ -58,6 +59,9 @@ private:
     void frame();
     void buildUi(double seconds);
     void drawVolumeArea();
+    // Pins a probe where the picture shows the data under `pixel` (volume_picking.h), or says why not.
+    void pinProbeUnder(glm::dvec2 pixel);
+    void drawProbePanel();
     void presentVolume(bool interacting);
     // Brings the progressive frame up to date; an InputError from the renderer shows the error
     // dialog and restores the last scene it accepted.
@@ -86,6 +90,8 @@ private:
     void uploadSeries(const Series& series);
     // Writes the scene as shown (image size = the volume area). Throws InputError.
     void saveTo(const std::filesystem::path& path);
+    // Writes the probes' curves as CSV (probe_curves.h), whole or not at all. Throws InputError.
+    void exportProbes(const std::filesystem::path& path);
     std::filesystem::path dialogFolder() const;
 
     // The volume area in framebuffer pixels: its size, and its offset from the bottom left.
@@ -108,7 +114,7 @@ private:
     AnimationState animation_;
     std::optional<MovieExport> movieExport_;
     AnnotationOverlay annotationOverlay_;
-    std::optional<Pick> pick_;
+    ProbeCurves probeCurves_;
     UiAnchors anchors_;
     FileDialog fileDialog_;
     // Scripted sessions (tests) leave the user's list alone.
@@ -124,11 +130,11 @@ private:
     bool quit_ = false;
     int settleFrames_ = 0;
     Clock::time_point lastFrame_ = Clock::now();
-    const char* pickNote_ = nullptr;
+    // Why the last ctrl+click pinned no probe; cleared by the next pin.
+    const char* probeNote_ = nullptr;
     // What the overlay (drawn before this frame's rendering) said: a window screenshot waits until
     // the overlay too shows the finished frame.
     bool overlayShowedRefined_ = false;
-    bool pickIsNew_ = false;
     // The last scene the renderer accepted: an edit it refuses (a style image that cannot be read)
     // is taken back to this.
     Scene lastRenderable_;

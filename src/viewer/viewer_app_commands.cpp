@@ -119,6 +119,13 @@ void ViewerApp::handleFileChoice(const FileChoice& choice) {
         case FilePurpose::SaveScreenshot:
             requestScreenshot(choice.path, false);
             break;
+        case FilePurpose::ExportProbes:
+            try {
+                exportProbes(choice.path);
+            } catch (const InputError& error) {
+                errorDialog_.show(error.what());
+            }
+            break;
     }
 }
 
@@ -159,8 +166,7 @@ void ViewerApp::adopt(ViewerDocument next) {
     savedScene_ = document_.scene;
     editors_.clearSelections();
     frame_.invalidate();
-    pick_.reset();
-    pickNote_ = nullptr;
+    probeNote_ = nullptr;
     time_.solo = false;
     time_.playing = false;
     movieExport_.reset();
@@ -206,9 +212,13 @@ namespace tstyles::viewer {
 
 Scene ViewerApp::shownScene() const {
     const Scene& scene = document_.scene;
-    if (!animation_.previewing || scene.animation.empty()) return scene;
-    Scene shown = sceneAtFrame(scene, std::clamp(animation_.previewFrame, 0, scene.animation.frames - 1));
-    shown.exposure.stepsOf(document_.series->size());  // an exposure the series lacks fails here, named
+    Scene shown = scene;
+    if (animation_.previewing && !scene.animation.empty()) {
+        shown = sceneAtFrame(scene, std::clamp(animation_.previewFrame, 0, scene.animation.frames - 1));
+        shown.exposure.stepsOf(document_.series->size());  // an exposure the series lacks fails here, named
+    }
+    // The probes are drawn over the picture, not in it: pinning one does not render it again.
+    shown.probes.clear();
     return shown;
 }
 

@@ -20,6 +20,7 @@ const char* titleOf(FilePurpose purpose) {
         case FilePurpose::Open: return "Open scene or dataset###file dialog";
         case FilePurpose::SaveScene: return "Save scene as###file dialog";
         case FilePurpose::SaveScreenshot: return "Save screenshot as###file dialog";
+        case FilePurpose::ExportProbes: return "Export the probes' values as CSV###file dialog";
     }
     return "###file dialog";
 }
@@ -35,6 +36,8 @@ std::optional<std::string> describeEntry(const std::filesystem::directory_entry&
     const std::string extension = entry.path().extension().string();
     if (purpose == FilePurpose::SaveScreenshot)
         return folder || extension == ".png" ? std::optional<std::string>("") : std::nullopt;
+    if (purpose == FilePurpose::ExportProbes)
+        return folder || extension == ".csv" ? std::optional<std::string>("") : std::nullopt;
     const std::string format = purpose == FilePurpose::Open ? formatNamedBy(entry.path()) : "";
     if (!format.empty()) return format;
     if (folder) return "";

@@ -10,7 +10,7 @@
 
 namespace tstyles::viewer {
 
-enum class FilePurpose { Open, SaveScene, SaveScreenshot };
+enum class FilePurpose { Open, SaveScene, SaveScreenshot, ExportProbes };
 
 struct FileChoice {
     FilePurpose purpose;

@@ -6,7 +6,7 @@
 
 namespace tstyles::viewer {
 
-ViewerLayout layoutViewer(glm::vec2 windowSize, float menuBarHeight) {
+ViewerLayout layoutViewer(glm::vec2 windowSize, float menuBarHeight, bool withProbePanel) {
     const float width = std::max(windowSize.x, 320.0f);
     const float height = std::max(windowSize.y, 240.0f);
     const float sideWidth = std::round(std::clamp(0.24f * width, 250.0f, 360.0f));
@@ -20,6 +20,11 @@ ViewerLayout layoutViewer(glm::vec2 windowSize, float menuBarHeight) {
     layout.stfEditor = {{0.0f, editorTop}, {stfWidth, height}};
     layout.tstfEditor = {{stfWidth, editorTop}, {width, height}};
     layout.volume = {{sideWidth, menuBarHeight}, {width, editorTop}};
+    if (withProbePanel) {
+        const float probeHeight = std::round(std::clamp(0.3f * (editorTop - menuBarHeight), 140.0f, 260.0f));
+        layout.probePanel = {{sideWidth, editorTop - probeHeight}, {width, editorTop}};
+        layout.volume.max.y = editorTop - probeHeight;
+    }
     return layout;
 }
 

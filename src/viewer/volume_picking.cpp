@@ -1,10 +1,12 @@
-// Ray set-up from the view matrices, slab clipping against the series' bounds, and the march.
+// Ray set-up from the view matrices, slab clipping against the series' bounds, and one march per
+// ProbeDepth over the samples' temporal profiles.
 #include "volume_picking.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
+#include <vector>
 
 #include "tstyles/data/density_sampling.h"
 
@@ -45,30 +47,135 @@ std::optional<std::pair<double, double>> clipToBounds(const Ray& ray, const Boun
     return std::make_pair(enter, leave);
 }
 
-bool isVisible(const Series& series, const Scene& scene, const glm::dvec3& position) {
-    for (const TimeStep& step : series.steps) {
-        const std::optional<double> density = sampleDensity(step, position);
-        if (density && !isMissing(*density) && scene.stf.curve.evaluate(*density).opacity >= kVisibleOpacity) return true;
+// One sample of the march: where, the exposed time-steps' densities there (missing and outside
+// left out), and the same per exposed time-step (NaN for those).
+struct RaySample {
+    glm::dvec3 position;
+    std::vector<double> densities;
+    std::vector<double> byStep;
+};
+
+// The opacity a composited sample adds: its most opaque time-step's STF opacity, with the
+// unchanged-places share where the compositor takes it, corrected to the step.
+class SampleOpacity {
+public:
+    SampleOpacity(const Scene& scene, double stepLength, double referenceLength)
+        : scene_(scene),
+          unchanged_(compositorInfo(scene.compositor).takesUnchanged ? scene.compositorOptions.unchanged
+                                                                      : std::nullopt),
+          exponent_(stepLength / referenceLength) {}
+
+    double operator()(const std::vector<double>& densities) const {
+        double opacity = 0.0;
+        for (const double density : densities) opacity = std::max(opacity, scene_.stf.curve.evaluate(density).opacity);
+        if (unchanged_ && !densities.empty()) {
+            const auto [lowest, highest] = std::minmax_element(densities.begin(), densities.end());
+            opacity = *highest - *lowest <= unchanged_->below ? opacity * unchanged_->opacity
+                                                              : 1.0 - std::pow(1.0 - opacity, unchanged_->gain);
+        }
+        return 1.0 - std::pow(1.0 - std::clamp(opacity, 0.0, 1.0), exponent_);
     }
-    return false;
+
+private:
+    const Scene& scene_;
+    std::optional<UnchangedTime> unchanged_;
+    double exponent_;
+};
+
+bool stfShows(const Scene& scene, double density) { return scene.stf.curve.evaluate(density).opacity > 0.0; }
+
+// Where some time-step's density crosses an iso-value between two samples: the place between
+// them, linearly; none if none crosses (a time-step missing at either sample crosses nothing).
+std::optional<glm::dvec3> crossingBetween(const RaySample& before, const RaySample& after,
+                                          const std::vector<double>& isoValues) {
+    std::optional<double> nearest;  // fraction of the way from `before` to `after`
+    for (std::size_t step = 0; step < before.byStep.size(); ++step)
+        for (const double iso : isoValues) {
+            const double a = before.byStep[step];
+            const double b = after.byStep[step];
+            if (std::isnan(a) || std::isnan(b) || (a < iso) == (b < iso)) continue;
+            const double fraction = (iso - a) / (b - a);
+            nearest = std::min(nearest.value_or(1.0), fraction);
+        }
+    if (!nearest) return std::nullopt;
+    return before.position + *nearest * (after.position - before.position);
 }
+
+// A reduction along the ray: the place of the sample that scores highest (ties: the nearest).
+class BestSample {
+public:
+    void offer(double score, const glm::dvec3& position) {
+        if (!best_ || score > score_) {
+            best_ = position;
+            score_ = score;
+        }
+    }
+    std::optional<glm::dvec3> place() const { return best_; }
+
+private:
+    std::optional<glm::dvec3> best_;
+    double score_ = 0.0;
+};
 
 }  // namespace
 
-std::optional<Pick> pickFirstVisibleSample(const Series& series, const Scene& scene, glm::dvec2 pixel,
-                                           glm::ivec2 viewport, double stepLength) {
-    if (series.size() == 0 || viewport.x <= 0 || viewport.y <= 0 || !(stepLength > 0.0)) return std::nullopt;
+std::optional<glm::dvec3> probePlaceUnder(const Series& series, const Scene& scene, glm::dvec2 pixel,
+                                          glm::ivec2 viewport, double stepLength, double referenceLength) {
+    if (series.size() == 0 || viewport.x <= 0 || viewport.y <= 0 || !(stepLength > 0.0) || !(referenceLength > 0.0))
+        return std::nullopt;
     const View view = resolveView(scene.camera, series.worldBounds(), viewport.x, viewport.y);
     const Ray ray = rayThroughPixel(view, pixel, viewport);
     const auto range = clipToBounds(ray, series.worldBounds());
     if (!range) return std::nullopt;
+    const glm::ivec2 exposed = scene.exposure.stepsOf(series.size());
+    const TemporalProfiler profiler(series);
     // A bound on the work for absurd steps: a pick is a click, it must answer at once.
     const double step = std::max(stepLength, (range->second - range->first) / 20000.0);
+    const ProbeDepth depth = rayModeInfo(scene.rayMode).probeDepth;
+    const SampleOpacity sampleOpacity(scene, step, referenceLength);
+    const RayModeOption* isoOption = rayModeInfo(scene.rayMode).options.find("values");
+    const std::vector<double> isoValues = isoOption ? scene.rayOptions.numbers(*isoOption) : std::vector<double>{};
+
+    double transmittance = 1.0;
+    BestSample best;
+    std::optional<RaySample> previous;
     for (double t = range->first; t <= range->second; t += step) {
-        const glm::dvec3 position = ray.origin + t * ray.direction;
-        if (isVisible(series, scene, position)) return Pick{pixel, position, temporalProfile(series, position)};
+        RaySample sample{ray.origin + t * ray.direction, {}, {}};
+        const std::vector<std::optional<double>> profile = profiler.profile(sample.position);
+        for (int index = exposed.x; index <= exposed.y; ++index) {
+            const auto& density = profile[std::size_t(index)];
+            const bool present = density && !isMissing(*density);
+            if (present) sample.densities.push_back(*density);
+            sample.byStep.push_back(present ? *density : std::numeric_limits<double>::quiet_NaN());
+        }
+        if (sample.densities.empty()) {
+            previous.reset();
+            continue;
+        }
+        const auto [lowest, highest] = std::minmax_element(sample.densities.begin(), sample.densities.end());
+        switch (depth) {
+            case ProbeDepth::HalfOpacity:
+                transmittance *= 1.0 - sampleOpacity(sample.densities);
+                if (transmittance <= 0.5) return sample.position;
+                break;
+            case ProbeDepth::LargestValue:
+                if (stfShows(scene, *highest)) best.offer(*highest, sample.position);
+                break;
+            case ProbeDepth::SmallestValue:
+                for (const double density : sample.densities)
+                    if (stfShows(scene, density)) best.offer(-density, sample.position);
+                break;
+            case ProbeDepth::LargestChange:
+                best.offer(*highest - *lowest, sample.position);
+                break;
+            case ProbeDepth::FirstCrossing:
+                if (previous)
+                    if (const auto crossing = crossingBetween(*previous, sample, isoValues)) return crossing;
+                break;
+        }
+        previous = std::move(sample);
     }
-    return std::nullopt;
+    return best.place();
 }
 
 }  // namespace tstyles::viewer

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 
 #include <imgui.h>
 
@@ -113,16 +114,23 @@ void VolumeView::drawOverlay(const ScreenRect& rect, const VolumeOverlay& overla
                           rect.min.y + (overlay.annotated ? 24.0f : 6.0f)},
                          IM_COL32(255, 210, 40, 255), overlay.note);
 
-    if (overlay.pickedPoint && frameSize.x > 0 && frameSize.y > 0) {
+    if (!overlay.probes.empty() && frameSize.x > 0 && frameSize.y > 0) {
         const View view = resolveView(camera, bounds, frameSize.x, frameSize.y);
-        const glm::dvec4 clip = view.projectionMatrix * view.viewMatrix * glm::dvec4(*overlay.pickedPoint, 1.0);
-        if (clip.w > 0.0) {
+        for (const ProbeMarker& marker : overlay.probes) {
+            const glm::dvec4 clip = view.projectionMatrix * view.viewMatrix * glm::dvec4(marker.world, 1.0);
+            if (clip.w <= 0.0) continue;
             const glm::dvec2 ndc = glm::dvec2(clip) / clip.w;
             const ImVec2 at{rect.min.x + float((ndc.x + 1.0) * 0.5) * rect.size().x,
                             rect.min.y + float((1.0 - ndc.y) * 0.5) * rect.size().y};
-            drawList.AddCircle(at, 6.0f, IM_COL32(255, 210, 40, 255), 0, 2.0f);
-            drawList.AddLine({at.x - 10.0f, at.y}, {at.x + 10.0f, at.y}, IM_COL32(255, 210, 40, 255));
-            drawList.AddLine({at.x, at.y - 10.0f}, {at.x, at.y + 10.0f}, IM_COL32(255, 210, 40, 255));
+            const ImU32 colour = ImGui::ColorConvertFloat4ToU32({marker.colour.r, marker.colour.g, marker.colour.b, 1.0f});
+            // A dark ring under the coloured one keeps the marker visible on light data.
+            drawList.AddCircle(at, 7.0f, IM_COL32(0, 0, 0, 200), 0, 4.0f);
+            drawList.AddCircle(at, 7.0f, colour, 0, 2.0f);
+            drawList.AddCircleFilled(at, 1.5f, colour);
+            const std::string number = std::to_string(marker.number);
+            const ImVec2 textAt{at.x + 9.0f, at.y - 17.0f};
+            drawList.AddText({textAt.x + 1.0f, textAt.y + 1.0f}, IM_COL32(0, 0, 0, 220), number.c_str());
+            drawList.AddText(textAt, colour, number.c_str());
         }
     }
     drawList.PopClipRect();

@@ -1,10 +1,11 @@
-// The volume area: mouse input on the rendered image (orbit, pan, zoom, ctrl+click to pick) and
-// what is drawn over it (refinement progress, frame rate, the picked point). The image itself is
+// The volume area: mouse input on the rendered image (orbit, pan, zoom, ctrl+click to pin a probe)
+// and what is drawn over it (refinement progress, frame rate, the probes' markers). The image itself is
 // put there by ProgressiveFrame::present before the UI is drawn on top.
 #pragma once
 
 #include <chrono>
 #include <optional>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -14,13 +15,20 @@
 
 namespace tstyles::viewer {
 
+// A pinned probe on the picture: a ring in its colour with its number beside it.
+struct ProbeMarker {
+    glm::dvec3 world{0.0};
+    glm::vec3 colour{1.0f};
+    int number = 1;
+};
+
 struct VolumeOverlay {
     double progress = 1.0;  // of the full-quality frame
     bool refined = true;
     int previewDivisor = 1;
     double framesPerSecond = 0.0;
     double refinementSeconds = 0.0;
-    std::optional<glm::dvec3> pickedPoint;
+    std::vector<ProbeMarker> probes;
     const char* note = nullptr;  // e.g. "showing time-step 3 alone"
     // The scene's annotations take the corners: the status texts move to the middle of the edges.
     bool annotated = false;

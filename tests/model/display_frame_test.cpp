@@ -109,6 +109,23 @@ TEST(DisplayFrame, AppliedSeriesHasTheTurnedAndScaledBounds) {
     EXPECT_EQ(shown.axes[2].direction, AxisDirection::South);  // display z is the negated latitude
 }
 
+TEST(DisplayFrame, AShownPlaceIsInTheFileCoordinatesAndBack) {
+    // The depth axis counts down in the file (negated by the reader): 250 m deep is world z = -250,
+    // shown up the display's y axis, exaggerated. The place 30 east, 40 north, 250 m deep:
+    Series raw = geographicBox();
+    raw.axes[2].negated = true;
+    const DisplayFrame frame = chooseDisplayFrame(automatic(), raw);
+    const Series shown = applyDisplayFrame(raw, frame);
+    const glm::dvec3 file{-30.0, 40.0, 250.0};
+    const glm::dvec3 display = frame.toDisplay(worldCoordinatesOf(raw, file));
+    EXPECT_NEAR(display.y, -250.0 * frame.scale.y, 1e-9);
+    const glm::dvec3 back = fileCoordinatesOfShown(shown, frame, display);
+    for (int axis = 0; axis < 3; ++axis) EXPECT_NEAR(back[axis], file[axis], 1e-9) << "axis " << axis;
+    const glm::dvec3 again = shownCoordinatesOfFile(shown, frame, file);
+    for (int axis = 0; axis < 3; ++axis) EXPECT_NEAR(again[axis], display[axis], 1e-9) << "axis " << axis;
+    EXPECT_EQ(frame.toWorld(frame.toDisplay(glm::dvec3(1.0, 2.0, 3.0))), glm::dvec3(1.0, 2.0, 3.0));
+}
+
 TEST(DisplayFrame, TheDefaultLeavesTheSeriesAsItIs) {
     const Series raw = geographicBox();
     const DisplayFrame frame = chooseDisplayFrame(DisplaySettings{}, raw);

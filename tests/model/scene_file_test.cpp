@@ -215,6 +215,11 @@ const BadScene badScenes[] = {
     {R"({"dataset": "a", "tstf": {"gradient": {"color": [{"at": 2, "color": [0, 0, 0]}]}}})",
      "tstf.gradient.color[0].at", "must be in [0, 1], got 2"},
     {R"({"dataset": "a", "tstf": {"max": {}}})", "tstf.max", "index, gradient"},
+    {R"({"dataset": "a", "probes": [1, 2, 3]})", "probes[0]", "expected an array"},
+    {R"({"dataset": "a", "probes": [[1, 2]]})", "probes[0]", "3 numbers"},
+    {R"({"dataset": "a", "probes": {"at": [1, 2, 3]}})", "probes", "expected a list of places [x, y, z], got an object"},
+    {R"({"dataset": "a", "probes": [[0,0,0],[0,0,0],[0,0,0],[0,0,0],[0,0,0],[0,0,0],[0,0,0],[0,0,0],[0,0,0]]})",
+     "probes", "at most 8 places, got 9"},
 };
 
 TEST(SceneFileErrors, NameTheFileTheKeyAndTheProblem) {
@@ -269,6 +274,7 @@ Scene everyFeatureScene(const std::filesystem::path& dataset) {
     scene.gradientTstf.curve.opacity = {};
     scene.gradientTstf.curve.color = {{0.0, {0.0, 1.0, 0.0}}, {1.0, {1.0, 0.5, 0.0}}};
     scene.finalMode = tstyles::FinalMode::Stf;
+    scene.probes = {{-95.5, 40.25, 500.0}, {0.1, 1e-7, -3.0}};
     return scene;
 }
 

@@ -37,10 +37,11 @@ screenshot shot.png
 screenshot-window window.png
 measure-start orbit
 measure-stop
+export-probes probes.csv
 quit
 )";
     const std::vector<ScriptCommand> commands = parseInputScript(text, "test.txt");
-    ASSERT_EQ(commands.size(), 20u);
+    ASSERT_EQ(commands.size(), 21u);
     EXPECT_EQ(commands[0].action, ScriptAction::WaitFrames);
     EXPECT_EQ(commands[0].count, 10);
     EXPECT_EQ(commands[0].line, 3);
@@ -71,7 +72,9 @@ quit
     EXPECT_EQ(commands[15].action, ScriptAction::Screenshot);
     EXPECT_EQ(commands[16].action, ScriptAction::WindowScreenshot);
     EXPECT_EQ(commands[17].argument, "orbit");
-    EXPECT_EQ(commands[19].action, ScriptAction::Quit);
+    EXPECT_EQ(commands[19].action, ScriptAction::ExportProbes);
+    EXPECT_EQ(commands[19].argument, "probes.csv");
+    EXPECT_EQ(commands[20].action, ScriptAction::Quit);
 }
 
 TEST(InputScript, ExpandsEnvironmentVariables) {

@@ -332,3 +332,94 @@ TEST_F(ViewerSession, RecordedKeysExportTheMovieThatAnimateMakes) {
 }
 
 }  // namespace
+
+namespace {
+
+// The fields of one CSV line (RFC 4180: quoted fields may hold commas and doubled quotes).
+std::vector<std::string> csvFields(const std::string& line) {
+    std::vector<std::string> fields(1);
+    bool quoted = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+            fields.back() += '"';
+            ++i;
+        } else if (c == '"') {
+            quoted = !quoted;
+        } else if (c == ',' && !quoted) {
+            fields.emplace_back();
+        } else {
+            fields.back() += c;
+        }
+    }
+    return fields;
+}
+
+std::vector<std::vector<std::string>> csvRows(const std::string& text) {
+    std::vector<std::vector<std::string>> rows;
+    std::stringstream lines(text);
+    for (std::string line; std::getline(lines, line);)
+        if (!line.empty()) rows.push_back(csvFields(line));
+    return rows;
+}
+
+std::string readFile(const fs::path& file) {
+    std::ifstream in(file);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// Issue 55: a ctrl+click on the picture of a CF forecast (pressure levels counting down, shown as a
+// map with vertical exaggeration) pins a probe; the panel's CSV holds, for the place it names in the
+// file's coordinates, the values `tstyles probe --at` reads there; probes are saved with the scene,
+// removed in the panel, and brought back by undo.
+TEST_F(ViewerSession, AProbeClickedOnAForecastHoldsWhatTheCommandLineReads) {
+    const fs::path forecast = out_ / "forecast.nc";
+    tstyles::testdata::writeRegionalForecast(forecast);
+    const CommandResult run = view(forecast, "probe_forecast.txt");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const Scene one = tstyles::loadScene(out_ / "1-one-probe.json");
+    const Scene two = tstyles::loadScene(out_ / "2-two-probes.json");
+    ASSERT_EQ(one.probes.size(), 1u) << run.output;
+    ASSERT_EQ(two.probes.size(), 2u) << run.output;
+    EXPECT_EQ(two.probes[0], one.probes[0]);
+    const Scene removed = tstyles::loadScene(out_ / "3-first-removed.json");
+    ASSERT_EQ(removed.probes.size(), 1u);
+    EXPECT_EQ(removed.probes[0], two.probes[1]);
+    EXPECT_EQ(tstyles::loadScene(out_ / "4-undone.json").probes, two.probes);
+
+    const auto rows = csvRows(readFile(out_ / "probes.csv"));
+    ASSERT_EQ(rows.size(), 8u) << readFile(out_ / "probes.csv");  // the header and 7 time-steps
+    ASSERT_EQ(rows[0].size(), 4u);
+    for (std::size_t probe = 0; probe < 2; ++probe) {
+        // "probe 1 at (-95.1, 40.2, 612.5)": the place as `probe --at` takes it.
+        const std::string& header = rows[0][2 + probe];
+        const std::size_t open = header.find('(');
+        ASSERT_EQ(header.rfind("probe " + std::to_string(probe + 1) + " at (", 0), 0u) << header;
+        std::string place = header.substr(open + 1, header.size() - open - 2);
+        place.erase(std::remove(place.begin(), place.end(), ' '), place.end());
+        const CommandResult cli =
+            runCommand(quoted(TSTYLES_EXECUTABLE) + " probe " + quoted(forecast) + " --at " + place + " --csv");
+        ASSERT_EQ(cli.exitCode, 0) << cli.output;
+        const auto cliRows = csvRows(cli.output);
+        ASSERT_EQ(cliRows.size(), rows.size()) << cli.output;
+        int present = 0;
+        for (std::size_t row = 1; row < rows.size(); ++row) {
+            EXPECT_EQ(rows[row][0], cliRows[row][0]);  // the times
+            EXPECT_EQ(rows[row][1], cliRows[row][1]);  // their labels
+            const std::string& window = rows[row][2 + probe];
+            const std::string& command = cliRows[row][2];
+            ASSERT_EQ(window.empty(), command.empty()) << "row " << row << " of probe " << probe + 1;
+            if (window.empty()) continue;
+            ++present;
+            // The window samples the series turned for display, the command line as read: the
+            // same trilinear weights up to rounding, then float32 (7 digits).
+            EXPECT_NEAR(std::stod(window), std::stod(command), 1e-6 * std::max(1e-30, std::abs(std::stod(command))))
+                << "row " << row << " of probe " << probe + 1;
+        }
+        EXPECT_EQ(present, 7) << "probe " << probe + 1 << " at " << place;
+    }
+}
+
+}  // namespace

@@ -67,6 +67,8 @@ struct DisplayFrame {
     bool isIdentity() const { return rotation == glm::dmat3(1.0) && scale == glm::dvec3(1.0); }
     // Display position of a world (data) position.
     glm::dvec3 toDisplay(const glm::dvec3& world) const { return scale * (rotation * world); }
+    // World (data) position of a display position: the inverse of toDisplay.
+    glm::dvec3 toWorld(const glm::dvec3& display) const { return glm::transpose(rotation) * (display / scale); }
 };
 
 DisplayFrame chooseDisplayFrame(const DisplaySettings& settings, const Series& series);
@@ -77,5 +79,11 @@ DisplayFrame chooseDisplayFrame(const DisplaySettings& settings, const Series& s
 // grids do) and rectilinear or structured grids: anything else is an InputError naming the
 // time-step and what to use instead.
 Series applyDisplayFrame(Series series, const DisplayFrame& frame);
+
+// A display position of `shown` (a series that applyDisplayFrame turned with `frame`) in the file's
+// own coordinates, as `tstyles info` lists them and `probe --at` takes them (the frame undone, the
+// negated axes flipped back: fileCoordinatesOf of the series as read); and the inverse.
+glm::dvec3 fileCoordinatesOfShown(const Series& shown, const DisplayFrame& frame, const glm::dvec3& display);
+glm::dvec3 shownCoordinatesOfFile(const Series& shown, const DisplayFrame& frame, const glm::dvec3& file);
 
 }  // namespace tstyles

@@ -79,6 +79,16 @@ enum class AutomaticStf {
                     // unshaded, unchanged places a faint grey (the mode picks by change, not value)
 };
 
+// Where the window's probe lands on a pixel's ray (docs/probe.md): at the sample the pixel shows,
+// estimated on the CPU from the STF (viewer/volume_picking.h).
+enum class ProbeDepth {
+    HalfOpacity,    // where the opacity gathered along the ray first passes one half
+    LargestValue,   // the sample of the largest density the STF shows
+    SmallestValue,  // the sample of the smallest density the STF shows
+    LargestChange,  // the sample whose densities change most over the time-steps
+    FirstCrossing,  // the first crossing of an iso-value by some time-step's density
+};
+
 struct RayModeInfo {
     const char* name = "";          // in scene files, --ray and the window
     const char* shaderModule = "";  // in shaders/
@@ -101,6 +111,7 @@ struct RayModeInfo {
     // picture barely moves with it; half where the pixel is one sample's, which a coarser step can
     // step over (a maximum projection of an MR slab at one cell: SSIM 0.959 against half).
     double automaticStepInCells = 0.5;
+    ProbeDepth probeDepth = ProbeDepth::HalfOpacity;
     RayMerge merge = RayMerge::Over;
     RayModeOptionList options = {};
     const char* summary = "";  // one line for help texts, the viewer and the docs' table
@@ -115,11 +126,13 @@ inline constexpr std::array kRayModes = [] {
              .summary = "the samples' temporal styles composited front to back (emission and absorption, the "
                         "paper's); rays stop once nearly opaque"},
         Info{.name = "maximum", .shaderModule = "ray_maximum.glsl", .needsValue = true,
-             .pixelTakesStfOpacity = true, .automaticStf = AutomaticStf::LargestValue, .merge = RayMerge::None,
+             .pixelTakesStfOpacity = true, .automaticStf = AutomaticStf::LargestValue,
+             .probeDepth = ProbeDepth::LargestValue, .merge = RayMerge::None,
              .summary = "the sample of the largest value along the ray (maximum intensity projection), in its "
                         "time colour"},
         Info{.name = "minimum", .shaderModule = "ray_minimum.glsl", .needsValue = true,
-             .pixelTakesStfOpacity = true, .automaticStf = AutomaticStf::LargestValue, .merge = RayMerge::None,
+             .pixelTakesStfOpacity = true, .automaticStf = AutomaticStf::LargestValue,
+             .probeDepth = ProbeDepth::SmallestValue, .merge = RayMerge::None,
              .summary = "the sample of the smallest value the STF shows along the ray, in its time colour"},
         Info{.name = "average", .shaderModule = "ray_average.glsl", .pixelTakesStfOpacity = true,
              .automaticStf = AutomaticStf::LargestValue, .merge = RayMerge::None,
@@ -127,7 +140,8 @@ inline constexpr std::array kRayModes = [] {
         Info{.name = "additive", .shaderModule = "ray_additive.glsl", .stopsEarly = true, .merge = RayMerge::None,
              .summary = "the samples' temporal styles added up along the ray (emission without absorption)"},
         Info{.name = "attenuated-maximum", .shaderModule = "ray_attenuated_maximum.glsl", .needsValue = true,
-             .pixelTakesStfOpacity = true, .automaticStf = AutomaticStf::LargestValue, .merge = RayMerge::None,
+             .pixelTakesStfOpacity = true, .automaticStf = AutomaticStf::LargestValue,
+             .probeDepth = ProbeDepth::LargestValue, .merge = RayMerge::None,
              .options = {RayModeOption{
                  .key = "attenuation",
                  .kind = RayModeOptionKind::Number,
@@ -139,11 +153,11 @@ inline constexpr std::array kRayModes = [] {
              .summary = "the largest value along the ray, each value first lowered by the opacity in front of it"},
         Info{.name = "largest-change", .shaderModule = "ray_largest_change.glsl", .needsValue = true,
              .pixelTakesStfOpacity = true, .readsChange = true, .automaticStf = AutomaticStf::EveryPlace,
-             .merge = RayMerge::None,
+             .probeDepth = ProbeDepth::LargestChange, .merge = RayMerge::None,
              .summary = "the sample whose values change most over time along the ray, in the colour of its "
                         "time-step: seen from above, each place of a map at the depth where it changes most"},
         Info{.name = "isosurface", .shaderModule = "ray_isosurface.glsl", .needsValue = true, .stopsEarly = true,
-             .merge = RayMerge::None,
+             .probeDepth = ProbeDepth::FirstCrossing, .merge = RayMerge::None,
              .options = {RayModeOption{
                              .key = "values",
                              .kind = RayModeOptionKind::NumberList,

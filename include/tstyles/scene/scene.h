@@ -141,6 +141,9 @@ struct Exposure {
     glm::ivec2 stepsOf(std::size_t stepCount, const std::filesystem::path& sceneFile = {}) const;
 };
 
+// The most places a scene pins for the probe panel: each has its own colour and curve.
+inline constexpr std::size_t kMaxProbes = 8;
+
 struct Scene {
     // The series manifest. A file may name it relative to the scene file's folder; a loaded scene
     // holds the resolved absolute, normalized path. A relative path in memory means relative to the
@@ -165,6 +168,10 @@ struct Scene {
     FinalMode finalMode = FinalMode::Modulate;
     Annotations annotations;
     Animation animation;
+    // Places pinned in the window's probe panel, in the file's own coordinates (as `tstyles info`
+    // lists them and `probe --at` takes them): the window plots their values over time and marks
+    // them on the picture; `render` draws nothing for them (docs/probe.md).
+    std::vector<glm::dvec3> probes;
     bool operator==(const Scene&) const = default;
 };
 
