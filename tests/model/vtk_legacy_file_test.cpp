@@ -1,4 +1,4 @@
-// Legacy VTK files (src/data/readers/vtk_legacy_file.h) written here as text and big-endian bytes:
+// Legacy VTK files (src/data/readers/vtk/vtk_legacy_file.h) written here as text and big-endian bytes:
 // exact values of ASCII and BINARY arrays, vectors as magnitudes, the grids' coordinates and points,
 // and refusals that name the keyword and the problem.
 #include <bit>
@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "readers/vtk_legacy_file.h"
+#include "readers/vtk/vtk_legacy_file.h"
 #include "tstyles/core/errors.h"
 
 namespace tstyles {

@@ -2,18 +2,18 @@
 // series of several files through eachFileOneStep.
 #include "format_table.h"
 
-#include "dicom_files.h"
-#include "dicom_reader.h"
+#include "dicom/dicom_files.h"
+#include "dicom/dicom_reader.h"
 #include "file_magic.h"
-#include "isabel_reader.h"
-#include "netcdf_reader.h"
-#include "nifti_reader.h"
-#include "nrrd_reader.h"
-#include "ome_zarr_reader.h"
-#include "plot3d_source.h"
+#include "isabel/isabel_reader.h"
+#include "netcdf/netcdf_reader.h"
+#include "nifti/nifti_reader.h"
+#include "nrrd/nrrd_reader.h"
+#include "zarr/ome_zarr_reader.h"
+#include "plot3d/plot3d_source.h"
 #include "stacked_files.h"
-#include "vtk_reader.h"
-#include "tiff_reader.h"
+#include "vtk/vtk_reader.h"
+#include "tiff/tiff_reader.h"
 #include "tstyles/core/errors.h"
 
 namespace tstyles {
