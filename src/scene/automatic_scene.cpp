@@ -199,17 +199,26 @@ OpacityWindow automaticRayWindow(const OpacityWindow& window, RayMode mode) {
     return shown;
 }
 
-}  // namespace
-
-void applyAutomaticRay(Scene& scene, const Series& series, const OpacityWindow& window, RayMode mode) {
-    if (const auto step = automaticStep(series, chooseDisplayFrame(scene.display, series), mode))
-        scene.raycast.step = *step;
+// applyAutomaticRay with the display frame the series is seen in.
+void applyAutomaticRayIn(Scene& scene, const Series& series, const DisplayFrame& frame, const OpacityWindow& window,
+                         RayMode mode) {
+    if (const auto step = automaticStep(series, frame, mode)) scene.raycast.step = *step;
     const bool projection = rayModeInfo(mode).automaticStf != AutomaticStf::RayThrough;
     if (auto& unchanged = scene.compositorOptions.unchanged) unchanged->opacity = automaticUnchangedOpacity(mode);
     const OpacityWindow shown = automaticRayWindow(window, mode);
     scene.rayMode = mode;
     scene.stf.curve.opacity = opacityNodes(shown);
     scene.stf.curve.color = {ColorNode{0.0, glm::dvec3(1.0), projection ? "" : kNeutralStyle}};
+}
+
+}  // namespace
+
+void applyAutomaticRay(Scene& scene, const Series& series, const OpacityWindow& window, RayMode mode) {
+    applyAutomaticRayIn(scene, series, chooseDisplayFrame(scene.display, series), window, mode);
+}
+
+void applyAutomaticRayToShown(Scene& scene, const Series& shown, const OpacityWindow& window, RayMode mode) {
+    applyAutomaticRayIn(scene, shown, DisplayFrame{}, window, mode);
 }
 
 DataKind dataKindOf(const Series& series) {

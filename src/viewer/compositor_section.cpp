@@ -179,7 +179,7 @@ void drawCompositorSection(SidePanelState& state) {
     Scene& scene = state.scene;
     drawCompositorChoice(scene, state.series);
     drawCompositorOptions(scene, state.series);
-    drawRayModeSection(scene);
+    drawRayModeSection(scene, state.series);
     if (auto chosen = nameCombo("final mode", finalModeNames(), toString(scene.finalMode)))
         scene.finalMode = *finalModeFromString(finalModeNames()[*chosen]);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("stf: STF alone; tstf: TSTF alone; modulate: STF times TSTF");

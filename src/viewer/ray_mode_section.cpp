@@ -9,6 +9,7 @@
 
 #include "key_slider.h"
 #include "side_panel.h"
+#include "tstyles/scene/ray_mode_switch.h"
 #include "tstyles/scene/ray_modes.h"
 
 namespace tstyles::viewer {
@@ -28,18 +29,21 @@ std::vector<RayMode> offeredRayModes(const Scene& scene) {
     return offered;
 }
 
-void drawRayModeChoice(Scene& scene) {
+// A mode chosen in the list comes with its automatic STF and step where the scene has the current
+// mode's automatic ones (switchRayMode).
+void drawRayModeChoice(Scene& scene, const Series& shown) {
     const std::vector<RayMode> offered = offeredRayModes(scene);
     if (ImGui::BeginCombo("ray", toString(scene.rayMode).c_str())) {
         for (const RayMode mode : offered) {
             const RayModeInfo& info = rayModeInfo(mode);
-            if (ImGui::Selectable(info.name, mode == scene.rayMode)) scene.rayMode = mode;
+            if (ImGui::Selectable(info.name, mode == scene.rayMode)) switchRayMode(scene, shown, mode);
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", info.summary);
         }
         ImGui::EndCombo();
     }
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("How the samples along a ray make the pixel: %s (docs/ray-modes.md)",
+        ImGui::SetTooltip("How the samples along a ray make the pixel: %s (docs/ray-modes.md). A mode chosen here "
+                          "brings its own automatic STF and ray step where you have not changed the current ones.",
                           rayModeInfo(scene.rayMode).summary);
 }
 
@@ -102,10 +106,10 @@ void drawRayModeOptions(Scene& scene) {
 
 }  // namespace
 
-void drawRayModeSection(Scene& scene) {
+void drawRayModeSection(Scene& scene, const Series& shown) {
     // A compositor chosen after the mode may not go with it: the ray composites again.
     if (const auto problem = rayModeProblem(scene); problem && problem->key == "ray.mode") scene.rayMode = kCompositeRay;
-    drawRayModeChoice(scene);
+    drawRayModeChoice(scene, shown);
     drawRayModeOptions(scene);
     // Iso-values below 0 mean nothing where the compositor shows densities.
     if (const RayModeOption* values = rayModeInfo(scene.rayMode).options.find("values");

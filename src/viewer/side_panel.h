@@ -49,7 +49,7 @@ void drawDatasetSection(SidePanelState& state, UiAnchors& anchors);
 void drawTimeSection(SidePanelState& state, ViewerCommands& commands, UiAnchors& anchors);
 void drawCompositorSection(SidePanelState& state);
 // Inside the compositor section: the ray mode and its options (ray_mode_section.cpp).
-void drawRayModeSection(Scene& scene);
+void drawRayModeSection(Scene& scene, const Series& shown);
 void drawCameraSection(SidePanelState& state, ViewerCommands& commands);
 void drawProbesSection(SidePanelState& state);
 void drawAnnotationsSection(SidePanelState& state, UiAnchors& anchors);

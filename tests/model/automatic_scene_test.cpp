@@ -14,8 +14,10 @@
 #include "../data/realistic_datasets.h"
 #include "tstyles/data/manifest.h"
 #include "tstyles/data/series_opener.h"
+#include "tstyles/scene/automatic_opacity.h"
 #include "tstyles/scene/automatic_scene.h"
 #include "tstyles/scene/automatic_step.h"
+#include "tstyles/scene/ray_mode_switch.h"
 #include "tstyles/scene/scene_file.h"
 
 namespace tstyles {
@@ -342,4 +344,50 @@ TEST(AutomaticStep, ABeamGridTakesOneRangeCell) {
     EXPECT_DOUBLE_EQ(*automaticStep(series, flattened, kCompositeRay), 0.25);
 }
 
+}  // namespace tstyles
+
+namespace tstyles {
+namespace {
+
+// The window's ray list (switchRayMode): on the CT phantom's automatic scene (composite), choosing
+// maximum gives the STF, step and unchanged opacity `applyAutomaticRay` gives the series as read for
+// maximum, exactly (the step up to rounding through the display frame); back to composite gives the
+// automatic scene again. An STF the user changed stays, the step still follows.
+TEST(RayModeSwitch, AChosenModeBringsItsAutomaticPartsAndLeavesTheUsersOwn) {
+    const auto file = sampleFolder() / "ct-switch.nii";
+    testdata::writeCtPhantom(file);
+    const Series series = openSeries(file, ReadOptions{});
+    const AutomaticScene automatic = automaticScene(series, file);
+    ASSERT_EQ(automatic.scene.rayMode, kCompositeRay);
+    const SceneOnSeries fitted = fitSceneToSeries(automatic.scene, series);
+    const RayMode maximum = rayModeNamed("maximum");
+
+    Scene expected = fitted.scene;
+    applyAutomaticRay(expected, series, automaticOpacityWindow(series), maximum);
+    Scene scene = fitted.scene;
+    const RayModeSwitch carried = switchRayMode(scene, fitted.series, maximum);
+    EXPECT_TRUE(carried.stf && carried.step && carried.unchangedOpacity);
+    EXPECT_EQ(scene.rayMode, maximum);
+    EXPECT_EQ(scene.stf, expected.stf);
+    ASSERT_TRUE(scene.raycast.step && expected.raycast.step);
+    EXPECT_NEAR(*scene.raycast.step, *expected.raycast.step, 1e-12 * *expected.raycast.step);
+    EXPECT_NE(scene.raycast.step, fitted.scene.raycast.step);  // half a cell, not a whole one
+    ASSERT_TRUE(scene.compositorOptions.unchanged && expected.compositorOptions.unchanged);
+    EXPECT_EQ(scene.compositorOptions.unchanged->opacity, expected.compositorOptions.unchanged->opacity);
+
+    switchRayMode(scene, fitted.series, kCompositeRay);
+    EXPECT_EQ(scene.stf, fitted.scene.stf);
+    EXPECT_EQ(scene.compositorOptions.unchanged, fitted.scene.compositorOptions.unchanged);
+
+    // The user's own STF stays through a switch; the automatic step still follows the mode.
+    Scene edited = fitted.scene;
+    edited.stf.curve.opacity = {{0.2, 0.0}, {0.9, 0.4}};
+    const RayModeSwitch kept = switchRayMode(edited, fitted.series, maximum);
+    EXPECT_FALSE(kept.stf);
+    EXPECT_TRUE(kept.step);
+    EXPECT_EQ(edited.stf.curve.opacity, (std::vector<OpacityNode>{{0.2, 0.0}, {0.9, 0.4}}));
+    EXPECT_EQ(edited.rayMode, maximum);
+}
+
+}  // namespace
 }  // namespace tstyles

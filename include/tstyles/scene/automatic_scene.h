@@ -49,6 +49,9 @@ std::pair<RayMode, std::string> automaticRayMode(const Series& series);
 // one sample's opacity (maximum, minimum, average: a projection has no surface to shade); and the
 // mode's automatic ray step (automaticStep).
 void applyAutomaticRay(Scene& scene, const Series& series, const OpacityWindow& window, RayMode mode);
+// The same for a series already turned into the scene's display frame (the window's): its step is
+// the shown grids' typical cell.
+void applyAutomaticRayToShown(Scene& scene, const Series& shown, const OpacityWindow& window, RayMode mode);
 
 // A scene fitted to a series: the series turned and scaled into the display frame the scene asks
 // for, the automatic gradient range filled in, and the bounds an automatic camera frames.
