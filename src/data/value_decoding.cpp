@@ -4,9 +4,8 @@
 #include <bit>
 
 namespace tstyles {
-namespace {
 
-std::uint64_t unsignedBits(const std::uint8_t* bytes, std::size_t size, ByteOrder order) {
+std::uint64_t decodeUnsigned(const std::uint8_t* bytes, std::size_t size, ByteOrder order) {
     std::uint64_t bits = 0;
     for (std::size_t index = 0; index < size; ++index) {
         const std::size_t shift = order == ByteOrder::Little ? index : size - 1 - index;
@@ -15,10 +14,8 @@ std::uint64_t unsignedBits(const std::uint8_t* bytes, std::size_t size, ByteOrde
     return bits;
 }
 
-}  // namespace
-
 double decodeValue(const std::uint8_t* bytes, ValueType type, ByteOrder order) {
-    const std::uint64_t bits = unsignedBits(bytes, bytesPerValue(type), order);
+    const std::uint64_t bits = decodeUnsigned(bytes, bytesPerValue(type), order);
     switch (type) {
         case ValueType::UInt8:
         case ValueType::UInt16:

@@ -1,4 +1,5 @@
-// Decoding stored values of every ValueType in either byte order, whatever the host's order.
+// Decoding stored values of every ValueType in either byte order, whatever the host's order: the one
+// byte-order decoder of the readers (values, and the unsigned integers of headers and markers).
 #pragma once
 
 #include <cstddef>
@@ -10,6 +11,9 @@
 namespace tstyles {
 
 enum class ByteOrder { Little, Big };
+
+// The unsigned integer of `size` bytes (1 to 8) starting at `bytes`.
+std::uint64_t decodeUnsigned(const std::uint8_t* bytes, std::size_t size, ByteOrder order);
 
 // One value of `type` starting at `bytes`.
 double decodeValue(const std::uint8_t* bytes, ValueType type, ByteOrder order);

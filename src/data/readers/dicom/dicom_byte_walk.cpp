@@ -8,6 +8,7 @@
 #include <fstream>
 #include <string>
 
+#include "../../value_decoding.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/core/input_limits.h"
 
@@ -45,9 +46,7 @@ private:
     }
 
     std::uint32_t number(const unsigned char* bytes, int count, bool bigEndian) const {
-        std::uint32_t value = 0;
-        for (int i = 0; i < count; ++i) value |= std::uint32_t(bytes[bigEndian ? count - 1 - i : i]) << (8 * i);
-        return value;
+        return std::uint32_t(decodeUnsigned(bytes, std::size_t(count), bigEndian ? ByteOrder::Big : ByteOrder::Little));
     }
 
     static bool hasLongLength(const std::string& vr) {

@@ -11,6 +11,7 @@
 
 #include <gdcmSequenceOfItems.h>
 
+#include "../../value_decoding.h"
 #include "tstyles/core/errors.h"
 
 namespace tstyles {
@@ -109,7 +110,7 @@ std::optional<std::uint16_t> dicomUnsignedShort(const gdcm::DataSet& data, const
     if (bytes->GetLength() < 2 || bytes->GetPointer() == nullptr)
         badValue(context, tag, keyword, "holds " + std::to_string(bytes->GetLength()) + " bytes, not a 2-byte number");
     const auto* raw = reinterpret_cast<const unsigned char*>(bytes->GetPointer());
-    return context.bigEndian ? std::uint16_t((raw[0] << 8) | raw[1]) : std::uint16_t(raw[0] | (raw[1] << 8));
+    return std::uint16_t(decodeUnsigned(raw, 2, context.bigEndian ? ByteOrder::Big : ByteOrder::Little));
 }
 
 namespace {

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <system_error>
 
+#include "../../value_decoding.h"
 #include "tstyles/core/errors.h"
 #include "tstyles/core/input_limits.h"
 
@@ -19,12 +20,7 @@ constexpr std::int64_t kMaxBlocks = 100000;
 constexpr std::int64_t kMaxNodesPerBlock = std::int64_t(1) << 32;
 
 std::uint64_t readUnsigned(const std::vector<std::uint8_t>& bytes, std::size_t offset, int size, bool bigEndian) {
-    std::uint64_t value = 0;
-    for (int index = 0; index < size; ++index) {
-        const std::uint8_t byte = bytes[offset + std::size_t(bigEndian ? index : size - 1 - index)];
-        value = (value << 8) | byte;
-    }
-    return value;
+    return decodeUnsigned(bytes.data() + offset, std::size_t(size), bigEndian ? ByteOrder::Big : ByteOrder::Little);
 }
 
 std::int32_t readInt(const std::vector<std::uint8_t>& bytes, std::size_t offset, bool bigEndian) {

@@ -9,6 +9,7 @@
 #include <lzma.h>
 #include <zlib.h>
 
+#include "../../value_decoding.h"
 #include "tstyles/core/errors.h"
 
 namespace tstyles {
@@ -46,12 +47,7 @@ std::uint64_t readHeaderInteger(VtkByteStream& stream, const VtkBinaryLayout& la
     if (!stream.read(bytes, layout.headerBytes))
         context.fail(std::string("is truncated: the data ends inside its header (") + what + ")" +
                      (*stream.failure() ? std::string(": ") + stream.failure() : std::string()));
-    std::uint64_t value = 0;
-    for (std::size_t index = 0; index < layout.headerBytes; ++index) {
-        const std::size_t shift = layout.bigEndian ? layout.headerBytes - 1 - index : index;
-        value |= std::uint64_t(bytes[index]) << (8 * shift);
-    }
-    return value;
+    return decodeUnsigned(bytes, layout.headerBytes, layout.bigEndian ? ByteOrder::Big : ByteOrder::Little);
 }
 
 void readPayload(VtkByteStream& stream, std::uint8_t* out, std::size_t count, const ArrayContext& context,
